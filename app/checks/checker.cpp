@@ -1,0 +1,424 @@
+#include "checks/checker.h"
+
+#include "checks/probe_cases.h"
+#include "checks/probe_runner.h"
+#include "core/error.h"
+#include "core/isolated.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "core/scene_transform.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "render/gl_renderer.h"
+#include "shader/shader_library.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace rl {
+
+using nlohmann::json;
+
+std::string statusName(CheckStatus s) {
+    switch (s) {
+        case CheckStatus::Pass: return "PASS";
+        case CheckStatus::Fail: return "FAIL";
+        case CheckStatus::NotStarted: return "NOT STARTED";
+        case CheckStatus::CompileError: return "COMPILE ERROR";
+        case CheckStatus::TimedOut: return "TIMEOUT";
+        case CheckStatus::Crashed: return "CRASH";
+    }
+    return "FAIL";
+}
+
+double ExerciseReport::probeFraction() const {
+    int passed = 0, total = 0;
+    for (const auto& p : probes) {
+        passed += p.passed;
+        total += p.total;
+    }
+    return total ? double(passed) / total : 0.0;
+}
+
+double ExerciseReport::imageFraction() const {
+    if (images.empty()) return 0.0;
+    return double(std::count_if(images.begin(), images.end(), [](const ImageSummary& i) { return i.passed; })) /
+           double(images.size());
+}
+
+json toJson(const ExerciseReport& r) {
+    json j = {{"exercise", r.id}, {"number", r.number}, {"status", statusName(r.status)}, {"message", r.message},
+              {"hint", r.hint}, {"details", r.details}, {"seconds", r.seconds},
+              {"probe_fraction", r.probeFraction()}, {"image_fraction", r.imageFraction()}};
+    j["probes"] = json::array();
+    for (const auto& p : r.probes) j["probes"].push_back({{"name", p.name}, {"passed", p.passed}, {"total", p.total}});
+    j["images"] = json::array();
+    for (const auto& i : r.images)
+        j["images"].push_back({{"scene", i.scene}, {"passed", i.passed}, {"off_fraction", i.offFraction},
+                               {"mean_lsb", i.meanLsb}, {"non_finite", i.nonFinite}, {"expected", i.expectedPng},
+                               {"got", i.gotPng}, {"diff", i.diffPng}});
+    return j;
+}
+
+ExerciseReport reportFromJson(const json& j) {
+    ExerciseReport r;
+    r.id = j.value("exercise", "");
+    r.number = j.value("number", 0);
+    std::string status = j.value("status", "FAIL");
+    for (CheckStatus s : {CheckStatus::Pass, CheckStatus::Fail, CheckStatus::NotStarted, CheckStatus::CompileError,
+                          CheckStatus::TimedOut, CheckStatus::Crashed})
+        if (statusName(s) == status) r.status = s;
+    r.message = j.value("message", "");
+    r.hint = j.value("hint", "");
+    r.details = j.value("details", "");
+    r.seconds = j.value("seconds", 0.0);
+    for (const auto& p : j.value("probes", json::array()))
+        r.probes.push_back({p.value("name", ""), p.value("passed", 0), p.value("total", 0)});
+    for (const auto& i : j.value("images", json::array())) {
+        ImageSummary s;
+        s.scene = i.value("scene", "");
+        s.passed = i.value("passed", false);
+        s.offFraction = i.value("off_fraction", 0.0);
+        s.meanLsb = i.value("mean_lsb", 0.0);
+        s.nonFinite = i.value("non_finite", 0L);
+        s.expectedPng = i.value("expected", "");
+        s.gotPng = i.value("got", "");
+        s.diffPng = i.value("diff", "");
+        r.images.push_back(s);
+    }
+    return r;
+}
+
+// ---- check scenes ------------------------------------------------------------------------
+
+std::vector<CheckScene> makeCheckScenes() {
+    auto sized = [](Scene s, int w, int h) {
+        s.render.width = w;
+        s.render.height = h;
+        return s;
+    };
+    auto load = [](const std::string& name) { return loadSceneFile((scenesDir() / name).string()).scene; };
+    // Small sizes: the whole check stays within seconds on llvmpipe, and each
+    // scene still has thousands of pixels of every feature it tests.
+    Scene lecture = sized(defaultScene(), 96, 72);
+    Scene wide = sized(defaultScene(), 128, 48);  // aspect 8:3, 4 samples, sRGB, exponential: camera and display
+    wide.render.spp = 4;
+    wide.render.srgb = true;
+    wide.render.tonemap = ToneMap::Exponential;
+    wide.render.exposure = 1.5;
+    std::vector<CheckScene> list = {
+        {"dielectric-row", sized(load("dielectric-row-reflections.json"), 96, 72), {}},
+        {"metal-row", sized(load("metal-row-reflections.json"), 96, 72), {}},
+        {"lecture", lecture, {}},
+        {"lecture-scaled-1e-3", scaledScene(lecture, 1e-3), {}},
+        {"wide-srgb-4spp", wide, {}},
+    };
+    for (CheckScene& c : list) c.reference = ref::renderCpu(c.scene);
+    return list;
+}
+
+namespace {
+
+// ---- stubs --------------------------------------------------------------------------------
+
+std::string withoutSpaces(const std::string& text) {
+    std::string out;
+    for (char c : text)
+        if (!std::isspace(static_cast<unsigned char>(c))) out += c;
+    return out;
+}
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// ---- probes --------------------------------------------------------------------------------
+
+std::string fmt(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", x);
+    return b;
+}
+
+std::string valueText(const ProbeValue& v, int outputs) {
+    if (outputs == 1) return fmt(v[0]);
+    std::string s = "(";
+    for (int i = 0; i < outputs; ++i) s += (i ? ", " : "") + fmt(v[i]);
+    return s + ")";
+}
+
+bool within(const ProbeValue& got, const ProbeValue& want, int outputs, std::pair<double, double> tol) {
+    for (int i = 0; i < outputs; ++i) {
+        if (!std::isfinite(got[i])) return false;
+        if (std::fabs(got[i] - want[i]) > tol.first + tol.second * std::fabs(want[i])) return false;
+    }
+    return true;
+}
+
+struct ProbeOutcome {
+    ProbeSummary summary;
+    bool allStub = true;
+    std::string firstFailure;  // one line
+    std::string table;
+    std::string hint;
+};
+
+ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<float, 4>>& raw) {
+    ProbeOutcome out;
+    out.summary.name = spec.name;
+    out.summary.total = int(spec.cases.size());
+    std::vector<ProbeValue> got(spec.cases.size()), want(spec.cases.size());
+    std::vector<bool> ok(spec.cases.size());
+    std::map<std::string, std::pair<int, int>> groups;  // group -> (failed, total)
+    int shown = 0;
+    for (std::size_t k = 0; k < spec.cases.size(); ++k) {
+        got[k] = {raw[k][0], raw[k][1], raw[k][2]};
+        if (raw[k][0] != -1.0e30f) out.allStub = false;
+        want[k] = spec.expected(spec.cases[k]);
+        ok[k] = within(got[k], want[k], spec.outputs, spec.tolerance(spec.cases[k]));
+        auto& g = groups[spec.cases[k].group];
+        ++g.second;
+        if (ok[k]) {
+            ++out.summary.passed;
+            continue;
+        }
+        ++g.first;
+        std::string row = "    " + spec.describe(spec.cases[k]) + "  [" + spec.cases[k].group + "]\n      expected " +
+                          valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs) + "\n";
+        if (out.firstFailure.empty())
+            out.firstFailure = spec.name + ": " + std::to_string(0) + " of " + std::to_string(spec.cases.size()) +
+                               " cases wrong; first: " + spec.describe(spec.cases[k]) + ": expected " +
+                               valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs);
+        if (shown++ < 5) out.table += row;
+    }
+    int failed = out.summary.total - out.summary.passed;
+    if (failed == 0 || out.allStub) return out;
+    // Fix the count in the first line now that it is known.
+    auto pos = out.firstFailure.find(": 0 of ");
+    out.firstFailure.replace(pos, 7, ": " + std::to_string(failed) + " of ");
+    out.table = "  " + spec.signature + ": " + std::to_string(failed) + " of " + std::to_string(out.summary.total) +
+                " cases wrong (first " + std::to_string(std::min(failed, 5)) + "):\n" + out.table;
+    // A known mistake: the student's numbers match the mistaken formula on
+    // (nearly) every case where that formula differs from the right one.
+    for (const KnownMistake& m : spec.mistakes) {
+        int differing = 0, matching = 0;
+        for (std::size_t k = 0; k < spec.cases.size(); ++k) {
+            ProbeValue wrong = m.compute(spec.cases[k]);
+            auto tol = spec.tolerance(spec.cases[k]);
+            if (within(wrong, want[k], spec.outputs, tol)) continue;
+            ++differing;
+            if (within(got[k], wrong, spec.outputs, tol)) ++matching;
+        }
+        if (differing > 0 && matching >= std::max(1, int(0.8 * differing))) {
+            out.hint = "looks like: " + m.symptom + ". " + m.hint;
+            return out;
+        }
+    }
+    // Failures concentrated in one kind of input.
+    std::string worst;
+    double worstShare = 0;
+    for (const auto& [group, counts] : groups) {
+        double share = double(counts.first) / failed;
+        if (counts.first > 0 && share > worstShare) {
+            worstShare = share;
+            worst = group;
+        }
+    }
+    for (const auto& [group, hint] : spec.groupHints)
+        if (group == worst && worstShare >= 0.5) {
+            out.hint = "fails mostly on " + worst + ": " + hint;
+            return out;
+        }
+    out.hint = "fails on " + worst + " (" + std::to_string(groups[worst].first) + " of " +
+               std::to_string(groups[worst].second) + ")";
+    return out;
+}
+
+// ---- one exercise, inside the child --------------------------------------------------------
+
+std::string imagePath(const fs::path& dir, const std::string& scene, const std::string& kind) {
+    return (dir / (scene + "-" + kind + ".png")).string();
+}
+
+ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
+                         const std::vector<CheckScene>& scenes) {
+    ExerciseReport report;
+    report.number = exercise.number;
+    report.id = exercise.id;
+    auto context = createHeadlessContext(parseBackend(options.backend));
+    Implementation impl{solutionsDir(), {{exercise.file(), file}}};
+    ShaderProgram probe, tracer;
+    try {
+        AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
+        probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, {}));
+        tracer = buildRayTracer(impl);
+    } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
+        report.status = CheckStatus::CompileError;
+        std::string text = e.what();
+        report.message = text.substr(0, text.find('\n'));
+        report.details = text;
+        report.hint = "fix the first error; the line after it is the line it is about";
+        return report;
+    }
+
+    // Probes.
+    Scene scene = probeScene();
+    bool allStub = true;
+    std::string table;
+    for (const ProbeSpec& spec : probesForExercise(exercise.number)) {
+        ProbeOutcome outcome = evaluateProbe(spec, runProbe(probe, spec, spec.needsScene ? &scene : nullptr));
+        report.probes.push_back(outcome.summary);
+        allStub = allStub && outcome.allStub;
+        if (outcome.summary.passed < outcome.summary.total && !outcome.allStub) {
+            if (report.message.empty()) {
+                report.message = outcome.firstFailure;
+                report.hint = outcome.hint;
+            }
+            table += outcome.table;
+        }
+    }
+    if (allStub) {
+        report.status = CheckStatus::NotStarted;
+        report.message = "every function still returns NOT_STARTED";
+        report.hint = "start with the handout: " + exercise.handout();
+        report.probes.clear();
+        return report;
+    }
+
+    // Images: this exercise from the student, every other from solutions/.
+    GlRenderer renderer;
+    fs::path outDir = options.outputDir / exercise.id;
+    for (const CheckScene& c : scenes) {
+        renderer.setScene(c.scene);
+        renderer.draw(tracer, frameFromScene(c.scene));
+        Rendering got = renderer.readBack();
+        ImageDiff diff = compareRenderings(got, c.reference);
+        ImageSummary s;
+        s.scene = c.name;
+        s.offFraction = diff.offFraction;
+        s.meanLsb = diff.meanLsb;
+        s.nonFinite = diff.nonFinite;
+        // The core's budget (issue 2): <= 0.5% of pixels off by more than
+        // 1/255, mean difference < 0.2/255, no NaN or Inf.
+        s.passed = diff.offFraction <= 0.005 && diff.meanLsb < 0.2 && diff.nonFinite == 0;
+        if (!s.passed) {
+            std::error_code ec;
+            fs::create_directories(outDir, ec);
+            s.expectedPng = imagePath(outDir, c.name, "expected");
+            s.gotPng = imagePath(outDir, c.name, "got");
+            s.diffPng = imagePath(outDir, c.name, "diff");
+            writePng(s.expectedPng, c.reference.display);
+            writePng(s.gotPng, got.display);
+            writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
+            char line[256];
+            std::snprintf(line, sizeof line, "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%), mean %.2f/255%s\n",
+                          c.name.c_str(), 100 * diff.offFraction, diff.meanLsb,
+                          diff.nonFinite ? (", " + std::to_string(diff.nonFinite) + " NaN/Inf values").c_str() : "");
+            table += line;
+            table += "    expected " + s.expectedPng + "\n    got      " + s.gotPng + "\n    diff     " + s.diffPng + "\n";
+            if (report.message.empty()) {
+                report.message = std::string(line + 2);
+                report.message.pop_back();
+                report.hint = "the probes pass but the picture differs: compare " + s.gotPng + " with " + s.expectedPng;
+            }
+        }
+        report.images.push_back(s);
+    }
+    report.details = table;
+    bool probesOk = std::all_of(report.probes.begin(), report.probes.end(),
+                                [](const ProbeSummary& p) { return p.passed == p.total; });
+    report.status = probesOk && report.imageFraction() == 1.0 ? CheckStatus::Pass : CheckStatus::Fail;
+    return report;
+}
+
+}  // namespace
+
+ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
+                             const std::vector<CheckScene>& scenes) {
+    ExerciseReport report;
+    report.number = exercise.number;
+    report.id = exercise.id;
+    auto it = options.fileOverride.find(exercise.number);
+    fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
+    std::error_code ec;
+    if (!fs::exists(file, ec)) {
+        report.status = CheckStatus::NotStarted;
+        report.message = file.string() + " is missing";
+        report.hint = "copy the stub from exercises/" + exercise.file() + " and start with " + exercise.handout();
+        return report;
+    }
+    fs::path stub = exercisesDir() / exercise.file();
+    if (fs::is_regular_file(file, ec) && fs::file_size(file, ec) <= 1 << 20 &&
+        withoutSpaces(readAll(file)) == withoutSpaces(readAll(stub))) {
+        report.status = CheckStatus::NotStarted;
+        report.message = "the file is the unchanged stub";
+        report.hint = "start with the handout: " + exercise.handout();
+        return report;
+    }
+    auto work = [&]() { return toJson(runChecks(exercise, file, options, scenes)).dump(); };
+    if (!options.isolate) {
+        try {
+            report = reportFromJson(json::parse(work()));
+        } catch (const Error& e) {
+            report.status = CheckStatus::Crashed;
+            report.message = e.what();
+        }
+        return report;
+    }
+    IsolationLimits limits;
+    limits.timeoutSeconds = options.timeoutSeconds;
+    IsolatedResult result = runIsolated(work, limits);
+    if (result.outcome == IsolatedResult::Outcome::Finished) {
+        try {
+            report = reportFromJson(json::parse(result.output));
+        } catch (const json::exception&) {
+            report.status = CheckStatus::Crashed;
+            report.message = "the check's child process returned no result";
+        }
+    } else if (result.outcome == IsolatedResult::Outcome::TimedOut) {
+        report.status = CheckStatus::TimedOut;
+        report.message = "the check " + result.reason + ": does a loop in " + file.filename().string() + " never end?";
+        report.hint = "every loop needs a bound; the trace loop runs at most maxBounces() + 1 times";
+    } else {
+        report.status = CheckStatus::Crashed;
+        report.message = "the check " + result.reason;
+        report.hint = "the driver or the check failed while running " + file.filename().string();
+    }
+    report.seconds = result.seconds;
+    return report;
+}
+
+std::string formatReport(const ExerciseReport& r, bool verbose) {
+    char head[64];
+    std::snprintf(head, sizeof head, "%-17s %-13s ", r.id.c_str(), statusName(r.status).c_str());
+    std::string out = head;
+    if (r.status == CheckStatus::Pass) {
+        int cases = 0;
+        for (const auto& p : r.probes) cases += p.total;
+        out += std::to_string(cases) + " probe cases, " + std::to_string(r.images.size()) + " images";
+    } else {
+        out += r.message;
+    }
+    out += "\n";
+    if (r.status != CheckStatus::Pass) {
+        if (!r.hint.empty()) out += "    hint: " + r.hint + "\n";
+        if (!r.details.empty() && (verbose || r.status == CheckStatus::CompileError || r.status == CheckStatus::Fail)) {
+            std::istringstream lines(r.details);
+            std::string line;
+            while (std::getline(lines, line)) out += "    " + line + "\n";
+        }
+    }
+    return out;
+}
+
+}  // namespace rl

@@ -1,0 +1,87 @@
+// The exercise checker behind `raylab check` and `raylab grade`. For one
+// exercise of one implementation folder:
+//   1. NOT STARTED when the file is the shipped stub (or missing);
+//   2. probes: the exercise's functions alone on a grid of inputs against
+//      the CPU reference (checks/probe_cases.h);
+//   3. images: the check scenes rendered with this exercise from the folder
+//      and the solutions for all others, against the CPU reference.
+// Each exercise runs in its own child process (core/isolated.h) so that a
+// shader that hangs or crashes costs that exercise only.
+#pragma once
+
+#include "checks/exercise_registry.h"
+#include "core/image.h"
+#include "core/scene.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rl {
+
+enum class CheckStatus { Pass, Fail, NotStarted, CompileError, TimedOut, Crashed };
+std::string statusName(CheckStatus status);  // "PASS", "FAIL", "NOT STARTED", "COMPILE ERROR", "TIMEOUT", "CRASH"
+
+struct ProbeSummary {
+    std::string name;  // "D_GGX"
+    int passed = 0;
+    int total = 0;
+};
+
+struct ImageSummary {
+    std::string scene;
+    bool passed = false;
+    double offFraction = 0, meanLsb = 0;
+    long nonFinite = 0;
+    std::string expectedPng, gotPng, diffPng;  // written on failure
+};
+
+struct ExerciseReport {
+    int number = 0;
+    std::string id;
+    CheckStatus status = CheckStatus::Fail;
+    std::string message;   // one line: what failed first, or why
+    std::string hint;      // one line: what to look at
+    std::string details;   // the failure table, compile log, image paths
+    std::vector<ProbeSummary> probes;
+    std::vector<ImageSummary> images;
+    double seconds = 0;
+
+    double probeFraction() const;  // passed / total over all probes (0 when none ran)
+    double imageFraction() const;  // check scenes within budget / all
+};
+
+nlohmann::json toJson(const ExerciseReport& report);
+ExerciseReport reportFromJson(const nlohmann::json& j);
+
+struct CheckOptions {
+    std::filesystem::path implDir;          // the student's folder (exercises/ by default)
+    std::filesystem::path outputDir = "check-output";  // expected/got/diff PNGs of failing images
+    double timeoutSeconds = 60;             // per exercise
+    bool isolate = true;                    // run each exercise in a child process
+    std::string backend = "auto";
+    // When set, this file is checked as the exercise's implementation instead
+    // of implDir/<id>.glsl (mutant tests; grading of nested folders).
+    std::map<int, std::filesystem::path> fileOverride;
+};
+
+// The check scenes and their CPU references, computed once and shared.
+struct CheckScene {
+    std::string name;
+    Scene scene;
+    Rendering reference;
+};
+std::vector<CheckScene> makeCheckScenes();
+
+// Checks one exercise (in a child process when options.isolate).
+ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
+                             const std::vector<CheckScene>& scenes);
+
+// The one-line verdict printed by `raylab check` for a report, plus its hint
+// and details on the following lines (indented).
+std::string formatReport(const ExerciseReport& report, bool verbose);
+
+}  // namespace rl

@@ -1,0 +1,930 @@
+#include "checks/probe_cases.h"
+
+#include "reference/cpu_reference.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtx/norm.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+namespace rl {
+namespace {
+
+using glm::dvec3;
+using glm::vec3;
+namespace R = ref;
+
+// ---- inputs ---------------------------------------------------------------------
+
+// splitmix64: a tiny generator with the same sequence on every platform, so
+// every student and every run sees the same cases.
+struct Random {
+    std::uint64_t state;
+    explicit Random(std::uint64_t seed) : state(seed) {}
+    double uniform() {  // [0, 1)
+        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    }
+    double range(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+    vec3 unitVector() {
+        double z = range(-1, 1), phi = range(0, 2 * R::kPi), s = std::sqrt(1 - z * z);
+        return glm::normalize(vec3(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z)));
+    }
+    // A unit vector at angle acos(cosTheta) from n.
+    vec3 around(vec3 n, double cosTheta) {
+        vec3 t = glm::normalize(glm::cross(n, std::fabs(n.x) < 0.9f ? vec3(1, 0, 0) : vec3(0, 1, 0)));
+        vec3 b = glm::cross(n, t);
+        double s = std::sqrt(std::max(0.0, 1 - cosTheta * cosTheta)), phi = range(0, 2 * R::kPi);
+        return glm::normalize(float(cosTheta) * n + float(s * std::cos(phi)) * t + float(s * std::sin(phi)) * b);
+    }
+    vec3 colour() { return vec3(float(uniform()), float(uniform()), float(uniform())); }
+};
+
+void put(ProbeCase& c, int at, vec3 v) {
+    c.in[at] = v.x;
+    c.in[at + 1] = v.y;
+    c.in[at + 2] = v.z;
+}
+dvec3 get(const ProbeCase& c, int at) { return dvec3(c.in[at], c.in[at + 1], c.in[at + 2]); }
+double f(const ProbeCase& c, int at) { return c.in[at]; }
+ProbeValue value(dvec3 v) { return {v.x, v.y, v.z}; }
+ProbeValue value(double x) { return {x, 0, 0}; }
+
+std::string fmt(double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", x);
+    return b;
+}
+std::string fmt(dvec3 v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")"; }
+
+Material materialAt(const ProbeCase& c) {
+    Material m;
+    m.albedo = get(c, 0);
+    m.roughness = f(c, 3);
+    m.metallic = f(c, 4);
+    m.ao = f(c, 5);
+    return m;
+}
+
+// Tolerances. float32 has a relative precision of 2^-24 = 6e-8; GLSL allows
+// its built-ins a few ulps (pow, exp: 3 ulp of exp2(y log2 x); division 2.5
+// ulp), and each function here chains 5 to 30 operations with condition
+// numbers up to ~10. 1e-4 relative is therefore ~1000 ulps: far above what a
+// right float32 answer can be off by, far below any of the mistakes.
+constexpr double kRel = 1e-4;
+constexpr double kAbs = 1e-6;  // values near zero: a few ulps of the typical magnitude 1e-2..1
+auto standardTolerance = [](const ProbeCase&) { return std::make_pair(kAbs, kRel); };
+
+// ---- 01 camera --------------------------------------------------------------------------
+
+std::vector<ProbeSpec> cameraProbes() {
+    ProbeSpec offsets{ProbeFunction::SampleOffset, "sampleOffset", "sampleOffset(s, n)", 2};
+    for (int n = 1; n <= 4; ++n)
+        for (int s = 0; s < n * n; ++s) {
+            ProbeCase c;
+            c.in[0] = float(s);
+            c.in[1] = float(n);
+            c.group = n == 1 ? "one sample per pixel" : "n x n samples";
+            offsets.cases.push_back(c);
+        }
+    offsets.expected = [](const ProbeCase& c) {
+        glm::dvec2 o = R::sampleOffset(int(f(c, 0)), int(f(c, 1)));
+        return ProbeValue{o.x, o.y, 0};
+    };
+    offsets.tolerance = [](const ProbeCase&) { return std::make_pair(1e-6, 0.0); };  // (a + 0.5)/n: exact to 1 ulp
+    offsets.describe = [](const ProbeCase& c) { return "s=" + fmt(f(c, 0)) + " n=" + fmt(f(c, 1)); };
+    offsets.mistakes = {
+        {"samples sit on the pixel corners", "the offset is the cell CENTRE: (a + 0.5)/n, not a/n",
+         [](const ProbeCase& c) {
+             int s = int(f(c, 0)), n = int(f(c, 1));
+             return ProbeValue{double(s % n) / n, double(s / n) / n, 0};
+         }},
+        {"x and y of the sample grid are swapped", "a = s % n runs along x, b = s / n along y",
+         [](const ProbeCase& c) {
+             glm::dvec2 o = R::sampleOffset(int(f(c, 0)), int(f(c, 1)));
+             return ProbeValue{o.y, o.x, 0};
+         }},
+    };
+
+    ProbeSpec rays{ProbeFunction::CameraRay, "cameraRayDirection",
+                   "cameraRayDirection(pixelSample, resolution, fovY, right, up, forward)", 3};
+    Random rng(101);
+    const glm::vec2 sizes[] = {{640, 480}, {320, 160}, {100, 300}, {1, 1}, {7, 5}};
+    for (int k = 0; k < 80; ++k) {
+        ProbeCase c;
+        glm::vec2 res = sizes[k % 5];
+        glm::vec2 px(float(std::floor(rng.range(0, res.x)) + rng.uniform()),
+                     float(std::floor(rng.range(0, res.y)) + rng.uniform()));
+        if (k % 7 == 0) px = glm::vec2(0.5f, 0.5f);                  // bottom-left pixel centre
+        if (k % 7 == 1) px = res - glm::vec2(0.5f);                   // top-right pixel centre
+        float fov = float(rng.range(0.2, 2.6));
+        vec3 forward = rng.unitVector();
+        vec3 right = glm::normalize(glm::cross(forward, rng.unitVector()));
+        vec3 up = glm::cross(right, forward);
+        c.in[0] = px.x, c.in[1] = px.y, c.in[2] = res.x, c.in[3] = res.y, c.in[4] = fov;
+        put(c, 8, right);
+        put(c, 12, up);
+        put(c, 16, forward);
+        c.group = res.x == res.y ? "square image" : "non-square image (aspect != 1)";
+        rays.cases.push_back(c);
+    }
+    rays.expected = [](const ProbeCase& c) {
+        return value(R::cameraRayDirection({f(c, 0), f(c, 1)}, {f(c, 2), f(c, 3)}, f(c, 4), get(c, 8), get(c, 12),
+                                           get(c, 16)));
+    };
+    // A unit vector: 1e-5 absolute is ~100 ulps of its components (tan and normalize, a few ulps each).
+    rays.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };
+    rays.describe = [](const ProbeCase& c) {
+        return "pixel=(" + fmt(f(c, 0)) + ", " + fmt(f(c, 1)) + ") res=" + fmt(f(c, 2)) + "x" + fmt(f(c, 3)) +
+               " fovY=" + fmt(f(c, 4));
+    };
+    // The ray with the aspect ratio on x or y, the half angle or the full one,
+    // and rows from the bottom or from the top.
+    auto rayWith = [](const ProbeCase& c, bool aspectOnY, double angleScale, bool flipY) {
+        double t = std::tan(f(c, 4) * angleScale), aspect = f(c, 2) / f(c, 3);
+        double x = (2 * f(c, 0) / f(c, 2) - 1) * t * (aspectOnY ? 1.0 : aspect);
+        double y = (2 * f(c, 1) / f(c, 3) - 1) * t * (aspectOnY ? aspect : 1.0);
+        if (flipY) y = -y;
+        return value(glm::normalize(x * get(c, 8) + y * get(c, 12) + get(c, 16)));
+    };
+    rays.mistakes = {
+        {"the image is squashed: the aspect ratio scales y instead of x",
+         "x = (2 (i + sx)/width - 1) tan(fovY/2) * aspect; y has no aspect",
+         [=](const ProbeCase& c) { return rayWith(c, true, 0.5, false); }},
+        {"the field of view is twice too wide", "t = tan(fovY / 2): fovY is the FULL vertical angle",
+         [=](const ProbeCase& c) { return rayWith(c, false, 1.0, false); }},
+        {"the picture is upside down", "row j counts from the BOTTOM: y grows with j",
+         [=](const ProbeCase& c) { return rayWith(c, false, 0.5, true); }},
+    };
+    rays.groupHints = {{"non-square image (aspect != 1)", "check where the aspect ratio width/height goes"}};
+    return {offsets, rays};
+}
+
+// ---- 02 intersection ----------------------------------------------------------------------
+
+std::vector<ProbeSpec> intersectProbes() {
+    ProbeSpec p{ProbeFunction::Intersect, "intersectSphere", "intersectSphere(origin, dir, center, radius)", 1};
+    Random rng(202);
+    auto add = [&](vec3 origin, vec3 dir, vec3 center, float radius, const std::string& group) {
+        ProbeCase c;
+        put(c, 0, origin);
+        put(c, 4, glm::normalize(dir));
+        put(c, 8, center);
+        c.in[11] = radius;
+        c.group = group;
+        p.cases.push_back(c);
+    };
+    for (int k = 0; k < 40; ++k) {  // ordinary: a sphere in front, hit or missed
+        vec3 center(float(rng.range(-3, 3)), float(rng.range(-3, 3)), float(rng.range(-8, -2)));
+        float r = float(rng.range(0.2, 1.5));
+        vec3 aim = center + float(rng.range(-1.4, 1.4)) * r * rng.unitVector();
+        add(vec3(float(rng.range(-1, 1)), 0, 0), aim, center, r, "sphere in front");
+    }
+    for (float distance : {1e3f, 3e3f, 1e4f})  // the textbook b^2 - c cancels here
+        for (int k = 0; k < 8; ++k) {
+            vec3 dir = rng.unitVector();
+            vec3 side = glm::normalize(glm::cross(dir, rng.unitVector()));
+            add(vec3(0), dir + float(rng.range(0, 0.7) / distance) * side, distance * dir, 1.0f,
+                "far sphere (distance " + fmt(distance) + ")");
+        }
+    for (int k = 0; k < 10; ++k) {  // origin inside: the far root
+        vec3 center(float(rng.range(-2, 2)), float(rng.range(-2, 2)), float(rng.range(-2, 2)));
+        float r = float(rng.range(1, 3));
+        add(center + float(rng.range(0, 0.8)) * r * rng.unitVector(), rng.unitVector(), center, r,
+            "origin inside the sphere");
+    }
+    for (int k = 0; k < 10; ++k) {  // behind the origin: a miss
+        vec3 dir = rng.unitVector();
+        add(vec3(0), dir, -float(rng.range(3, 10)) * dir + 0.1f * rng.unitVector(), float(rng.range(0.3, 1)),
+            "sphere behind the origin");
+    }
+    for (int k = 0; k < 10; ++k) {  // nearly tangent: just inside (hit) or just outside (miss)
+        vec3 dir = rng.unitVector();
+        vec3 side = glm::normalize(glm::cross(dir, rng.unitVector()));
+        float r = float(rng.range(0.5, 2));
+        float d = r * (k % 2 ? 1.001f : 0.999f);  // 1e-3 of r from tangency: far beyond float32 error
+        add(vec3(0), dir, 5.0f * dir + d * side, r, "nearly tangent ray");
+    }
+    for (float scale : {1e-3f, 1e3f})  // tiny and huge spheres
+        for (int k = 0; k < 6; ++k) {
+            vec3 center = scale * vec3(float(rng.range(-1, 1)), float(rng.range(-1, 1)), -4);
+            add(vec3(0), center + scale * 0.3f * rng.unitVector(), center, 0.5f * scale,
+                scale < 1 ? "tiny sphere (1e-3)" : "large sphere (1e3)");
+        }
+    p.expected = [](const ProbeCase& c) { return value(R::intersectSphere(get(c, 0), get(c, 4), get(c, 8), f(c, 11))); };
+    // t is computed from origin - center, which float32 rounds to ~1 ulp of
+    // the larger of |origin| and |center| + radius; 1e-5 of that scale is
+    // ~100 ulps. A miss must be a miss (NO_HIT = -1 exactly).
+    p.tolerance = [](const ProbeCase& c) {
+        double scale = std::max(glm::length(get(c, 0)), glm::length(get(c, 8)) + f(c, 11));
+        return std::make_pair(1e-5 * scale, 0.0);
+    };
+    p.describe = [](const ProbeCase& c) {
+        return "origin=" + fmt(get(c, 0)) + " dir=" + fmt(get(c, 4)) + " center=" + fmt(get(c, 8)) +
+               " r=" + fmt(f(c, 11));
+    };
+    p.mistakes = {
+        {"spheres behind the camera are hit (negative t accepted)",
+         "only roots with t > 0 count; a sphere entirely behind the origin is NO_HIT",
+         [](const ProbeCase& c) {
+             dvec3 o = get(c, 0), d = get(c, 4), ce = get(c, 8);
+             double r = f(c, 11), b = glm::dot(o - ce, d);
+             double disc = r * r - glm::length2(o - ce - b * d);
+             double t = R::intersectSphere(o, d, ce, r);
+             if (disc < 0 || t != R::kNoHit) return value(t);
+             return value(-b - std::sqrt(disc));  // both roots behind: the nearer one, negative
+         }},
+        {"from inside a sphere the hit is behind the origin (the near root was taken)",
+         "when the origin is inside, the near root is negative: return the far root",
+         [](const ProbeCase& c) {
+             dvec3 o = get(c, 0), d = get(c, 4), ce = get(c, 8);
+             double r = f(c, 11), b = glm::dot(o - ce, d);
+             double disc = r * r - glm::length2(o - ce - b * d);
+             if (disc < 0) return value(R::kNoHit);
+             double t0 = -b - std::sqrt(disc);
+             if (glm::length(o - ce) < r) return value(t0);
+             return value(R::intersectSphere(o, d, ce, r));
+         }},
+    };
+    p.groupHints = {
+        {"far sphere (distance 1000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
+                                        "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
+        {"far sphere (distance 3000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
+                                        "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
+        {"far sphere (distance 10000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
+                                         "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
+        {"origin inside the sphere", "from inside, the near root is behind the origin: take the far one"},
+        {"sphere behind the origin", "both roots negative means NO_HIT"},
+        {"nearly tangent ray", "a negative discriminant is a miss; zero or positive is a hit"},
+    };
+    return {p};
+}
+
+// ---- 03 Lambert ------------------------------------------------------------------------
+
+std::vector<ProbeSpec> lambertProbes() {
+    ProbeSpec fd{ProbeFunction::Lambert, "Fd_Lambert", "Fd_Lambert(albedo)", 3};
+    Random rng(303);
+    for (int k = 0; k < 20; ++k) {
+        ProbeCase c;
+        put(c, 0, k == 0 ? vec3(1) : k == 1 ? vec3(0) : rng.colour());
+        c.group = "albedo";
+        fd.cases.push_back(c);
+    }
+    fd.expected = [](const ProbeCase& c) { return value(R::Fd_Lambert(get(c, 0))); };
+    fd.tolerance = standardTolerance;
+    fd.describe = [](const ProbeCase& c) { return "albedo=" + fmt(get(c, 0)); };
+    fd.mistakes = {{"diffuse surfaces are pi times too bright", "f_d = albedo / pi: the 1/pi is missing",
+                    [](const ProbeCase& c) { return value(get(c, 0)); }}};
+
+    ProbeSpec e{ProbeFunction::Irradiance, "pointLightIrradiance",
+                "pointLightIrradiance(p, n, lightPosition, lightIntensity)", 3};
+    auto add = [&](vec3 p, vec3 n, vec3 light, vec3 intensity, const std::string& group) {
+        ProbeCase c;
+        put(c, 0, p);
+        put(c, 4, n);
+        put(c, 8, light);
+        put(c, 12, intensity);
+        c.group = group;
+        e.cases.push_back(c);
+    };
+    for (int k = 0; k < 40; ++k) {
+        vec3 p(float(rng.range(-2, 2)), float(rng.range(-2, 2)), float(rng.range(-2, 2)));
+        vec3 n = rng.unitVector();
+        vec3 dir = rng.around(n, rng.range(0.05, 1.0));
+        add(p, n, p + float(rng.range(0.5, 6)) * dir, float(rng.range(1, 50)) * rng.colour(), "light in front");
+    }
+    for (int k = 0; k < 12; ++k) {
+        vec3 n = rng.unitVector();
+        add(vec3(1, 2, 3), n, vec3(1, 2, 3) + float(rng.range(0.5, 4)) * rng.around(n, -rng.range(0.1, 1)),
+            vec3(30), "light behind the surface");
+    }
+    add(vec3(1, 1, 1), vec3(0, 1, 0), vec3(1, 1, 1), vec3(40), "light on the surface point");
+    e.expected = [](const ProbeCase& c) {
+        return value(R::pointLightIrradiance(get(c, 0), get(c, 4), get(c, 8), get(c, 12)));
+    };
+    e.tolerance = [](const ProbeCase& c) {
+        return std::make_pair(kAbs * std::max(1.0, glm::length(get(c, 12))), kRel);
+    };
+    e.describe = [](const ProbeCase& c) {
+        return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " light=" + fmt(get(c, 8)) + " CI=" + fmt(get(c, 12));
+    };
+    e.mistakes = {
+        {"light leaks through to the back of surfaces (negative light)",
+         "clamp n.l to [0, 1]: a light behind the surface adds nothing",
+         [](const ProbeCase& c) {
+             dvec3 d = get(c, 8) - get(c, 0);
+             double d2 = glm::dot(d, d);
+             if (d2 <= 1e-12) return value(dvec3(0));
+             return value(get(c, 12) / d2 * glm::dot(get(c, 4), d / std::sqrt(d2)));
+         }},
+        {"light falls off with distance, not distance squared", "E = C I / d2 * NoL, d2 = |c - p|^2",
+         [](const ProbeCase& c) {
+             dvec3 d = get(c, 8) - get(c, 0);
+             double len = glm::length(d);
+             if (len * len <= 1e-12) return value(dvec3(0));
+             return value(get(c, 12) / len * std::clamp(glm::dot(get(c, 4), d / len), 0.0, 1.0));
+         }},
+        {"no falloff with distance", "divide by d2 = |c - p|^2 (inverse-square law)",
+         [](const ProbeCase& c) {
+             dvec3 d = get(c, 8) - get(c, 0);
+             double len = glm::length(d);
+             if (len * len <= 1e-12) return value(dvec3(0));
+             return value(get(c, 12) * std::clamp(glm::dot(get(c, 4), d / len), 0.0, 1.0));
+         }},
+    };
+    e.groupHints = {{"light behind the surface", "clamp n.l at 0: no light from behind"},
+                    {"light on the surface point", "return vec3(0) when d2 <= 1e-12 (no direction, no NaN)"}};
+    return {fd, e};
+}
+
+// ---- 04 shadows ------------------------------------------------------------------------
+
+// The probe scene: two spheres on a big ground, one light above, one beside.
+Scene makeProbeScene() {
+    Scene s;
+    auto sphere = [](dvec3 c, double r, dvec3 albedo, double rough, double metal) {
+        Sphere sp;
+        sp.center = c;
+        sp.radius = r;
+        sp.material.albedo = albedo;
+        sp.material.roughness = rough;
+        sp.material.metallic = metal;
+        return sp;
+    };
+    s.spheres = {sphere({0, -100, 0}, 100, {0.6, 0.6, 0.6}, 0.8, 0),
+                 sphere({0, 1, 0}, 1, {0.9, 0.2, 0.1}, 0.4, 0),
+                 sphere({2.5, 0.7, 0.5}, 0.7, {0.95, 0.9, 0.6}, 0.2, 1),
+                 sphere({-2.2, 0.8, -0.6}, 0.8, {0.2, 0.5, 0.9}, 0.05, 0.5)};
+    Light key;
+    key.position = {1, 6, 2};
+    key.intensity = 60;
+    Light fill;
+    fill.position = {-5, 2, 4};
+    fill.color = {0.6, 0.7, 1};
+    fill.intensity = 25;
+    s.lights = {key, fill};
+    s.render.maxBounces = 3;
+    s.render.ambient = 0.03;
+    s.render.background = {0.2, 0.25, 0.3};
+    return s;
+}
+
+std::vector<ProbeSpec> shadowProbes() {
+    ProbeSpec o{ProbeFunction::OffsetOrigin, "offsetRayOrigin", "offsetRayOrigin(p, n, magnitude)", 3};
+    Random rng(404);
+    for (double scale : {1e-3, 1.0, 1e3, 1e5}) {
+        for (int k = 0; k < 10; ++k) {
+            ProbeCase c;
+            vec3 p = float(scale) * vec3(float(rng.range(-1, 1)), float(rng.range(-1, 1)), float(rng.range(-1, 1)));
+            put(c, 0, p);
+            put(c, 4, rng.unitVector());
+            c.in[7] = float(scale * rng.range(1, 3));
+            c.group = scale == 1e-3 ? "tiny scene (magnitude 1e-3)"
+                      : scale == 1 ? "unit scene" : scale == 1e3 ? "large scene (1e3)" : "huge scene (1e5)";
+            o.cases.push_back(c);
+        }
+    }
+    o.expected = [](const ProbeCase& c) { return value(R::offsetRayOrigin(get(c, 0), get(c, 4), f(c, 7))); };
+    // The offset is RAY_OFFSET_RELATIVE * magnitude = 1.9e-6 magnitude; p + offset
+    // rounds to ~1 ulp of |p| <= magnitude. A quarter of the offset separates a
+    // right answer (error <= 0.06 of it) from a missing or fixed offset.
+    o.tolerance = [](const ProbeCase& c) { return std::make_pair(0.25 * R::kRayOffsetRelative * f(c, 7), 0.0); };
+    o.describe = [](const ProbeCase& c) {
+        return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " magnitude=" + fmt(f(c, 7));
+    };
+    o.mistakes = {
+        {"shadow acne: rays start exactly on the surface", "push the origin along n: p + n * RAY_OFFSET_RELATIVE * magnitude",
+         [](const ProbeCase& c) { return value(get(c, 0)); }},
+    };
+    for (double epsilon : {1e-2, 1e-3, 1e-4, 1e-5})  // the usual fixed epsilons
+        o.mistakes.push_back({"a fixed offset of " + fmt(epsilon) + ": too large for a tiny scene (light leaks), too small "
+                              "for a huge one (acne)",
+                              "scale the offset with the size of the numbers: p + n * RAY_OFFSET_RELATIVE * magnitude",
+                              [epsilon](const ProbeCase& c) { return value(get(c, 0) + epsilon * get(c, 4)); }});
+    o.groupHints = {{"tiny scene (magnitude 1e-3)",
+                     "a fixed epsilon is too large for a tiny scene: scale the offset with magnitude"},
+                    {"huge scene (1e5)", "a fixed epsilon is too small for a huge scene: scale the offset with magnitude"}};
+
+    ProbeSpec v{ProbeFunction::Visibility, "lightVisibility", "lightVisibility(hit, lightPosition)", 1};
+    v.needsScene = true;
+    Scene scene = makeProbeScene();
+    auto addHit = [&](const R::Hit& hit, dvec3 light, const std::string& group) {
+        ProbeCase c;
+        put(c, 0, vec3(hit.p));
+        put(c, 4, vec3(hit.n));
+        c.in[7] = float(hit.magnitude);
+        put(c, 8, vec3(light));
+        c.group = group;
+        v.cases.push_back(c);
+    };
+    // The hit on sphere i in direction `outward` from its centre.
+    auto hitOn = [&](int i, dvec3 outward) {
+        const Sphere& sp = scene.spheres[i];
+        R::Hit hit;
+        hit.n = glm::normalize(outward);
+        hit.p = sp.center + sp.radius * hit.n;
+        hit.magnitude = std::max(std::max(std::fabs(hit.p.x), std::max(std::fabs(hit.p.y), std::fabs(hit.p.z))),
+                                 std::max(std::fabs(sp.center.x), std::max(std::fabs(sp.center.y), std::fabs(sp.center.z))) + sp.radius);
+        return hit;
+    };
+    for (int k = 0; k < 40; ++k) {  // camera rays onto the scene, lit by one light or the other
+        dvec3 origin(rng.range(-4, 4), rng.range(2, 5), 8);
+        dvec3 target(rng.range(-3, 3), rng.range(0, 1.5), rng.range(-1, 1));
+        R::Hit hit;
+        if (R::closestHit(scene, origin, glm::normalize(target - origin), hit))
+            addHit(hit, k % 2 ? scene.lights[0].position : scene.lights[1].position, "scene point");
+    }
+    for (int k = 0; k < 8; ++k) {  // ground right beside the red sphere's contact point, light straight above: shadow
+        double a = rng.range(0, 2 * R::kPi), d = rng.range(0.1, 0.6);
+        addHit(hitOn(0, dvec3(d * std::cos(a), 100, d * std::sin(a))), {0, 6, 0}, "under an occluder");
+    }
+    for (int k = 0; k < 8; ++k) {  // red sphere facing the gold one, the light in between: lit
+        dvec3 towards = scene.spheres[2].center - scene.spheres[1].center;
+        R::Hit hit = hitOn(1, towards + 0.1 * dvec3(rng.unitVector()));
+        double t = R::intersectSphere(hit.p, hit.n, scene.spheres[2].center, scene.spheres[2].radius);
+        if (t > 0) addHit(hit, hit.p + rng.range(0.2, 0.8) * t * hit.n, "occluder beyond the light");
+    }
+    v.expected = [scene](const ProbeCase& c) {
+        R::Hit hit;
+        hit.p = get(c, 0);
+        hit.n = get(c, 4);
+        hit.magnitude = f(c, 7);
+        return value(R::lightVisible(scene, hit, get(c, 8)) ? 1.0 : 0.0);
+    };
+    v.tolerance = [](const ProbeCase&) { return std::make_pair(1e-6, 0.0); };  // 0 or 1 exactly
+    v.describe = [](const ProbeCase& c) { return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " light=" + fmt(get(c, 8)); };
+    v.mistakes = {
+        {"spheres beyond the light cast shadows", "only occluders with t < distance to the light count",
+         [scene](const ProbeCase& c) {
+             dvec3 o = R::offsetRayOrigin(get(c, 0), get(c, 4), f(c, 7));
+             return value(R::anyHitBefore(scene, o, glm::normalize(get(c, 8) - o), 1e30) ? 0.0 : 1.0);
+         }},
+    };
+    v.groupHints = {{"occluder beyond the light", "stop the shadow ray at the light: tMax = distance to the light"},
+                    {"scene point", "start the shadow ray at offsetRayOrigin(hit.p, hit.n, hit.magnitude), not at hit.p"}};
+    return {o, v};
+}
+
+// ---- 05 D -------------------------------------------------------------------------------
+
+// n and h with n.h = cosTheta: h is n turned by theta.
+void putNormalHalf(ProbeCase& c, Random& rng, double cosTheta) {
+    vec3 n = rng.unitVector();
+    put(c, 0, n);
+    put(c, 4, cosTheta >= 1 ? n : rng.around(n, cosTheta));
+}
+
+std::vector<ProbeSpec> ggxProbes() {
+    ProbeSpec d{ProbeFunction::DGgx, "D_GGX", "D_GGX(n, h, alpha)", 1};
+    Random rng(505);
+    for (int k = 0; k < 50; ++k) {
+        ProbeCase c;
+        putNormalHalf(c, rng, rng.range(0.05, 0.999));
+        double r = rng.range(0.1, 1);
+        c.in[8] = float(r * r);
+        c.group = "random";
+        d.cases.push_back(c);
+    }
+    for (double r : {0.045, 0.06, 0.1}) {  // the peak of a nearly mirror surface
+        for (double cosTheta : {1.0, 1.0 - 1e-7, 1.0 - 1e-6, 1.0 - 4e-6}) {
+            ProbeCase c;
+            putNormalHalf(c, rng, cosTheta);
+            c.in[8] = float(r * r);
+            c.group = "near the peak, smooth surface";
+            d.cases.push_back(c);
+        }
+    }
+    for (int k = 0; k < 10; ++k) {
+        ProbeCase c;
+        putNormalHalf(c, rng, rng.range(0.01, 1));
+        c.in[8] = 1.0f;
+        c.group = "roughness 1";
+        d.cases.push_back(c);
+    }
+    d.expected = [](const ProbeCase& c) { return value(R::D_GGX(get(c, 0), get(c, 4), f(c, 8))); };
+    // Near the peak the float32 inputs are themselves exact; a cancellation-free
+    // form stays within 1e-3, the textbook 1 - (n.h)^2 loses several percent:
+    // 1% is the budget for the peak. Elsewhere D is well conditioned.
+    d.tolerance = [](const ProbeCase& c) {
+        return std::make_pair(kAbs, c.group.rfind("near the peak", 0) == 0 ? 1e-2 : 1e-3);
+    };
+    d.describe = [](const ProbeCase& c) {
+        return "n.h=" + fmt(glm::dot(get(c, 0), get(c, 4))) + " alpha=" + fmt(f(c, 8));
+    };
+    auto dTextbookLike = [](const ProbeCase& c, double piFactor, bool alphaSquared) {
+        double NoH = glm::dot(get(c, 0), get(c, 4)), a = f(c, 8);
+        double a2 = alphaSquared ? a * a : a;
+        double den = NoH * NoH * (a2 - 1) + 1;
+        return value(a2 / (piFactor * den * den));
+    };
+    d.mistakes = {
+        {"highlights pi times too bright", "D = alpha^2 / (pi (...)^2): the pi is missing",
+         [=](const ProbeCase& c) { return dTextbookLike(c, 1.0, true); }},
+        {"highlights too wide and too dim (alpha used where alpha^2 belongs)",
+         "alpha is already roughness^2; the formula squares it again: alpha^2",
+         [=](const ProbeCase& c) { return dTextbookLike(c, R::kPi, false); }},
+    };
+    d.groupHints = {{"near the peak, smooth surface",
+                     "1 - (n.h)^2 cancels in float32 near n.h = 1: write it as |cross(n, h)|^2"}};
+    return {d};
+}
+
+// ---- 06 G -------------------------------------------------------------------------------
+
+std::vector<ProbeSpec> geometryProbes() {
+    ProbeSpec g1{ProbeFunction::G1, "G1_SchlickGGX", "G1_SchlickGGX(NoX, k)", 1};
+    Random rng(606);
+    for (int k = 0; k < 30; ++k) {
+        ProbeCase c;
+        c.in[0] = float(k == 0 ? 1.0 : k == 1 ? 1e-4 : rng.range(0.001, 1));
+        c.in[1] = float(rng.range(0.13, 0.5));
+        c.group = "random";
+        g1.cases.push_back(c);
+    }
+    g1.expected = [](const ProbeCase& c) { return value(R::G1_SchlickGGX(f(c, 0), f(c, 1))); };
+    g1.tolerance = standardTolerance;
+    g1.describe = [](const ProbeCase& c) { return "NoX=" + fmt(f(c, 0)) + " k=" + fmt(f(c, 1)); };
+
+    ProbeSpec g{ProbeFunction::G, "G_SchlickGGX", "G_SchlickGGX(NoV, NoL, roughness)", 1};
+    for (int k = 0; k < 50; ++k) {
+        ProbeCase c;
+        c.in[0] = float(rng.range(1e-4, 1));
+        c.in[1] = float(rng.range(1e-3, 1));
+        c.in[2] = float(k < 5 ? 0.0 : k < 10 ? 1.0 : rng.range(0, 1));
+        c.group = k < 5 ? "roughness 0 (clamped to 0.045)" : k < 10 ? "roughness 1" : "random";
+        g.cases.push_back(c);
+    }
+    g.expected = [](const ProbeCase& c) { return value(R::G_SchlickGGX(f(c, 0), f(c, 1), f(c, 2))); };
+    g.tolerance = standardTolerance;
+    g.describe = [](const ProbeCase& c) {
+        return "NoV=" + fmt(f(c, 0)) + " NoL=" + fmt(f(c, 1)) + " roughness=" + fmt(f(c, 2));
+    };
+    auto gWithK = [](const ProbeCase& c, double k) {
+        return value(R::G1_SchlickGGX(f(c, 0), k) * R::G1_SchlickGGX(f(c, 1), k));
+    };
+    g.mistakes = {
+        {"the image-based-lighting remapping k = alpha/2 is used for point lights",
+         "for direct light k = (r + 1)^2 / 8 (Karis 2013); alpha/2 is for IBL",
+         [=](const ProbeCase& c) {
+             double r = std::clamp(double(f(c, 2)), 0.045, 1.0);
+             return gWithK(c, r * r / 2);
+         }},
+        {"roughness is not clamped", "r = clamp(roughness, 0.045, 1) before k = (r + 1)^2 / 8",
+         [=](const ProbeCase& c) {
+             double r = f(c, 2);
+             return gWithK(c, (r + 1) * (r + 1) / 8);
+         }},
+        {"G is a sum, not a product", "G = G1(NoV) * G1(NoL)",
+         [](const ProbeCase& c) {
+             double r = std::clamp(double(f(c, 2)), 0.045, 1.0), k = (r + 1) * (r + 1) / 8;
+             return value(R::G1_SchlickGGX(f(c, 0), k) + R::G1_SchlickGGX(f(c, 1), k));
+         }},
+    };
+    g.groupHints = {{"roughness 0 (clamped to 0.045)", "clamp the roughness to [0.045, 1] first"}};
+    return {g1, g};
+}
+
+// ---- 07 F -------------------------------------------------------------------------------
+
+std::vector<ProbeSpec> fresnelProbes() {
+    ProbeSpec p{ProbeFunction::FSchlick, "F_Schlick", "F_Schlick(F0, VoH)", 3};
+    Random rng(707);
+    for (int k = 0; k < 50; ++k) {
+        ProbeCase c;
+        put(c, 0, k % 5 == 0 ? vec3(0.04f) : k % 5 == 1 ? vec3(1.0f) : rng.colour());
+        c.in[3] = float(k < 4 ? 1.0 : k < 8 ? 0.0 : rng.range(0, 1));
+        c.group = k < 4 ? "normal incidence (VoH = 1)" : k < 8 ? "grazing (VoH = 0)" : "random";
+        p.cases.push_back(c);
+    }
+    for (int k = 0; k < 6; ++k) {
+        ProbeCase c;
+        put(c, 0, rng.colour());
+        c.in[3] = float(-rng.range(0.01, 0.5));
+        c.group = "VoH < 0 (clamped to 0)";
+        p.cases.push_back(c);
+    }
+    p.expected = [](const ProbeCase& c) { return value(R::F_Schlick(get(c, 0), f(c, 3))); };
+    p.tolerance = standardTolerance;
+    p.describe = [](const ProbeCase& c) { return "F0=" + fmt(get(c, 0)) + " VoH=" + fmt(f(c, 3)); };
+    p.mistakes = {
+        {"reflectance above 1 at grazing angles (F0 + (1 + F0)(1 - VoH)^5)",
+         "the weight is (1 - F0), not (1 + F0): F = F0 + (1 - F0)(1 - VoH)^5",
+         [](const ProbeCase& c) {
+             double m = 1 - std::clamp(double(f(c, 3)), 0.0, 1.0);
+             return value(get(c, 0) + (1.0 + get(c, 0)) * std::pow(m, 5));
+         }},
+        {"Fresnel is wrong between normal and grazing incidence ((1 - VoH^5) instead of (1 - VoH)^5)",
+         "raise (1 - VoH) to the 5th power, not VoH: (1 - VoH)^5",
+         [](const ProbeCase& c) {
+             double x = std::clamp(double(f(c, 3)), 0.0, 1.0);
+             return value(get(c, 0) + (1.0 - get(c, 0)) * (1 - std::pow(x, 5)));
+         }},
+    };
+    p.groupHints = {{"VoH < 0 (clamped to 0)", "clamp VoH to [0, 1] before (1 - VoH)^5"},
+                    {"normal incidence (VoH = 1)", "at VoH = 1, F must equal F0"},
+                    {"grazing (VoH = 0)", "at VoH = 0, F must be 1"}};
+    return {p};
+}
+
+// ---- 08 Cook-Torrance --------------------------------------------------------------------
+
+ProbeCase brdfCase(Random& rng, const std::string& group, double roughness, double metallic, double NoV, double NoL) {
+    ProbeCase c;
+    put(c, 0, rng.colour());
+    c.in[3] = float(roughness);
+    c.in[4] = float(metallic);
+    c.in[5] = 1.0f;
+    vec3 n = rng.unitVector();
+    put(c, 8, n);
+    put(c, 12, rng.around(n, NoV));
+    put(c, 16, rng.around(n, NoL));
+    c.group = group;
+    return c;
+}
+
+std::vector<ProbeCase> brdfCases(std::uint64_t seed) {
+    Random rng(seed);
+    std::vector<ProbeCase> cases;
+    for (int k = 0; k < 40; ++k)
+        cases.push_back(brdfCase(rng, "random", rng.range(0.1, 1), rng.uniform() < 0.5 ? 0.0 : rng.uniform(),
+                                 rng.range(0.1, 1), rng.range(0.1, 1)));
+    for (int k = 0; k < 8; ++k) cases.push_back(brdfCase(rng, "metal (metallic = 1)", rng.range(0.2, 1), 1.0, rng.range(0.2, 1), rng.range(0.2, 1)));
+    for (int k = 0; k < 8; ++k) cases.push_back(brdfCase(rng, "dielectric (metallic = 0)", rng.range(0.2, 1), 0.0, rng.range(0.2, 1), rng.range(0.2, 1)));
+    for (int k = 0; k < 6; ++k) cases.push_back(brdfCase(rng, "roughness 0 (clamped)", 0.0, rng.uniform(), rng.range(0.3, 1), rng.range(0.3, 1)));
+    for (int k = 0; k < 6; ++k) cases.push_back(brdfCase(rng, "grazing view", rng.range(0.3, 1), 0.0, 0.02, rng.range(0.3, 1)));
+    for (int k = 0; k < 4; ++k) cases.push_back(brdfCase(rng, "light below the horizon", 0.5, 0.0, 0.7, -rng.range(0.1, 0.9)));
+    return cases;
+}
+
+std::vector<ProbeSpec> cookTorranceProbes() {
+    ProbeSpec alpha{ProbeFunction::Alpha, "ggxAlpha", "ggxAlpha(roughness)", 1};
+    for (double r : {0.0, 0.01, 0.045, 0.1, 0.3, 0.5, 0.77, 1.0}) {
+        ProbeCase c;
+        c.in[0] = float(r);
+        c.group = r < 0.045 ? "roughness below 0.045 (clamped)" : "roughness";
+        alpha.cases.push_back(c);
+    }
+    alpha.expected = [](const ProbeCase& c) { return value(R::ggxAlpha(f(c, 0))); };
+    alpha.tolerance = standardTolerance;
+    alpha.describe = [](const ProbeCase& c) { return "roughness=" + fmt(f(c, 0)); };
+    alpha.mistakes = {
+        {"highlights far too wide: alpha = roughness instead of roughness^2",
+         "alpha = r * r with r = clamp(roughness, 0.045, 1) (perceptual roughness, Burley 2012)",
+         [](const ProbeCase& c) { return value(std::clamp(double(f(c, 0)), 0.045, 1.0)); }},
+        {"mirror-like surfaces blow up: roughness is not clamped", "clamp roughness to [0.045, 1] before squaring",
+         [](const ProbeCase& c) { return value(double(f(c, 0)) * f(c, 0)); }},
+    };
+
+    ProbeSpec f0{ProbeFunction::F0, "baseReflectance", "baseReflectance(material)", 3};
+    Random rng(808);
+    for (int k = 0; k < 12; ++k) {
+        ProbeCase c;
+        put(c, 0, rng.colour());
+        c.in[4] = float(k < 3 ? 0.0 : k < 6 ? 1.0 : rng.uniform());
+        c.group = "material";
+        f0.cases.push_back(c);
+    }
+    f0.expected = [](const ProbeCase& c) { return value(R::baseReflectance(materialAt(c))); };
+    f0.tolerance = standardTolerance;
+    f0.describe = [](const ProbeCase& c) { return "albedo=" + fmt(get(c, 0)) + " metallic=" + fmt(f(c, 4)); };
+
+    auto brdfSpec = [](ProbeFunction fn, const std::string& name, std::uint64_t seed) {
+        ProbeSpec s{fn, name, name + "(n, v, l, material)", 3};
+        s.cases = brdfCases(seed);
+        // D near a smooth peak is the least accurate term (see 05); 2e-3
+        // relative covers it with margin and is far from every mistake below.
+        s.tolerance = [](const ProbeCase&) { return std::make_pair(kAbs, 2e-3); };
+        s.describe = [](const ProbeCase& c) {
+            return "NoV=" + fmt(glm::dot(get(c, 8), get(c, 12))) + " NoL=" + fmt(glm::dot(get(c, 8), get(c, 16))) +
+                   " albedo=" + fmt(get(c, 0)) + " r=" + fmt(f(c, 3)) + " metallic=" + fmt(f(c, 4));
+        };
+        return s;
+    };
+    ProbeSpec spec = brdfSpec(ProbeFunction::Specular, "specularBRDF", 811);
+    spec.expected = [](const ProbeCase& c) { return value(R::specularBRDF(get(c, 8), get(c, 12), get(c, 16), materialAt(c))); };
+    auto specWith = [](const ProbeCase& c, bool roughFresnel, double denominator) {
+        dvec3 n = get(c, 8), v = get(c, 12), l = get(c, 16);
+        Material m = materialAt(c);
+        double NoL = std::clamp(glm::dot(n, l), 0.0, 1.0);
+        if (NoL == 0) return value(dvec3(0));
+        double NoV = std::clamp(glm::dot(n, v), 1e-4, 1.0);
+        dvec3 h = glm::normalize(l + v);
+        double D = R::D_GGX(n, h, R::ggxAlpha(m.roughness)), G = R::G_SchlickGGX(NoV, NoL, m.roughness);
+        dvec3 F = roughFresnel ? R::F_SchlickRoughness(R::baseReflectance(m), NoV, m.roughness)
+                               : R::F_Schlick(R::baseReflectance(m), glm::dot(v, h));
+        return value(D * G * F / (denominator * NoL * NoV));
+    };
+    spec.mistakes = {
+        {"highlights use the roughness-aware Fresnel meant for reflections of the environment",
+         "for point lights F = F_Schlick(F0, v.h); F_SchlickRoughness is for the mirror bounces only",
+         [=](const ProbeCase& c) { return specWith(c, true, 4); }},
+        {"highlights 4 times too bright", "the denominator is 4 NoL NoV", [=](const ProbeCase& c) { return specWith(c, false, 1); }},
+    };
+    spec.groupHints = {{"light below the horizon", "return vec3(0) when NoL = 0 (no division by zero)"},
+                       {"grazing view", "clamp NoV to [1e-4, 1]"}};
+
+    ProbeSpec diff = brdfSpec(ProbeFunction::Diffuse, "diffuseBRDF", 812);
+    diff.expected = [](const ProbeCase& c) { return value(R::diffuseBRDF(get(c, 8), get(c, 12), get(c, 16), materialAt(c))); };
+    diff.mistakes = {
+        {"metals still show a diffuse colour", "kd = (1 - F)(1 - metallic): metals have no diffuse lobe",
+         [](const ProbeCase& c) {
+             dvec3 v = get(c, 12), l = get(c, 16);
+             Material m = materialAt(c);
+             dvec3 F = R::F_Schlick(R::baseReflectance(m), glm::dot(v, glm::normalize(l + v)));
+             return value((1.0 - F) * R::Fd_Lambert(m.albedo));
+         }},
+        {"diffuse ignores the light reflected specularly (kd = 1 - metallic)", "kd = (1 - F)(1 - metallic)",
+         [](const ProbeCase& c) {
+             Material m = materialAt(c);
+             return value((1.0 - m.metallic) * R::Fd_Lambert(m.albedo));
+         }},
+    };
+    diff.groupHints = {{"metal (metallic = 1)", "metals have no diffuse lobe: multiply kd by (1 - metallic)"}};
+
+    ProbeSpec full = brdfSpec(ProbeFunction::Brdf, "cookTorranceBRDF", 813);
+    full.expected = [](const ProbeCase& c) { return value(R::cookTorranceBRDF(get(c, 8), get(c, 12), get(c, 16), materialAt(c))); };
+    return {alpha, f0, spec, diff, full};
+}
+
+// ---- 09 reflections ----------------------------------------------------------------------
+
+// A local trace loop with switches for the typical mistakes of exercise 09.
+dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, bool swapReflect) {
+    dvec3 radiance(0), throughput(1);
+    for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
+        R::Hit hit;
+        if (!R::closestHit(scene, origin, dir, hit)) {
+            radiance += throughput * scene.render.background;
+            break;
+        }
+        radiance += throughput * R::shadeHit(scene, hit, -dir);
+        const Material& m = scene.spheres[hit.sphere].material;
+        double NoV = std::clamp(glm::dot(hit.n, -dir), 1e-4, 1.0);
+        if (attenuate) throughput *= R::F_SchlickRoughness(R::baseReflectance(m), NoV, m.roughness);
+        origin = R::offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+        dir = swapReflect ? glm::normalize(hit.n - 2 * glm::dot(dir, hit.n) * dir) : glm::reflect(dir, hit.n);
+    }
+    return radiance;
+}
+
+std::vector<ProbeSpec> reflectionProbes() {
+    ProbeSpec fr{ProbeFunction::FRoughness, "F_SchlickRoughness", "F_SchlickRoughness(F0, NoV, roughness)", 3};
+    Random rng(909);
+    for (int k = 0; k < 40; ++k) {
+        ProbeCase c;
+        put(c, 0, k % 4 == 0 ? vec3(0.04f) : rng.colour());
+        c.in[3] = float(k < 5 ? 1.0 : k < 10 ? 1e-4 : rng.range(0, 1));
+        c.in[4] = float(k % 7 == 0 ? 0.0 : rng.range(0, 1));
+        c.group = k < 5 ? "normal incidence" : k < 10 ? "grazing" : "random";
+        fr.cases.push_back(c);
+    }
+    fr.expected = [](const ProbeCase& c) { return value(R::F_SchlickRoughness(get(c, 0), f(c, 3), f(c, 4))); };
+    fr.tolerance = standardTolerance;
+    fr.describe = [](const ProbeCase& c) {
+        return "F0=" + fmt(get(c, 0)) + " NoV=" + fmt(f(c, 3)) + " roughness=" + fmt(f(c, 4));
+    };
+    fr.mistakes = {{"rough surfaces reflect as strongly as smooth ones at grazing angles",
+                    "Fr = F0 + (max(1 - r, F0) - F0)(1 - NoV)^5: plain Schlick ignores roughness",
+                    [](const ProbeCase& c) { return value(R::F_Schlick(get(c, 0), f(c, 3))); }}};
+
+    ProbeSpec tr{ProbeFunction::Trace, "traceRay", "traceRay(origin, dir) in the probe scene", 3};
+    tr.needsScene = true;
+    Scene scene = makeProbeScene();
+    for (int k = 0; k < 60; ++k) {
+        ProbeCase c;
+        dvec3 origin(rng.range(-4, 4), rng.range(1.5, 5), rng.range(5, 9));
+        int target = 1 + k % 3;  // aim at the middle of a sphere: no silhouettes, where float and double part ways
+        dvec3 aim = scene.spheres[target].center + 0.5 * scene.spheres[target].radius * dvec3(rng.unitVector());
+        put(c, 0, vec3(origin));
+        put(c, 4, glm::normalize(vec3(aim - origin)));
+        c.group = target == 2 ? "metal sphere (bounces)" : "scene ray";
+        tr.cases.push_back(c);
+    }
+    tr.expected = [scene](const ProbeCase& c) { return value(R::traceRadiance(scene, get(c, 0), get(c, 4))); };
+    // Three bounces of float32 shading, each ~1e-4: 1e-3 relative.
+    tr.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 1e-3); };
+    tr.describe = [](const ProbeCase& c) { return "origin=" + fmt(get(c, 0)) + " dir=" + fmt(get(c, 4)); };
+    tr.mistakes = {
+        {"reflections are as bright as the surfaces they show (throughput never attenuated)",
+         "after each hit: throughput *= F_SchlickRoughness(F0, NoV, roughness)",
+         [scene](const ProbeCase& c) { return value(traceVariant(scene, get(c, 0), get(c, 4), false, false)); }},
+        {"reflections point the wrong way (reflect() arguments swapped)",
+         "reflect(I, N) takes the incident direction first: reflect(dir, hit.n)",
+         [scene](const ProbeCase& c) { return value(traceVariant(scene, get(c, 0), get(c, 4), true, true)); }},
+    };
+    tr.groupHints = {{"metal sphere (bounces)", "check the bounce: origin offset, reflect(dir, n), throughput"}};
+    return {fr, tr};
+}
+
+// ---- 10 display -------------------------------------------------------------------------
+
+std::vector<ProbeSpec> displayProbes() {
+    Random rng(1010);
+    auto radianceValue = [&]() {
+        double scale = std::pow(10.0, rng.range(-3, 1.5));
+        return float(scale) * rng.colour();
+    };
+    ProbeSpec tm{ProbeFunction::ToneMap, "toneMap", "toneMap(c, op)", 3};
+    for (int op = 0; op < 3; ++op)
+        for (int k = 0; k < 15; ++k) {
+            ProbeCase c;
+            put(c, 0, radianceValue());
+            c.in[3] = float(op);
+            c.group = op == 0 ? "reinhard" : op == 1 ? "exponential" : "none";
+            tm.cases.push_back(c);
+        }
+    tm.expected = [](const ProbeCase& c) { return value(R::toneMap(get(c, 0), ToneMap(int(f(c, 3))))); };
+    tm.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };  // values in [0, 1]; exp() is a few ulps
+    tm.describe = [](const ProbeCase& c) { return "c=" + fmt(get(c, 0)) + " op=" + fmt(f(c, 3)); };
+
+    ProbeSpec gm{ProbeFunction::Gamma, "encodeGamma", "encodeGamma(c, gamma)", 3};
+    for (int k = 0; k < 40; ++k) {
+        ProbeCase c;
+        put(c, 0, k % 10 == 0 ? vec3(0.001f, 0.002f, 0.003f) : rng.colour());
+        c.in[3] = float(k < 15 ? 2.2 : k < 25 ? 0.0 : rng.range(1, 3));
+        c.group = c.in[3] == 0 ? "sRGB (gamma 0)" : "power gamma";
+        gm.cases.push_back(c);
+    }
+    gm.expected = [](const ProbeCase& c) {
+        return value(R::encodeGamma(get(c, 0), f(c, 3), f(c, 3) == 0.0f));
+    };
+    gm.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };  // pow(): 3 ulps of exp2(y log2 x)
+    gm.describe = [](const ProbeCase& c) { return "c=" + fmt(get(c, 0)) + " gamma=" + fmt(f(c, 3)); };
+    gm.mistakes = {{"the picture is far too dark: pow(c, gamma) instead of pow(c, 1/gamma)",
+                    "encoding for the display raises to 1/gamma: c^(1/2.2) brightens mid-tones",
+                    [](const ProbeCase& c) {
+                        dvec3 x = get(c, 0);
+                        double g = f(c, 3);
+                        if (g == 0) return value(R::encodeGamma(x, 2.2, true));  // the sRGB branch is separate
+                        return value(dvec3(std::pow(x.x, g), std::pow(x.y, g), std::pow(x.z, g)));
+                    }}};
+    gm.groupHints = {{"sRGB (gamma 0)", "gamma 0 means the exact sRGB curve: 12.92 c below 0.0031308, "
+                                        "1.055 c^(1/2.4) - 0.055 above"}};
+
+    ProbeSpec dp{ProbeFunction::Display, "displayEncode", "displayEncode(radiance, exposure, op, gamma)", 3};
+    for (int k = 0; k < 45; ++k) {
+        ProbeCase c;
+        put(c, 0, radianceValue());
+        c.in[3] = float(k % 5 == 0 ? 1.0 : rng.range(0.25, 4));
+        c.in[4] = float(k % 3);
+        c.in[5] = float(k % 4 == 0 ? 0.0 : 2.2);
+        c.group = "radiance";
+        dp.cases.push_back(c);
+    }
+    auto settingsOf = [](const ProbeCase& c) {
+        RenderSettings s;
+        s.exposure = f(c, 3);
+        s.tonemap = ToneMap(int(f(c, 4)));
+        s.gamma = f(c, 5) == 0 ? 2.2 : f(c, 5);
+        s.srgb = f(c, 5) == 0;
+        return s;
+    };
+    dp.expected = [=](const ProbeCase& c) { return value(R::displayEncode(get(c, 0), settingsOf(c))); };
+    dp.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };
+    dp.describe = [](const ProbeCase& c) {
+        return "radiance=" + fmt(get(c, 0)) + " exposure=" + fmt(f(c, 3)) + " op=" + fmt(f(c, 4)) + " gamma=" + fmt(f(c, 5));
+    };
+    dp.mistakes = {
+        {"gamma is applied before tone mapping (washed-out colours)",
+         "the order is exposure, tone map, then gamma",
+         [=](const ProbeCase& c) {
+             RenderSettings s = settingsOf(c);
+             dvec3 x = R::encodeGamma(get(c, 0) * s.exposure, s.gamma, s.srgb);
+             return value(glm::clamp(R::toneMap(x, s.tonemap), 0.0, 1.0));
+         }},
+        {"exposure is applied after tone mapping", "multiply by exposure first, then tone map",
+         [=](const ProbeCase& c) {
+             RenderSettings s = settingsOf(c);
+             return value(glm::clamp(R::encodeGamma(glm::clamp(R::toneMap(get(c, 0), s.tonemap) * s.exposure, 0.0, 1.0),
+                                                    s.gamma, s.srgb), 0.0, 1.0));
+         }},
+    };
+    return {tm, gm, dp};
+}
+
+}  // namespace
+
+Scene probeScene() { return makeProbeScene(); }
+
+std::vector<ProbeSpec> probesForExercise(int number) {
+    switch (number) {
+        case 1: return cameraProbes();
+        case 2: return intersectProbes();
+        case 3: return lambertProbes();
+        case 4: return shadowProbes();
+        case 5: return ggxProbes();
+        case 6: return geometryProbes();
+        case 7: return fresnelProbes();
+        case 8: return cookTorranceProbes();
+        case 9: return reflectionProbes();
+        case 10: return displayProbes();
+        default: return {};
+    }
+}
+
+}  // namespace rl

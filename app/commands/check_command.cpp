@@ -1,0 +1,90 @@
+// raylab check [--impl DIR] [--exercise N]... [--json FILE] [--output DIR] [--timeout S] [--verbose]
+// One line per exercise: PASS, FAIL, NOT STARTED, COMPILE ERROR, TIMEOUT or
+// CRASH, with the first failure and a hint. Exit 0 only when every selected
+// exercise passes.
+#include "commands/commands.h"
+
+#include "checks/checker.h"
+#include "core/error.h"
+#include "core/paths.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace rl {
+namespace {
+
+struct CheckCommandOptions {
+    std::string impl;
+    std::vector<std::string> exercises;
+    std::string json;
+    std::string output = "check-output";
+    std::string file;
+    double timeout = 60;
+    std::string backend = "auto";
+    bool verbose = false;
+};
+
+int runCheck(const CheckCommandOptions& o) {
+    auto start = std::chrono::steady_clock::now();
+    CheckOptions options;
+    options.implDir = o.impl.empty() ? exercisesDir() : std::filesystem::path(o.impl);
+    options.outputDir = o.output;
+    options.timeoutSeconds = o.timeout;
+    options.backend = o.backend;
+    std::error_code ec;
+    if (o.file.empty() && !std::filesystem::is_directory(options.implDir, ec))
+        throw Error("--impl: " + options.implDir.string() + " is not a directory");
+
+    std::vector<ExerciseInfo> selected;
+    for (const std::string& key : o.exercises) selected.push_back(findExercise(key));
+    if (selected.empty()) selected = allExercises();
+    if (!o.file.empty()) {
+        if (selected.size() != 1) throw Error("--file needs exactly one --exercise");
+        if (!std::filesystem::is_regular_file(o.file, ec)) throw Error("--file: " + o.file + ": file not found");
+        options.fileOverride[selected[0].number] = o.file;
+    }
+
+    std::vector<CheckScene> scenes = makeCheckScenes();
+    nlohmann::json all = nlohmann::json::array();
+    int passed = 0;
+    for (const ExerciseInfo& exercise : selected) {
+        ExerciseReport report = checkExercise(exercise, options, scenes);
+        std::cout << formatReport(report, o.verbose) << std::flush;
+        if (report.status == CheckStatus::Pass) ++passed;
+        all.push_back(toJson(report));
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << passed << " of " << selected.size() << " exercises pass (" << int(seconds + 0.5) << " s)\n";
+    if (!o.json.empty()) {
+        std::ofstream out(o.json);
+        if (!out) throw Error(o.json + ": cannot write the JSON report");
+        out << nlohmann::json{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}}.dump(2) << "\n";
+    }
+    return passed == int(selected.size()) ? 0 : 1;
+}
+
+}  // namespace
+
+void addCheckCommand(CLI::App& app) {
+    auto o = std::make_shared<CheckCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("check", "Check exercise implementations against the CPU reference");
+    cmd->add_option("--impl", o->impl, "Folder with the exercise files (default: exercises/)");
+    cmd->add_option("-e,--exercise", o->exercises, "Exercise to check, by number or name (repeatable; default: all)");
+    cmd->add_option("--file", o->file, "Check this file as the implementation of the one --exercise");
+    cmd->add_option("--json", o->json, "Also write the results as JSON");
+    cmd->add_option("--output", o->output, "Where expected/got/diff PNGs of failing images go")->capture_default_str();
+    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")->capture_default_str();
+    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_flag("-v,--verbose", o->verbose, "Print every detail");
+    cmd->callback([o] {
+        int status = runCheck(*o);
+        if (status != 0) throw CLI::RuntimeError(status);
+    });
+}
+
+}  // namespace rl

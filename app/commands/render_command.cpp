@@ -1,0 +1,102 @@
+// raylab render [SCENE] -o out.png [--hdr out.pfm] [--size WxH] [--spp N]
+//               [--backend auto|egl|osmesa] [--impl DIR] [--cpu] [--view NAME]
+#include "commands/commands.h"
+
+#include "core/error.h"
+#include "core/image.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "render/gl_renderer.h"
+#include "shader/shader_library.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace rl {
+
+Size parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 ||
+        h < 1 || w > 16384 || h > 16384)
+        throw Error("--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, e.g. 640x480, not '" + text + "'");
+    return {w, h};
+}
+
+namespace {
+
+struct RenderOptions {
+    std::string scene;
+    std::string png = "render.png";
+    std::string pfm;
+    std::string size;
+    int spp = 0;
+    std::string backend = "auto";
+    std::string impl;
+    std::string view = "final";
+    bool cpu = false;
+};
+
+void runRender(const RenderOptions& o) {
+    LoadedScene loaded = o.scene.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(o.scene);
+    for (const auto& w : loaded.warnings) std::cerr << "raylab: warning: " << w << "\n";
+    Scene scene = loaded.scene;
+    if (!o.size.empty()) {
+        Size s = parseSize(o.size);
+        scene.render.width = s.width;
+        scene.render.height = s.height;
+    }
+    if (o.spp != 0) {
+        int n = int(std::lround(std::sqrt(double(o.spp))));
+        if (o.spp < 1 || n * n != o.spp || o.spp > 1024)
+            throw Error("--spp: must be a square number from 1 to 1024 (1, 4, 9, 16, ...), not " +
+                        std::to_string(o.spp));
+        scene.render.spp = o.spp;
+    }
+    int bounce = 0;
+    View view = parseView(o.view, bounce);
+
+    Rendering result;
+    if (o.cpu) {
+        if (view != View::Final) throw Error("--view: the CPU reference renders the final image only");
+        result = ref::renderCpu(scene);
+    } else {
+        Backend backend = parseBackend(o.backend);
+        Implementation impl{o.impl.empty() ? solutionsDir() : std::filesystem::path(o.impl), {}};
+        if (!std::filesystem::is_directory(impl.dir))
+            throw Error("--impl: " + impl.dir.string() + " is not a directory");
+        auto context = createHeadlessContext(backend);
+        ShaderProgram program = buildRayTracer(impl);
+        FrameSettings frame = frameFromScene(scene);
+        frame.view = view;
+        frame.viewBounce = bounce;
+        result = renderOnce(program, scene, frame);
+    }
+    writePng(o.png, result.display);
+    if (!o.pfm.empty()) writePfm(o.pfm, result.radiance);
+    std::cout << std::filesystem::absolute(o.png).lexically_normal().string() << "\n";
+    if (!o.pfm.empty()) std::cout << std::filesystem::absolute(o.pfm).lexically_normal().string() << "\n";
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene headless to PNG (and PFM)");
+    cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted");
+    cmd->add_option("-o,--output", options->png, "PNG to write (8-bit, display-encoded)")->capture_default_str();
+    cmd->add_option("--hdr", options->pfm, "Also write linear radiance as PFM");
+    cmd->add_option("--size", options->size, "Override the scene's size, WIDTHxHEIGHT");
+    cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)");
+    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
+    cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, diffuse, specular, ndotl, shadow, normals, bounceK")
+        ->capture_default_str();
+    cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");
+    cmd->callback([options] { runRender(*options); });
+}
+
+}  // namespace rl

@@ -1,0 +1,114 @@
+#include "core/isolated.h"
+
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <exception>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace rl {
+
+IsolatedResult runIsolated(const std::function<std::string()>& work, const IsolationLimits& limits) {
+    IsolatedResult result;
+    int fds[2];
+    if (pipe(fds) != 0) {
+        result.outcome = IsolatedResult::Outcome::Crashed;
+        result.reason = std::string("cannot create a pipe: ") + std::strerror(errno);
+        return result;
+    }
+    auto start = std::chrono::steady_clock::now();
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        result.outcome = IsolatedResult::Outcome::Crashed;
+        result.reason = std::string("cannot fork: ") + std::strerror(errno);
+        return result;
+    }
+    if (pid == 0) {  // child
+        close(fds[0]);
+        setpgid(0, 0);  // its own process group, so a timeout kills every thread and helper
+        struct rlimit limit;
+        limit.rlim_cur = limit.rlim_max = rlim_t(limits.memoryBytes);
+        setrlimit(RLIMIT_AS, &limit);
+        std::string out;
+        int status = 0;
+        try {
+            out = work();
+        } catch (const std::bad_alloc&) {
+            status = 4;
+        } catch (const std::exception& e) {
+            out = std::string("\x01") + e.what();  // marks an error message, not a result
+        }
+        std::size_t written = 0;
+        while (written < out.size()) {
+            ssize_t n = write(fds[1], out.data() + written, out.size() - written);
+            if (n <= 0) break;
+            written += std::size_t(n);
+        }
+        close(fds[1]);
+        _exit(status);
+    }
+    close(fds[1]);
+    fcntl(fds[0], F_SETFL, O_NONBLOCK);
+    bool timedOut = false;
+    char buffer[65536];
+    for (;;) {
+        double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double left = limits.timeoutSeconds - elapsed;
+        if (left <= 0) {
+            timedOut = true;
+            break;
+        }
+        pollfd p{fds[0], POLLIN, 0};
+        int ready = poll(&p, 1, int(std::min(left, 0.5) * 1000) + 1);
+        if (ready > 0) {
+            ssize_t n = read(fds[0], buffer, sizeof buffer);
+            if (n > 0) {
+                result.output.append(buffer, std::size_t(n));
+                continue;
+            }
+            if (n == 0) break;  // child closed the pipe
+        }
+    }
+    if (timedOut) {
+        kill(-pid, SIGKILL);
+        kill(pid, SIGKILL);
+    }
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (timedOut) {
+        result.outcome = IsolatedResult::Outcome::TimedOut;
+        char text[64];
+        std::snprintf(text, sizeof text, "timed out after %.0f s", limits.timeoutSeconds);
+        result.reason = text;
+        result.output.clear();
+    } else if (WIFSIGNALED(status)) {
+        result.outcome = IsolatedResult::Outcome::Crashed;
+        int sig = WTERMSIG(status);
+        result.reason = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
+        result.output.clear();
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == 4) {
+        result.outcome = IsolatedResult::Outcome::OutOfMemory;
+        result.reason = "ran out of memory";
+        result.output.clear();
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) != 0) {
+        result.outcome = IsolatedResult::Outcome::Crashed;
+        result.reason = "exited with status " + std::to_string(WEXITSTATUS(status));
+        result.output.clear();
+    } else if (!result.output.empty() && result.output[0] == '\x01') {
+        result.outcome = IsolatedResult::Outcome::Crashed;
+        result.reason = result.output.substr(1);
+        result.output.clear();
+    }
+    return result;
+}
+
+}  // namespace rl

@@ -1,0 +1,19 @@
+#include "core/paths.h"
+
+#include "root_directory.h"
+
+#include <cstdlib>
+
+namespace rl {
+
+std::filesystem::path sourceRoot() {
+    if (const char* root = std::getenv("RAYLAB_ROOT"); root && *root) return root;
+    return RAYLAB_SOURCE_ROOT;
+}
+
+std::filesystem::path shadersDir() { return sourceRoot() / "shaders"; }
+std::filesystem::path solutionsDir() { return sourceRoot() / "solutions"; }
+std::filesystem::path exercisesDir() { return sourceRoot() / "exercises"; }
+std::filesystem::path scenesDir() { return sourceRoot() / "scenes"; }
+
+}  // namespace rl

@@ -1,0 +1,15 @@
+// Where raylab finds its own files. The source tree is used in place (no
+// copies in bin/); RAYLAB_ROOT overrides it, e.g. for an installed copy.
+#pragma once
+
+#include <filesystem>
+
+namespace rl {
+
+std::filesystem::path sourceRoot();     // $RAYLAB_ROOT, else the configured source directory
+std::filesystem::path shadersDir();     // <root>/shaders: the framework
+std::filesystem::path solutionsDir();   // <root>/solutions
+std::filesystem::path exercisesDir();   // <root>/exercises: the stubs as shipped
+std::filesystem::path scenesDir();      // <root>/scenes
+
+}  // namespace rl

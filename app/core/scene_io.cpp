@@ -1,0 +1,357 @@
+#include "core/scene_io.h"
+
+#include "core/error.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace rl {
+
+using nlohmann::json;
+
+namespace {
+
+// Reads values out of one JSON object, with the field path for messages,
+// and remembers which keys were used so the rest can be warned about.
+class Reader {
+public:
+    Reader(const json& object, std::string path, std::string origin, std::vector<std::string>& warnings)
+        : object_(object), path_(std::move(path)), origin_(std::move(origin)), warnings_(warnings) {
+        if (!object_.is_object()) fail(displayName("") + " must be an object");
+    }
+    ~Reader() noexcept(false) {
+        if (std::uncaught_exceptions()) return;
+        for (const auto& [key, value] : object_.items())
+            if (!used_.count(key))
+                warnings_.push_back(origin_ + ": unknown key '" + displayName(key) + "' (ignored)");
+    }
+
+    bool has(const std::string& key) {
+        used_.insert(key);
+        return object_.contains(key);
+    }
+    const json& raw(const std::string& key) {
+        used_.insert(key);
+        return object_.at(key);
+    }
+    std::string field(const std::string& key) const { return displayName(key); }
+
+    double number(const std::string& key, double fallback) {
+        if (!has(key)) return fallback;
+        const json& v = object_.at(key);
+        if (!v.is_number()) fail(field(key) + " must be a number, not " + typeName(v));
+        double d = v.get<double>();
+        if (!std::isfinite(d)) fail(field(key) + " must be finite");
+        return d;
+    }
+    int integer(const std::string& key, int fallback) {
+        if (!has(key)) return fallback;
+        const json& v = object_.at(key);
+        if (!v.is_number_integer() && !(v.is_number() && std::floor(v.get<double>()) == v.get<double>()))
+            fail(field(key) + " must be a whole number, not " + v.dump());
+        double d = v.get<double>();
+        if (std::fabs(d) > 1e9) fail(field(key) + " is out of range");
+        return int(d);
+    }
+    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback) {
+        if (!has(key)) return fallback;
+        const json& v = object_.at(key);
+        if (!v.is_array() || v.size() != 3) fail(field(key) + " must be an array of 3 numbers");
+        glm::dvec3 out;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[i].is_number()) fail(field(key) + "[" + std::to_string(i) + "] must be a number");
+            out[i] = v[i].get<double>();
+            if (!std::isfinite(out[i])) fail(field(key) + "[" + std::to_string(i) + "] must be finite");
+        }
+        return out;
+    }
+    std::string string(const std::string& key, const std::string& fallback) {
+        if (!has(key)) return fallback;
+        const json& v = object_.at(key);
+        if (!v.is_string()) fail(field(key) + " must be a string, not " + typeName(v));
+        return v.get<std::string>();
+    }
+    bool boolean(const std::string& key, bool fallback) {
+        if (!has(key)) return fallback;
+        const json& v = object_.at(key);
+        if (!v.is_boolean()) fail(field(key) + " must be true or false");
+        return v.get<bool>();
+    }
+
+    [[noreturn]] void fail(const std::string& message) const { throw Error(origin_ + ": " + message); }
+    void require(bool ok, const std::string& key, const std::string& rule) const {
+        if (!ok) fail(field(key) + " " + rule);
+    }
+
+    static std::string typeName(const json& v) {
+        if (v.is_string()) return "a string";
+        if (v.is_array()) return "an array";
+        if (v.is_object()) return "an object";
+        if (v.is_boolean()) return "a boolean";
+        if (v.is_null()) return "null";
+        return "a number";
+    }
+
+private:
+    std::string displayName(const std::string& key) const {
+        if (key.empty()) return path_.empty() ? "the scene" : path_;
+        return path_.empty() ? key : path_ + "." + key;
+    }
+    const json& object_;
+    std::string path_;
+    std::string origin_;
+    std::vector<std::string>& warnings_;
+    std::set<std::string> used_;
+};
+
+bool inUnit(double x) { return x >= 0.0 && x <= 1.0; }
+bool inUnit(const glm::dvec3& v) { return inUnit(v.x) && inUnit(v.y) && inUnit(v.z); }
+bool nonNegative(const glm::dvec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+
+template <typename Enum>
+Enum choose(Reader& r, const std::string& key, Enum fallback,
+            std::initializer_list<std::pair<const char*, Enum>> names) {
+    if (!r.has(key)) return fallback;
+    std::string value = r.string(key, "");
+    std::string all;
+    for (const auto& [name, e] : names) {
+        if (value == name) return e;
+        all += std::string(all.empty() ? "" : ", ") + name;
+    }
+    r.fail(r.field(key) + " must be one of " + all + ", not '" + value + "'");
+}
+
+Camera readCamera(const json& j, const std::string& origin, std::vector<std::string>& warnings) {
+    Reader r(j, "camera", origin, warnings);
+    Camera c;
+    c.position = r.vec3("position", c.position);
+    c.target = r.vec3("target", c.target);
+    c.up = r.vec3("up", c.up);
+    c.fovYDegrees = r.number("fov_y", c.fovYDegrees);
+    r.require(c.fovYDegrees > 0.0 && c.fovYDegrees < 180.0, "fov_y", "must be between 0 and 180 degrees");
+    glm::dvec3 forward = c.target - c.position;
+    r.require(glm::length(forward) > 0.0, "target", "must differ from camera.position");
+    glm::dvec3 side = glm::cross(glm::normalize(forward), c.up);
+    r.require(glm::length(c.up) > 0.0 && glm::length(side) > 1e-9 * glm::length(c.up), "up",
+              "must not be zero or parallel to the viewing direction");
+    return c;
+}
+
+RenderSettings readRender(const json& j, const std::string& origin, std::vector<std::string>& warnings) {
+    Reader r(j, "render", origin, warnings);
+    RenderSettings s;
+    s.width = r.integer("width", s.width);
+    s.height = r.integer("height", s.height);
+    r.require(s.width >= 1 && s.width <= 16384, "width", "must be between 1 and 16384");
+    r.require(s.height >= 1 && s.height <= 16384, "height", "must be between 1 and 16384");
+    s.maxBounces = r.integer("max_bounces", s.maxBounces);
+    r.require(s.maxBounces >= 0 && s.maxBounces <= kMaxBounces, "max_bounces",
+              "must be between 0 and " + std::to_string(kMaxBounces));
+    s.spp = r.integer("spp", s.spp);
+    int n = int(std::lround(std::sqrt(double(std::max(s.spp, 0)))));
+    r.require(s.spp >= 1 && s.spp <= 1024 && n * n == s.spp, "spp", "must be a square number from 1 to 1024 (1, 4, 9, 16, ...)");
+    s.ambient = r.number("ambient", s.ambient);
+    r.require(s.ambient >= 0.0, "ambient", "must be >= 0");
+    s.background = r.vec3("background", s.background);
+    r.require(nonNegative(s.background), "background", "must be >= 0 in every channel");
+    s.exposure = r.number("exposure", s.exposure);
+    r.require(s.exposure > 0.0, "exposure", "must be > 0");
+    s.tonemap = choose(r, "tonemap", s.tonemap,
+                       {{"reinhard", ToneMap::Reinhard}, {"exponential", ToneMap::Exponential}, {"none", ToneMap::None}});
+    if (r.has("gamma")) {
+        const json& g = r.raw("gamma");
+        if (g.is_string()) {
+            r.require(g.get<std::string>() == "srgb", "gamma", "must be a number or \"srgb\"");
+            s.srgb = true;
+        } else {
+            s.gamma = r.number("gamma", s.gamma);
+            r.require(s.gamma > 0.0, "gamma", "must be > 0 (or \"srgb\")");
+        }
+    }
+    return s;
+}
+
+ShadingModel readModel(const json& j, const std::string& origin, std::vector<std::string>& warnings) {
+    Reader r(j, "model", origin, warnings);
+    ShadingModel m;
+    m.distribution = choose(r, "distribution", m.distribution,
+                            {{"ggx", DistributionModel::GGX}, {"beckmann", DistributionModel::Beckmann}});
+    m.geometry = choose(r, "geometry", m.geometry,
+                        {{"schlick-ggx", GeometryModel::SchlickGGX},
+                         {"smith-ggx", GeometryModel::SmithGGXSeparable},
+                         {"smith-ggx-correlated", GeometryModel::SmithGGXCorrelated}});
+    m.fresnel = choose(r, "fresnel", m.fresnel,
+                       {{"schlick", FresnelModel::Schlick}, {"dielectric", FresnelModel::Dielectric},
+                        {"conductor", FresnelModel::Conductor}});
+    m.diffuse = choose(r, "diffuse", m.diffuse, {{"lambert", DiffuseModel::Lambert}, {"burley", DiffuseModel::Burley}});
+    m.blinnPhong = r.boolean("blinn_phong", m.blinnPhong);
+    return m;
+}
+
+Material readMaterial(const json& j, const std::string& path, const std::string& origin,
+                      std::vector<std::string>& warnings) {
+    Reader r(j, path, origin, warnings);
+    Material m;
+    m.albedo = r.vec3("albedo", m.albedo);
+    r.require(inUnit(m.albedo), "albedo", "must be in [0, 1] in every channel");
+    m.roughness = r.number("roughness", m.roughness);
+    r.require(inUnit(m.roughness), "roughness", "must be in [0, 1]");
+    m.metallic = r.number("metallic", m.metallic);
+    r.require(inUnit(m.metallic), "metallic", "must be in [0, 1]");
+    m.ao = r.number("ao", m.ao);
+    r.require(inUnit(m.ao), "ao", "must be in [0, 1]");
+    m.edgeTint = r.vec3("edge_tint", m.edgeTint);
+    r.require(inUnit(m.edgeTint), "edge_tint", "must be in [0, 1] in every channel");
+    return m;
+}
+
+Sphere readSphere(const json& j, const std::string& path, const std::string& origin,
+                  std::vector<std::string>& warnings) {
+    Reader r(j, path, origin, warnings);
+    Sphere s;
+    s.center = r.vec3("center", s.center);
+    s.radius = r.number("radius", s.radius);
+    r.require(s.radius > 0.0, "radius", "must be > 0");
+    if (r.has("material")) s.material = readMaterial(r.raw("material"), path + ".material", origin, warnings);
+    return s;
+}
+
+Light readLight(const json& j, const std::string& path, const std::string& origin,
+                std::vector<std::string>& warnings) {
+    Reader r(j, path, origin, warnings);
+    Light l;
+    l.position = r.vec3("position", l.position);
+    l.color = r.vec3("color", l.color);
+    r.require(nonNegative(l.color), "color", "must be >= 0 in every channel");
+    l.intensity = r.number("intensity", l.intensity);
+    r.require(l.intensity >= 0.0, "intensity", "must be >= 0");
+    return l;
+}
+
+// 1-based line and column of a byte offset, for syntax errors.
+std::string lineColumn(const std::string& text, std::size_t offset) {
+    offset = std::min(offset, text.size());
+    int line = 1, column = 1;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return std::to_string(line) + ":" + std::to_string(column);
+}
+
+}  // namespace
+
+LoadedScene parseScene(const std::string& text, const std::string& origin) {
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw Error(origin + ": the scene file is empty (expected a JSON object)");
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        // e.byte is 1-based, pointing just past the offending character.
+        std::string what = e.what();
+        auto pos = what.find("syntax error while parsing value - ");
+        std::string detail = pos == std::string::npos ? what : what.substr(pos + 35);
+        if (pos == std::string::npos && (pos = what.find("syntax error")) != std::string::npos) detail = what.substr(pos);
+        throw Error(origin + ":" + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": syntax error: " + detail);
+    }
+    LoadedScene out;
+    out.scene.sourcePath = origin;
+    Reader top(j, "", origin, out.warnings);
+    Scene& s = out.scene;
+    if (top.has("camera")) s.camera = readCamera(top.raw("camera"), origin, out.warnings);
+    if (top.has("render")) s.render = readRender(top.raw("render"), origin, out.warnings);
+    if (top.has("model")) s.model = readModel(top.raw("model"), origin, out.warnings);
+    for (const char* list : {"lights", "spheres"}) {
+        if (!top.has(list)) continue;
+        const json& items = top.raw(list);
+        if (!items.is_array()) top.fail(std::string(list) + " must be an array");
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            std::string path = std::string(list) + "[" + std::to_string(i) + "]";
+            if (list[0] == 'l')
+                s.lights.push_back(readLight(items[i], path, origin, out.warnings));
+            else
+                s.spheres.push_back(readSphere(items[i], path, origin, out.warnings));
+        }
+    }
+    if (s.spheres.size() > size_t(kMaxSpheres))
+        top.fail("spheres has " + std::to_string(s.spheres.size()) + " entries, at most " +
+                 std::to_string(kMaxSpheres) + " are supported");
+    if (s.lights.size() > size_t(kMaxLights))
+        top.fail("lights has " + std::to_string(s.lights.size()) + " entries, at most " +
+                 std::to_string(kMaxLights) + " are supported");
+    return out;
+}
+
+LoadedScene loadSceneFile(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw Error(path + ": scene file not found");
+    if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, expected a scene file (.json)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot be read");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return parseScene(buffer.str(), path);
+}
+
+Scene defaultScene() { return parseScene(defaultSceneJson(), "<default>").scene; }
+
+std::string toneMapName(ToneMap op) {
+    switch (op) {
+        case ToneMap::Reinhard: return "reinhard";
+        case ToneMap::Exponential: return "exponential";
+        case ToneMap::None: return "none";
+    }
+    return "reinhard";
+}
+
+json sceneToJson(const Scene& s) {
+    auto v = [](const glm::dvec3& x) { return json::array({x.x, x.y, x.z}); };
+    json j;
+    j["camera"] = {{"position", v(s.camera.position)}, {"target", v(s.camera.target)},
+                   {"up", v(s.camera.up)}, {"fov_y", s.camera.fovYDegrees}};
+    const RenderSettings& r = s.render;
+    j["render"] = {{"width", r.width}, {"height", r.height}, {"max_bounces", r.maxBounces}, {"spp", r.spp},
+                   {"ambient", r.ambient}, {"background", v(r.background)}, {"exposure", r.exposure},
+                   {"tonemap", toneMapName(r.tonemap)}};
+    j["render"]["gamma"] = r.srgb ? json("srgb") : json(r.gamma);
+    if (!s.model.isReference()) {
+        const char* d[] = {"ggx", "beckmann"};
+        const char* g[] = {"schlick-ggx", "smith-ggx", "smith-ggx-correlated"};
+        const char* f[] = {"schlick", "dielectric", "conductor"};
+        const char* fd[] = {"lambert", "burley"};
+        j["model"] = {{"distribution", d[int(s.model.distribution)]}, {"geometry", g[int(s.model.geometry)]},
+                      {"fresnel", f[int(s.model.fresnel)]}, {"diffuse", fd[int(s.model.diffuse)]},
+                      {"blinn_phong", s.model.blinnPhong}};
+    }
+    j["lights"] = json::array();
+    for (const Light& l : s.lights)
+        j["lights"].push_back({{"position", v(l.position)}, {"color", v(l.color)}, {"intensity", l.intensity}});
+    j["spheres"] = json::array();
+    for (const Sphere& sp : s.spheres) {
+        const Material& m = sp.material;
+        json mat = {{"albedo", v(m.albedo)}, {"roughness", m.roughness}, {"metallic", m.metallic}, {"ao", m.ao}};
+        if (m.edgeTint != glm::dvec3(1.0)) mat["edge_tint"] = v(m.edgeTint);
+        j["spheres"].push_back({{"center", v(sp.center)}, {"radius", sp.radius}, {"material", mat}});
+    }
+    return j;
+}
+
+void saveSceneFile(const Scene& scene, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw Error(path + ": cannot write the scene file");
+    out << sceneToJson(scene).dump(2) << "\n";
+    if (!out) throw Error(path + ": writing the scene file failed");
+}
+
+}  // namespace rl

@@ -1,0 +1,69 @@
+#include "gl/context.h"
+
+#include "core/error.h"
+#include "gl/gl_api.h"
+
+namespace rl {
+
+Backend parseBackend(const std::string& name) {
+    if (name == "auto") return Backend::Auto;
+    if (name == "egl") return Backend::Egl;
+    if (name == "osmesa") return Backend::OsMesa;
+    throw Error("--backend: unknown backend '" + name + "' (expected auto, egl or osmesa)");
+}
+
+std::string backendName(Backend backend) {
+    switch (backend) {
+        case Backend::Auto: return "auto";
+        case Backend::Egl: return "egl";
+        case Backend::OsMesa: return "osmesa";
+    }
+    return "?";
+}
+
+std::unique_ptr<GlContext> createHeadlessContext(Backend backend) {
+    std::string tried;
+    auto attempt = [&](const char* name, auto create) -> std::unique_ptr<GlContext> {
+        std::string why;
+        auto context = create(why);
+        if (!context) tried += std::string(tried.empty() ? "" : "; ") + name + ": " + why;
+        return context;
+    };
+    if (backend == Backend::Auto || backend == Backend::Egl) {
+        if (auto c = attempt("EGL", detail::createEglContext)) return c;
+    }
+    if (backend == Backend::Auto || backend == Backend::OsMesa) {
+        if (auto c = attempt("OSMesa", detail::createOsMesaContext)) return c;
+    }
+    throw Error("no OpenGL 3.3 context could be created (tried " + tried +
+                "); install Mesa with scripts/setup.sh");
+}
+
+namespace detail {
+
+std::string describeCurrentContext(const std::string& backend) {
+    auto str = [](GLenum name) {
+        const GLubyte* s = gl::GetString(name);
+        return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
+    };
+    GLint major = 0, minor = 0;
+    gl::GetIntegerv(GL_MAJOR_VERSION, &major);
+    gl::GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major < 3 || (major == 3 && minor < 3))
+        throw Error(backend + " gave OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
+                    ", raylab needs 3.3 core");
+    return backend + " | " + str(GL_VENDOR) + " | " + str(GL_RENDERER) + " | " + str(GL_VERSION);
+}
+
+}  // namespace detail
+
+#ifndef RAYLAB_WITH_OSMESA
+namespace detail {
+std::unique_ptr<GlContext> createOsMesaContext(std::string& why) {
+    why = "not built (RAYLAB_WITH_OSMESA=OFF)";
+    return nullptr;
+}
+}  // namespace detail
+#endif
+
+}  // namespace rl

@@ -1,0 +1,39 @@
+// An OpenGL 3.3 core context, made current on the calling thread, with the
+// gl:: functions loaded. Headless backends (EGL, OSMesa) live here; the
+// window backend (GLFW) is in context_glfw.h. The backend is named and chosen
+// in one place: createHeadlessContext().
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace rl {
+
+enum class Backend { Auto, Egl, OsMesa };
+
+Backend parseBackend(const std::string& name);  // "auto" | "egl" | "osmesa", throws rl::Error
+std::string backendName(Backend backend);
+
+class GlContext {
+public:
+    virtual ~GlContext() = default;
+    // e.g. "EGL (device platform) | NVIDIA Corporation | NVIDIA H100 ..."
+    virtual std::string description() const = 0;
+    // True when GL_TIME_ELAPSED queries are measured by the GPU.
+    virtual bool hasTimerQueries() const { return true; }
+};
+
+// EGL first (device platform, then Mesa surfaceless, then the default
+// display), then OSMesa. Throws rl::Error with one line saying what was
+// tried and why each failed.
+std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
+
+namespace detail {
+// Each returns nullptr and fills `why` when the backend cannot start.
+std::unique_ptr<GlContext> createEglContext(std::string& why);
+std::unique_ptr<GlContext> createOsMesaContext(std::string& why);
+// Common tail: loads gl:: through `resolve`, checks the version is >= 3.3.
+std::string describeCurrentContext(const std::string& backend);
+}  // namespace detail
+
+}  // namespace rl

@@ -1,0 +1,286 @@
+// cpu_reference.cpp: the CPU renderer of the reference model. Read top to
+// bottom: visibility, shading, bounces, the picture, then the energy integral.
+#include "reference/cpu_reference.h"
+
+#include "core/error.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace rl::ref {
+
+using glm::dvec2;
+using glm::dvec3;
+
+namespace {
+
+double maxAbs(dvec3 v) {
+    dvec3 a = glm::abs(v);
+    return std::max(a.x, std::max(a.y, a.z));
+}
+
+}  // namespace
+
+// ---- visibility ------------------------------------------------------------------
+
+bool closestHit(const Scene& scene, dvec3 origin, dvec3 dir, Hit& out) {
+    int nearestSphere = -1;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        const Sphere& s = scene.spheres[i];
+        double t = intersectSphere(origin, dir, s.center, s.radius);
+        if (t > 0.0 && t < nearest) {
+            nearest = t;
+            nearestSphere = i;
+        }
+    }
+    if (nearestSphere < 0) return false;
+
+    const Sphere& s = scene.spheres[nearestSphere];
+    out.t = nearest;
+    out.p = origin + nearest * dir;
+    out.n = (out.p - s.center) / s.radius;
+    if (glm::dot(out.n, dir) > 0.0) out.n = -out.n;  // hit from inside: face the ray
+    out.magnitude = std::max(maxAbs(out.p), maxAbs(s.center) + s.radius);
+    out.sphere = nearestSphere;
+    return true;
+}
+
+bool anyHitBefore(const Scene& scene, dvec3 origin, dvec3 dir, double tMax) {
+    for (const Sphere& s : scene.spheres) {
+        double t = intersectSphere(origin, dir, s.center, s.radius);
+        if (t > 0.0 && t < tMax) return true;
+    }
+    return false;
+}
+
+bool lightVisible(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
+    dvec3 origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+    dvec3 toLight = lightPosition - origin;
+    double distance = glm::length(toLight);
+    if (distance == 0.0) return true;  // the light sits on the ray origin: nothing can be in between
+    return !anyHitBefore(scene, origin, toLight / distance, distance);
+}
+
+// ---- shading ---------------------------------------------------------------------
+
+dvec3 directLight(const Scene& scene, const Hit& hit, dvec3 v) {
+    const Material& m = scene.spheres[hit.sphere].material;
+    dvec3 radiance(0.0);
+    for (const Light& light : scene.lights) {
+        dvec3 E = pointLightIrradiance(hit.p, hit.n, light.position, light.color * light.intensity);
+        if (E == dvec3(0.0)) continue;  // facing away, or light at p: no shadow ray needed
+        if (!lightVisible(scene, hit, light.position)) continue;
+        dvec3 l = glm::normalize(light.position - hit.p);
+        radiance += cookTorranceBRDF(hit.n, v, l, m, scene.model) * E;
+    }
+    return radiance;
+}
+
+dvec3 shadeHit(const Scene& scene, const Hit& hit, dvec3 v) {
+    const Material& m = scene.spheres[hit.sphere].material;
+    return directLight(scene, hit, v) + scene.render.ambient * m.albedo * m.ao;
+}
+
+dvec3 traceRadiance(const Scene& scene, dvec3 origin, dvec3 dir) {
+    dvec3 radiance(0.0);
+    dvec3 throughput(1.0);
+    for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
+        Hit hit;
+        if (!closestHit(scene, origin, dir, hit)) {
+            radiance += throughput * scene.render.background;
+            break;
+        }
+        radiance += throughput * shadeHit(scene, hit, -dir);
+        const Material& m = scene.spheres[hit.sphere].material;
+        double NoV = std::clamp(glm::dot(hit.n, -dir), kMinNoV, 1.0);  // the spec's NdotV clamp
+        throughput *= F_SchlickRoughness(baseReflectance(m), NoV, m.roughness);
+        origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+        dir = glm::reflect(dir, hit.n);
+    }
+    return radiance;
+}
+
+// ---- the camera and the whole picture ---------------------------------------------------
+
+CameraBasis cameraBasis(const Camera& camera) {
+    dvec3 view = camera.target - camera.position;
+    if (glm::length(view) == 0.0) throw Error("camera: target equals position, no view direction");
+    CameraBasis basis;
+    basis.position = camera.position;
+    basis.forward = glm::normalize(view);
+    dvec3 right = glm::cross(basis.forward, camera.up);
+    // sin(angle between up and the view) below 1e-9: the roll is rounding
+    // noise (and exactly parallel vectors give a zero cross product).
+    if (glm::length(right) <= 1e-9 * glm::length(camera.up))
+        throw Error("camera: up is parallel to the view direction, the roll is undefined");
+    basis.right = glm::normalize(right);
+    basis.up = glm::cross(basis.right, basis.forward);
+    basis.fovYRadians = camera.fovYDegrees * kPi / 180.0;
+    return basis;
+}
+
+namespace {
+
+// n for spp = n*n; 0 when spp is not a positive square.
+int samplesPerAxis(int spp) {
+    int n = int(std::lround(std::sqrt(double(std::max(spp, 0)))));
+    return (n >= 1 && n * n == spp) ? n : 0;
+}
+
+}  // namespace
+
+dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j) {
+    const RenderSettings& settings = scene.render;
+    int n = samplesPerAxis(settings.spp);
+    dvec2 resolution(settings.width, settings.height);
+    dvec3 sum(0.0);
+    for (int s = 0; s < n * n; ++s) {
+        dvec2 pixelSample = dvec2(i, j) + sampleOffset(s, n);
+        dvec3 d = cameraRayDirection(pixelSample, resolution, camera.fovYRadians, camera.right, camera.up,
+                                     camera.forward);
+        sum += traceRadiance(scene, camera.position, d);
+    }
+    return sum / double(n * n);
+}
+
+Rendering renderCpu(const Scene& scene, int threads) {
+    const RenderSettings& settings = scene.render;
+    const int width = settings.width;
+    const int height = settings.height;
+    if (width <= 0 || height <= 0)
+        throw Error("renderCpu: image size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is not positive");
+    if (samplesPerAxis(settings.spp) == 0)
+        throw Error("renderCpu: spp = " + std::to_string(settings.spp) + " is not a square number");
+    const CameraBasis camera = cameraBasis(scene.camera);
+
+    Rendering out;
+    out.radiance.width = out.display.width = width;
+    out.radiance.height = out.display.height = height;
+    out.radiance.rgb.assign(size_t(width) * height * 3, 0.0f);
+    out.display.rgb.assign(size_t(width) * height * 3, 0);
+
+    // Each worker takes the next unrendered row until none is left. Every
+    // pixel is computed the same way whoever computes it, so the picture does
+    // not depend on the number of threads.
+    std::atomic<int> nextRow{0};
+    auto worker = [&]() {
+        for (int y = nextRow++; y < height; y = nextRow++) {
+            int j = height - 1 - y;  // spec rows count from the bottom, images from the top
+            for (int i = 0; i < width; ++i) {
+                dvec3 L = pixelRadiance(scene, camera, i, j);
+                dvec3 c = displayEncode(L, settings);
+                float* radiance = out.radiance.at(i, y);
+                std::uint8_t* display = out.display.at(i, y);
+                for (int k = 0; k < 3; ++k) {
+                    radiance[k] = float(L[k]);
+                    display[k] = quantize8(c[k]);
+                }
+            }
+        }
+    };
+
+    int count = threads > 0 ? threads : int(std::thread::hardware_concurrency());
+    count = std::clamp(count, 1, height);  // hardware_concurrency() may say 0; more threads than rows idle
+    std::vector<std::thread> pool;
+    for (int k = 1; k < count; ++k) pool.emplace_back(worker);
+    worker();  // the calling thread works too
+    for (std::thread& t : pool) t.join();
+    return out;
+}
+
+// ---- energy ------------------------------------------------------------------------------
+
+namespace {
+
+// A unit vector from its polar angle (as cos^2 theta) and azimuth, around n = +z.
+dvec3 fromPolar(double cos2Theta, double phi) {
+    double cosTheta = std::sqrt(std::clamp(cos2Theta, 0.0, 1.0));
+    double sinTheta = std::sqrt(std::clamp(1.0 - cos2Theta, 0.0, 1.0));
+    return dvec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+}
+
+// Half vector for the stratified point (u1, u2) in (0,1)^2, distributed with
+// density pdf(h) = D(h) NoH over solid angle (inverse CDF of the model's D),
+// and that density, for the specular lobe of directionalAlbedo().
+struct HalfVectorSample {
+    dvec3 h;
+    double pdf;
+};
+
+HalfVectorSample sampleHalfVector(double u1, double u2, const Material& m, const ShadingModel& model) {
+    const dvec3 n(0.0, 0.0, 1.0);
+    double alpha = ggxAlpha(m.roughness);
+    double phi = 2.0 * kPi * u2;
+    HalfVectorSample sample;
+    if (model.blinnPhong) {
+        // pdf = (s + 2)/(2 pi) NoH^(s + 1): the CDF of NoH is NoH^(s + 2).
+        double s = shininessFromAlpha(alpha);
+        double NoH = std::pow(u1, 1.0 / (s + 2.0));
+        sample.h = fromPolar(NoH * NoH, phi);
+        sample.pdf = (s + 2.0) / (2.0 * kPi) * std::pow(NoH, s + 1.0);
+        return sample;
+    }
+    double tan2;
+    if (model.distribution == DistributionModel::Beckmann) {
+        tan2 = -alpha * alpha * std::log1p(-u1);  // Walter et al. 2007 eq. 28
+        sample.h = fromPolar(1.0 / (1.0 + tan2), phi);
+        sample.pdf = D_Beckmann(n, sample.h, alpha) * sample.h.z;
+    } else {
+        tan2 = alpha * alpha * u1 / (1.0 - u1);  // Walter et al. 2007 eq. 35
+        sample.h = fromPolar(1.0 / (1.0 + tan2), phi);
+        sample.pdf = D_GGX(n, sample.h, alpha) * sample.h.z;
+    }
+    return sample;
+}
+
+}  // namespace
+
+dvec3 directionalAlbedo(double NoV, const Material& material, const ShadingModel& model, int samples) {
+    const dvec3 n(0.0, 0.0, 1.0);
+    const dvec3 v(std::sqrt(std::max(0.0, 1.0 - NoV * NoV)), 0.0, NoV);
+    const int N = std::max(samples, 1);
+    dvec3 diffuse(0.0);
+    dvec3 specular(0.0);
+    for (int a = 0; a < N; ++a) {
+        for (int b = 0; b < N; ++b) {
+            double u1 = (a + 0.5) / N;  // cell centres: never 0 or 1, so no endpoint singularity
+            double u2 = (b + 0.5) / N;
+
+            // Diffuse lobe over cosine-distributed l (pdf NoL/pi): f NoL / pdf = f pi.
+            dvec3 l = fromPolar(1.0 - u1, 2.0 * kPi * u2);
+            diffuse += diffuseBRDF(n, v, l, material, model) * kPi;
+
+            // Specular lobe over h ~ D NoH, l = reflect(-v, h), dl = 4 VoH dh.
+            HalfVectorSample hs = sampleHalfVector(u1, u2, material, model);
+            double VoH = glm::dot(v, hs.h);
+            if (VoH <= 0.0 || hs.pdf <= 0.0) continue;  // h facing away from v maps to no l
+            dvec3 lr = 2.0 * VoH * hs.h - v;
+            double NoL = lr.z;
+            if (NoL <= 0.0) continue;  // reflected below the horizon: not part of the integral
+            specular += specularBRDF(n, v, lr, material, model) * (NoL * 4.0 * VoH / hs.pdf);
+        }
+    }
+    return (diffuse + specular) / double(N * N);
+}
+
+dvec3 directionalAlbedo(double NoV, double roughness, dvec3 F0, double metallic, const ShadingModel& model,
+                        int samples) {
+    Material m;
+    m.roughness = roughness;
+    m.metallic = metallic;
+    m.albedo = metallic > 0.0 ? glm::clamp((F0 - 0.04 * (1.0 - metallic)) / metallic, 0.0, 1.0) : dvec3(1.0);
+    m.edgeTint = dvec3(1.0);
+    return directionalAlbedo(NoV, m, model, samples);
+}
+
+}  // namespace rl::ref

@@ -1,0 +1,103 @@
+#include "render/gl_renderer.h"
+
+#include "core/error.h"
+
+#include <vector>
+
+namespace rl {
+
+GlRenderer::GlRenderer() {
+    gl::GenVertexArrays(1, &vertexArray_);  // core profile draws need a bound VAO, even an empty one
+    gl::GenFramebuffers(1, &framebuffer_);
+    gl::GenTextures(2, targets_);
+    gl::GenQueries(1, &timer_);
+}
+
+GlRenderer::~GlRenderer() {
+    gl::DeleteQueries(1, &timer_);
+    gl::DeleteTextures(2, targets_);
+    gl::DeleteFramebuffers(1, &framebuffer_);
+    gl::DeleteVertexArrays(1, &vertexArray_);
+}
+
+void GlRenderer::setScene(const Scene& scene) {
+    scene_ = scene;
+    sceneBlock_.upload(scene);
+}
+
+void GlRenderer::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    for (int i = 0; i < 2; ++i) {
+        gl::BindTexture(GL_TEXTURE_2D, targets_[i]);
+        gl::TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl::FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, targets_[i], 0);
+    }
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl::DrawBuffers(2, buffers);
+    GLenum status = gl::CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("the RGBA32F framebuffer of " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is not complete (status " + std::to_string(status) + ")");
+}
+
+void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) {
+    resize(frame.width, frame.height);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl::Viewport(0, 0, frame.width, frame.height);
+    setFrameUniforms(program, scene_, frame);
+    sceneBlock_.bind(program);
+    gl::BindVertexArray(vertexArray_);
+    gl::DrawArrays(GL_TRIANGLES, 0, 3);
+    GLenum error = gl::GetError();
+    if (error != GL_NO_ERROR) throw Error("OpenGL error while drawing: " + gl::errorName(error));
+}
+
+double GlRenderer::drawTimed(const ShaderProgram& program, const FrameSettings& frame) {
+    gl::BeginQuery(GL_TIME_ELAPSED, timer_);
+    draw(program, frame);
+    gl::EndQuery(GL_TIME_ELAPSED);
+    GLuint64 nanoseconds = 0;
+    gl::GetQueryObjectui64v(timer_, GL_QUERY_RESULT, &nanoseconds);  // waits for the GPU
+    return double(nanoseconds) * 1e-6;
+}
+
+Rendering GlRenderer::readBack() const {
+    Rendering out;
+    std::vector<float> pixels(std::size_t(width_) * height_ * 4);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl::PixelStorei(GL_PACK_ALIGNMENT, 1);
+    out.display = {width_, height_, std::vector<std::uint8_t>(std::size_t(width_) * height_ * 3)};
+    out.radiance = {width_, height_, std::vector<float>(std::size_t(width_) * height_ * 3)};
+    for (int target = 0; target < 2; ++target) {
+        gl::ReadBuffer(GL_COLOR_ATTACHMENT0 + target);
+        gl::ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, pixels.data());
+        for (int y = 0; y < height_; ++y) {  // GL rows start at the bottom
+            const float* row = &pixels[std::size_t(height_ - 1 - y) * width_ * 4];
+            for (int x = 0; x < width_; ++x) {
+                for (int c = 0; c < 3; ++c) {
+                    if (target == 0)
+                        out.display.at(x, y)[c] = quantize8(row[4 * x + c]);
+                    else
+                        out.radiance.at(x, y)[c] = row[4 * x + c];
+                }
+            }
+        }
+    }
+    GLenum error = gl::GetError();
+    if (error != GL_NO_ERROR) throw Error("OpenGL error while reading the image back: " + gl::errorName(error));
+    return out;
+}
+
+Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame) {
+    GlRenderer renderer;
+    renderer.setScene(scene);
+    renderer.draw(program, frame);
+    return renderer.readBack();
+}
+
+}  // namespace rl

@@ -1,0 +1,124 @@
+#include "render/scene_uniforms.h"
+
+#include "core/error.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace rl {
+
+glm::dmat4 cameraToWorld(const Camera& c) {
+    glm::dvec3 f = glm::normalize(c.target - c.position);
+    glm::dvec3 r = glm::normalize(glm::cross(f, c.up));
+    glm::dvec3 u = glm::cross(r, f);
+    glm::dmat4 m(1.0);
+    m[0] = glm::dvec4(r, 0.0);
+    m[1] = glm::dvec4(u, 0.0);
+    m[2] = glm::dvec4(-f, 0.0);
+    m[3] = glm::dvec4(c.position, 1.0);
+    return m;
+}
+
+namespace {
+// std140 layout of SceneBlock in shaders/scene.glsl: six vec4 arrays.
+struct SceneBlockData {
+    glm::vec4 sphereGeometry[kMaxSpheres];
+    glm::vec4 sphereSurface[kMaxSpheres];
+    glm::vec4 sphereExtra[kMaxSpheres];
+    glm::vec4 sphereEdgeTint[kMaxSpheres];
+    glm::vec4 lightPosition[kMaxLights];
+    glm::vec4 lightIntensity[kMaxLights];
+};
+constexpr GLuint kSceneBlockBinding = 0;
+}  // namespace
+
+SceneUniformBlock::SceneUniformBlock() {
+    gl::GenBuffers(1, &buffer_);
+    gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
+    gl::BufferData(GL_UNIFORM_BUFFER, sizeof(SceneBlockData), nullptr, GL_DYNAMIC_DRAW);
+}
+
+SceneUniformBlock::~SceneUniformBlock() {
+    if (buffer_) gl::DeleteBuffers(1, &buffer_);
+}
+
+void SceneUniformBlock::upload(const Scene& scene) {
+    SceneBlockData data{};
+    for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
+        const Sphere& s = scene.spheres[i];
+        data.sphereGeometry[i] = glm::vec4(glm::vec3(s.center), float(s.radius));
+        data.sphereSurface[i] = glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness));
+        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), 0.0f, 0.0f);
+        data.sphereEdgeTint[i] = glm::vec4(glm::vec3(s.material.edgeTint), 0.0f);
+    }
+    for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
+        const Light& l = scene.lights[i];
+        data.lightPosition[i] = glm::vec4(glm::vec3(l.position), 1.0f);
+        data.lightIntensity[i] = glm::vec4(glm::vec3(l.color * l.intensity), 0.0f);
+    }
+    gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
+    gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
+}
+
+void SceneUniformBlock::bind(const ShaderProgram& program) const {
+    GLuint index = gl::GetUniformBlockIndex(program.id(), "SceneBlock");
+    if (index == GL_INVALID_INDEX) return;  // a probe shader without the scene
+    gl::UniformBlockBinding(program.id(), index, kSceneBlockBinding);
+    gl::BindBufferBase(GL_UNIFORM_BUFFER, kSceneBlockBinding, buffer_);
+}
+
+namespace {
+const char* const kViewNames[] = {"final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce"};
+}
+
+View parseView(const std::string& name, int& bounce) {
+    bounce = 0;
+    for (int i = 0; i < int(std::size(kViewNames)); ++i)
+        if (name == kViewNames[i] && i != int(View::Bounce)) return View(i);
+    if (name.rfind("bounce", 0) == 0 && name.size() > 6 && name.size() < 9 &&
+        name.find_first_not_of("0123456789", 6) == std::string::npos) {
+        bounce = std::stoi(name.substr(6));
+        return View::Bounce;
+    }
+    throw Error("--view: unknown view '" + name +
+                "' (expected final, d, g, f, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
+}
+
+std::string viewName(View view, int bounce) {
+    if (view == View::Bounce) return "bounce" + std::to_string(bounce);
+    return kViewNames[int(view)];
+}
+
+FrameSettings frameFromScene(const Scene& scene) {
+    FrameSettings f;
+    f.cameraToWorld = cameraToWorld(scene.camera);
+    f.fovYRadians = scene.camera.fovYDegrees * 3.14159265358979323846 / 180.0;
+    f.width = scene.render.width;
+    f.height = scene.render.height;
+    return f;
+}
+
+void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSettings& frame) {
+    const RenderSettings& r = scene.render;
+    gl::UseProgram(p.id());
+    glm::mat4 camera(frame.cameraToWorld);
+    gl::UniformMatrix4fv(p.uniform("u_cameraToWorld"), 1, GL_FALSE, glm::value_ptr(camera));
+    gl::Uniform1f(p.uniform("u_fovY"), float(frame.fovYRadians));
+    gl::Uniform2f(p.uniform("u_resolution"), float(frame.width), float(frame.height));
+    gl::Uniform1i(p.uniform("u_spp"), r.spp);
+    gl::Uniform1i(p.uniform("u_sphereCount"), int(scene.spheres.size()));
+    gl::Uniform1i(p.uniform("u_lightCount"), int(scene.lights.size()));
+    gl::Uniform1i(p.uniform("u_maxBounces"), r.maxBounces);
+    gl::Uniform1f(p.uniform("u_ambient"), float(r.ambient));
+    gl::Uniform3f(p.uniform("u_background"), float(r.background.x), float(r.background.y), float(r.background.z));
+    gl::Uniform1f(p.uniform("u_exposure"), float(r.exposure));
+    gl::Uniform1i(p.uniform("u_toneMap"), int(r.tonemap));
+    gl::Uniform1f(p.uniform("u_gamma"), r.srgb ? 0.0f : float(r.gamma));
+    gl::Uniform1i(p.uniform("u_view"), int(frame.view));
+    gl::Uniform1i(p.uniform("u_viewBounce"), frame.viewBounce);
+}
+
+}  // namespace rl

@@ -1,0 +1,49 @@
+// Scene and camera to shader uniforms (the table is docs/uniforms.md).
+// Sphere and light arrays go into one std140 uniform block (binding 0), the
+// rest into plain uniforms whose locations the program caches.
+#pragma once
+
+#include "core/scene.h"
+#include "gl/gl_api.h"
+#include "shader/program.h"
+
+#include <glm/mat4x4.hpp>
+
+namespace rl {
+
+// The camera's basis as the spec defines it: f = normalize(target - position),
+// r = normalize(cross(f, up)), u = cross(r, f). Columns: r, u, -f, position.
+glm::dmat4 cameraToWorld(const Camera& camera);
+
+class SceneUniformBlock {
+public:
+    SceneUniformBlock();
+    ~SceneUniformBlock();
+    SceneUniformBlock(const SceneUniformBlock&) = delete;
+    SceneUniformBlock& operator=(const SceneUniformBlock&) = delete;
+
+    void upload(const Scene& scene);   // spheres and lights
+    void bind(const ShaderProgram& program) const;
+
+private:
+    GLuint buffer_ = 0;
+};
+
+// Teaching views of shaders/views.glsl; VIEW_FINAL is the picture.
+enum class View { Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce };
+View parseView(const std::string& name, int& bounce);  // "final", "d", ..., "bounce2"; throws rl::Error
+std::string viewName(View view, int bounce = 0);
+
+struct FrameSettings {
+    glm::dmat4 cameraToWorld{1.0};
+    double fovYRadians = 1.0471975511965976;
+    int width = 1, height = 1;
+    View view = View::Final;
+    int viewBounce = 0;
+};
+FrameSettings frameFromScene(const Scene& scene);
+
+// Sets every plain uniform of the ray tracer for `scene` and `frame`.
+void setFrameUniforms(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame);
+
+}  // namespace rl

@@ -1,0 +1,47 @@
+#include "shader/shader_library.h"
+
+#include "core/error.h"
+#include "core/paths.h"
+
+namespace fs = std::filesystem;
+
+namespace rl {
+
+fs::path Implementation::fileFor(const std::string& exerciseFile) const {
+    auto it = overrides.find(exerciseFile);
+    return it != overrides.end() ? it->second : dir / exerciseFile;
+}
+
+IncludeResolver makeIncludeResolver(const Implementation& impl) {
+    return [impl](const std::string& name, const fs::path& fromFile) -> fs::path {
+        const std::string prefix = "exercise/";
+        const bool fromFramework = isInside(fromFile, shadersDir());
+        if (name.rfind(prefix, 0) == 0 && fromFramework) return impl.fileFor(name.substr(prefix.size()));
+        fs::path relative(name);
+        if (relative.is_absolute()) throw Error("absolute include paths are not allowed");
+        const fs::path folder = fromFile.parent_path();
+        const fs::path target = folder / relative;
+        if (!isInside(target, folder.empty() ? fs::path(".") : folder))
+            throw Error("refused: the file lies outside " + displayPath(folder) + "/");
+        return target;
+    };
+}
+
+std::string shaderPrelude(const ShaderDefines& defines) {
+    std::string prelude = "#version 330 core\n";
+    for (const auto& [name, value] : defines) prelude += "#define " + name + " " + value + "\n";
+    return prelude;
+}
+
+AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines) {
+    SourceAssembler assembler(makeIncludeResolver(impl));
+    return assembler.assemble(shaderPrelude(defines), shadersDir() / entry);
+}
+
+ShaderProgram buildRayTracer(const Implementation& impl, const ShaderDefines& defines) {
+    AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
+    AssembledSource fragment = assembleShader("main.frag", impl, defines);
+    return ShaderProgram(vertex, fragment);
+}
+
+}  // namespace rl

@@ -1,0 +1,44 @@
+// Which GLSL files make a shader: the framework in shaders/, plus one file
+// per exercise from an implementation folder (--impl DIR), optionally with
+// single exercises taken from elsewhere (a check puts the student's file for
+// one exercise beside the solutions for all others). Like glslViewer's -I,
+// the framework names "exercise/05-ggx.glsl" and the host picks the file.
+#pragma once
+
+#include "shader/program.h"
+#include "shader/source_assembler.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace rl {
+
+struct Implementation {
+    std::filesystem::path dir;  // exercises/, solutions/, a student's folder
+    // Exercise file name ("05-ggx.glsl") -> file used instead of dir/name.
+    std::map<std::string, std::filesystem::path> overrides;
+
+    std::filesystem::path fileFor(const std::string& exerciseFile) const;
+};
+
+// Compile-time choices: #define NAME VALUE lines after #version.
+using ShaderDefines = std::map<std::string, std::string>;
+
+// Resolves `#include "..."`: "exercise/NAME" from the implementation; any
+// other name relative to the including file, never leaving the folder that
+// file belongs to (shaders/ for the framework, an implementation's own
+// folder for exercise files), so a student's file cannot read anything else.
+IncludeResolver makeIncludeResolver(const Implementation& impl);
+
+// The #version line and defines every raylab shader starts with.
+std::string shaderPrelude(const ShaderDefines& defines);
+
+// Assembles a framework entry point (e.g. "main.frag") with an implementation.
+AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines);
+
+// The full-screen ray tracer: fullscreen.vert + main.frag. Throws ShaderError
+// (compile/link, mapped to file:line) or rl::Error (missing file, bad include).
+ShaderProgram buildRayTracer(const Implementation& impl, const ShaderDefines& defines = {});
+
+}  // namespace rl

@@ -1,0 +1,76 @@
+#include "view/file_watcher.h"
+
+#include <sys/stat.h>
+
+namespace rl {
+
+FileWatcher::FileWatcher(std::function<void()> onChange) : onChange_(std::move(onChange)) {
+    thread_ = std::thread([this] { run(); });
+}
+
+FileWatcher::~FileWatcher() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+void FileWatcher::watch(std::vector<std::filesystem::path> files) {
+    std::vector<Stamp> stamps;
+    stamps.reserve(files.size());
+    for (const auto& f : files) stamps.push_back(stampOf(f));
+    std::lock_guard<std::mutex> lock(mutex_);
+    files_ = std::move(files);
+    stamps_ = std::move(stamps);
+}
+
+// POSIX stat(): std::filesystem has no inode, and its last_write_time clock
+// cannot be compared across library versions anyway.
+FileWatcher::Stamp FileWatcher::stampOf(const std::filesystem::path& file) {
+    struct stat info {};
+    Stamp s;
+    if (::stat(file.c_str(), &info) != 0) return s;
+    s.exists = true;
+#ifdef __APPLE__
+    s.mtimeNs = (long long)info.st_mtimespec.tv_sec * 1000000000LL + info.st_mtimespec.tv_nsec;
+#else
+    s.mtimeNs = (long long)info.st_mtim.tv_sec * 1000000000LL + info.st_mtim.tv_nsec;
+#endif
+    s.size = (long long)info.st_size;
+    s.inode = (unsigned long long)info.st_ino;
+    return s;
+}
+
+void FileWatcher::run() {
+    bool pending = false;  // a change seen at the last poll, reported once the files hold still
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stop_) {
+        wake_.wait_for(lock, kPollPeriod, [this] { return stop_; });
+        if (stop_) break;
+        bool changedNow = false;
+        for (std::size_t i = 0; i < files_.size(); ++i) {
+            Stamp now = stampOf(files_[i]);
+            if (now != stamps_[i]) {
+                stamps_[i] = now;
+                changedNow = true;
+            }
+        }
+        // An editor's save can take several writes (truncate, write, rename);
+        // waiting one quiet poll avoids compiling a half-written file.
+        if (changedNow) {
+            pending = true;
+        } else if (pending) {
+            pending = false;
+            changed_ = true;
+            if (onChange_) {
+                lock.unlock();
+                onChange_();
+                lock.lock();
+            }
+        }
+    }
+}
+
+}  // namespace rl

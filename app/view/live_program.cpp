@@ -1,0 +1,50 @@
+#include "view/live_program.h"
+
+#include "core/error.h"
+#include "core/paths.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace fs = std::filesystem;
+
+namespace rl {
+namespace {
+
+// Every .glsl file directly in `dir`: the fallback watch list.
+void addGlslFiles(const fs::path& dir, std::vector<fs::path>& out) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".glsl" || entry.path().extension() == ".frag" ||
+            entry.path().extension() == ".vert")
+            out.push_back(entry.path());
+}
+
+}  // namespace
+
+LiveProgram::LiveProgram(Implementation impl, std::string label) : impl_(std::move(impl)), label_(std::move(label)) {
+    addGlslFiles(shadersDir(), files_);
+    addGlslFiles(impl_.dir, files_);
+    for (const auto& [name, file] : impl_.overrides) files_.push_back(file);
+}
+
+bool LiveProgram::rebuild() {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        AssembledSource vertex = assembleShader("fullscreen.vert", impl_, {});
+        AssembledSource fragment = assembleShader("main.frag", impl_, {});
+        std::vector<fs::path> files = vertex.files;
+        for (const auto& f : fragment.files)
+            if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+        files_ = std::move(files);  // known even when the compile below fails
+        ShaderProgram built(vertex, fragment);
+        program_ = std::move(built);
+        error_.clear();
+    } catch (const Error& e) {
+        error_ = e.what();
+    }
+    lastBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return error_.empty();
+}
+
+}  // namespace rl

@@ -1,0 +1,19 @@
+// Exercise 04: shadow rays.            Handout: docs/exercises/04-shadows.md
+//
+// Until you write these, every light is visible from everywhere (no shadows).
+
+// Where a secondary ray from hit point p (unit normal n) starts: p pushed
+// along n by an amount proportional to `magnitude`, the size of the numbers
+// that produced p (Hit.magnitude). Contract:
+//     origin = p + n * RAY_OFFSET_RELATIVE * magnitude
+vec3 offsetRayOrigin(vec3 p, vec3 n, float magnitude) {
+    return vec3(NOT_STARTED);  // TODO
+}
+
+// 1.0 when the light at lightPosition is visible from hit.p, 0.0 when a
+// sphere lies between them. Start the shadow ray at offsetRayOrigin(...),
+// and count only occluders BEFORE the light. The framework gives you
+//     bool anyHitBefore(vec3 origin, vec3 unitDir, float tMax)
+float lightVisibility(Hit hit, vec3 lightPosition) {
+    return NOT_STARTED;  // TODO
+}

@@ -1,0 +1,20 @@
+// camera.glsl: the pinhole camera as the host hands it over (docs/uniforms.md).
+uniform mat4 u_cameraToWorld;  // columns: right, up, back (= -forward), position
+uniform float u_fovY;          // full vertical field of view, radians
+uniform vec2 u_resolution;     // render target size in pixels
+uniform int u_spp;             // samples per pixel, a square number n*n
+
+vec3 cameraPosition() { return u_cameraToWorld[3].xyz; }
+
+// The direction of sample s (of n*n) in the pixel whose lower-left corner is
+// `pixel` (column i, row j from the bottom). Exercise 01 computes it; until
+// then every ray looks straight ahead (a flat picture).
+vec3 primaryRayDirection(vec2 pixel, int s, int n) {
+    vec2 offset = sampleOffset(s, n);
+    if (isStub(offset)) offset = vec2(0.5);
+    vec3 right = u_cameraToWorld[0].xyz;
+    vec3 up = u_cameraToWorld[1].xyz;
+    vec3 forward = -u_cameraToWorld[2].xyz;
+    vec3 d = cameraRayDirection(pixel + offset, u_resolution, u_fovY, right, up, forward);
+    return isStub(d) ? forward : d;
+}

@@ -1,0 +1,46 @@
+// common.glsl: constants and types shared by the framework, the exercises
+// and the probe shaders. Colour values are LINEAR radiance unless a name or
+// comment says "display-encoded".
+
+const float PI = 3.14159265358979;
+
+// intersectSphere() returns NO_HIT when the ray misses (any t <= 0 is a miss).
+const float NO_HIT = -1.0;
+
+// Every exercise stub returns NOT_STARTED (a float, or vec3(NOT_STARTED)).
+// No finished exercise can return it: it is negative where every result is a
+// distance, a colour or a factor, and far outside any real value. The
+// framework recognises it, substitutes a neutral value and paints the pixel
+// with grey/magenta stripes; `raylab check` reports NOT STARTED.
+const float NOT_STARTED = -1.0e30;
+
+// Secondary rays start this far along the normal, relative to the largest
+// number that produced the hit point (Hit.magnitude): 2^-19 is 16 float32
+// ulps of it, above the rounding error of the intersection (a few ulps of
+// |origin - centre|) at any scale, and small enough for contact shadows.
+const float RAY_OFFSET_RELATIVE = 1.0 / 524288.0;
+
+// Tone-mapping operators (the scene's "tonemap").
+const int TONEMAP_REINHARD = 0;
+const int TONEMAP_EXPONENTIAL = 1;
+const int TONEMAP_NONE = 2;
+
+struct Material {
+    vec3 albedo;      // linear base colour
+    float roughness;  // perceptual roughness r, as in the scene file (not clamped)
+    float metallic;   // 0 dielectric, 1 metal
+    float ao;         // ambient occlusion, scales the ambient term only
+};
+
+struct Hit {
+    float t;          // distance along the (unit) ray direction; NO_HIT for a miss
+    vec3 p;           // hit point, world space
+    vec3 n;           // unit normal, flipped to face the incoming ray
+    float magnitude;  // max(|p|, |centre| + radius), componentwise max-abs: the scale of the numbers behind p
+    int sphere;       // index of the sphere hit
+};
+
+float maxAbs(vec3 v) {
+    vec3 a = abs(v);
+    return max(a.x, max(a.y, a.z));
+}

@@ -1,0 +1,68 @@
+// lighting.glsl: direct light from every point light at a hit, plus ambient,
+// assembled from the exercises (03 irradiance, 04 visibility, 08 BRDF).
+// Returns linear radiance towards the viewer.
+
+// Exercise 08 builds on 03, 05, 06 and 07: it is used only when all of them
+// are started (the arguments are constants, so the compiler folds the calls).
+bool cookTorranceReady() {
+    vec3 z = vec3(0.0, 0.0, 1.0);
+    Material probe = Material(vec3(0.5), 0.5, 0.0, 1.0);
+    bool anyStub = isStub(Fd_Lambert(vec3(0.5))) || isStub(D_GGX(z, z, 0.25)) ||
+                   isStub(G1_SchlickGGX(0.5, 0.5)) || isStub(G_SchlickGGX(0.5, 0.5, 0.5)) ||
+                   isStub(F_Schlick(vec3(0.04), 1.0)) || isStub(ggxAlpha(0.5)) ||
+                   isStub(baseReflectance(probe)) || isStub(cookTorranceBRDF(z, z, z, probe));
+    return !anyStub;
+}
+
+// The BRDF of exercise 08, or Lambert alone (exercise 03) until 08 and the
+// terms it uses are all started.
+vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m) {
+    if (cookTorranceReady()) return cookTorranceBRDF(n, v, l, m);
+    vec3 fd = Fd_Lambert(m.albedo);
+    return isStub(fd) ? vec3(0.0) : fd;
+}
+
+// Exercise 04's visibility, used once both of its functions are started
+// (lightVisibility starts its ray at offsetRayOrigin). 1.0 until then.
+float shadowVisibility(Hit hit, vec3 lightPosition) {
+    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), 1.0))) return 1.0;
+    float visible = lightVisibility(hit, lightPosition);
+    return isStub(visible) ? 1.0 : visible;
+}
+
+vec3 directLight(Hit hit, vec3 v, Material m) {
+    vec3 radiance = vec3(0.0);
+    for (int i = 0; i < lightCount(); ++i) {
+        vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
+        if (isStub(E)) return vec3(0.0);          // 03 not started: no direct light
+        if (E == vec3(0.0)) continue;            // facing away, or light at p: no shadow ray needed
+        if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
+        vec3 l = normalize(lightPosition(i) - hit.p);
+        radiance += surfaceBRDF(hit.n, v, l, m) * E;
+    }
+    return radiance;
+}
+
+// The teaching view "bounce k" keeps only the k-th surface hit (0 = primary)
+// or the background seen after k bounces: shadeHit() and backgroundRadiance()
+// count the calls a camera ray makes and return 0 for the others.
+int g_onlyBounce = -1;  // -1: keep every bounce
+int g_bounceCounter = 0;
+
+bool keepThisBounce() {
+    bool keep = g_onlyBounce < 0 || g_bounceCounter == g_onlyBounce;
+    ++g_bounceCounter;
+    return keep;
+}
+
+// Direct light plus the ambient term, once per hit (lit or not).
+vec3 shadeHit(Hit hit, vec3 v) {
+    if (!keepThisBounce()) return vec3(0.0);
+    Material m = sphereMaterial(hit.sphere);
+    return directLight(hit, v, m) + u_ambient * m.albedo * m.ao;
+}
+
+// The radiance of a ray that leaves the scene.
+vec3 backgroundRadiance() {
+    return keepThisBounce() ? u_background : vec3(0.0);
+}

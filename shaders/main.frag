@@ -1,0 +1,22 @@
+// main.frag: the ray tracer, one pixel per invocation. Read top to bottom:
+// modules in the order they build on each other, then main().
+#include "raytracer.glsl"
+
+layout(location = 0) out vec4 o_display;   // display-encoded colour (8-bit PNG after rounding)
+layout(location = 1) out vec4 o_radiance;  // linear radiance averaged over the samples (PFM)
+
+void main() {
+    vec2 pixel = floor(gl_FragCoord.xy);  // (i, j), j counted from the bottom
+    int n = max(1, int(sqrt(float(u_spp)) + 0.5));
+    if (u_view == VIEW_BOUNCE) g_onlyBounce = u_viewBounce;
+    bool traced = u_view == VIEW_FINAL || u_view == VIEW_BOUNCE;
+    vec3 sum = vec3(0.0);
+    for (int s = 0; s < n * n; ++s) {
+        vec3 dir = primaryRayDirection(pixel, s, n);
+        sum += traced ? radianceAlong(cameraPosition(), dir) : teachingView(cameraPosition(), dir);
+    }
+    vec3 radiance = sum / float(n * n);  // the spec averages radiance before the display step
+    vec3 colour = viewIsRadiance() ? displayColour(radiance) : clamp(radiance, 0.0, 1.0);
+    o_display = vec4(stubOverlay(colour, gl_FragCoord.xy), 1.0);
+    o_radiance = vec4(radiance, 1.0);
+}

@@ -1,0 +1,14 @@
+// raytracer.glsl: every module of the ray tracer, in the order they build on
+// each other. main.frag (the picture) and probe.frag (the exercise checks)
+// both start from here.
+#include "common.glsl"
+#include "stub_marker.glsl"
+#include "scene.glsl"
+#include "declarations.glsl"
+#include "intersect_scene.glsl"
+#include "exercises.glsl"
+#include "lighting.glsl"
+#include "trace.glsl"
+#include "camera.glsl"
+#include "display.glsl"
+#include "views.glsl"

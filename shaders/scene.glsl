@@ -1,0 +1,65 @@
+// scene.glsl: the scene as the host uploads it (docs/uniforms.md).
+// Sphere and light arrays live in one std140 uniform block; the host may
+// compile counts and the bounce limit in as constants (RL_SPHERE_COUNT,
+// RL_LIGHT_COUNT, RL_MAX_BOUNCES) when it specialises the shader to a scene.
+
+#ifndef RL_MAX_SPHERES
+#define RL_MAX_SPHERES 64
+#endif
+#ifndef RL_MAX_LIGHTS
+#define RL_MAX_LIGHTS 16
+#endif
+
+layout(std140) uniform SceneBlock {
+    vec4 u_sphereGeometry[RL_MAX_SPHERES];  // xyz centre, w radius (world units)
+    vec4 u_sphereSurface[RL_MAX_SPHERES];   // rgb albedo (linear), a perceptual roughness
+    vec4 u_sphereExtra[RL_MAX_SPHERES];     // x metallic, y ao, z unused, w unused
+    vec4 u_sphereEdgeTint[RL_MAX_SPHERES];  // rgb conductor edge tint (model variants only)
+    vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position (world units)
+    vec4 u_lightIntensity[RL_MAX_LIGHTS];   // rgb colour * intensity (linear)
+};
+
+uniform int u_sphereCount;   // number of valid entries in the sphere arrays
+uniform int u_lightCount;    // number of valid entries in the light arrays
+uniform int u_maxBounces;    // mirror bounces after the primary hit
+uniform float u_ambient;     // ambient radiance factor
+uniform vec3 u_background;   // radiance of a ray that hits nothing (linear)
+
+int sphereCount() {
+#ifdef RL_SPHERE_COUNT
+    return RL_SPHERE_COUNT;
+#else
+    return u_sphereCount;
+#endif
+}
+
+int lightCount() {
+#ifdef RL_LIGHT_COUNT
+    return RL_LIGHT_COUNT;
+#else
+    return u_lightCount;
+#endif
+}
+
+int maxBounces() {
+#ifdef RL_MAX_BOUNCES
+    return RL_MAX_BOUNCES;
+#else
+    return u_maxBounces;
+#endif
+}
+
+vec3 sphereCenter(int i) { return u_sphereGeometry[i].xyz; }
+float sphereRadius(int i) { return u_sphereGeometry[i].w; }
+
+Material sphereMaterial(int i) {
+    Material m;
+    m.albedo = u_sphereSurface[i].rgb;
+    m.roughness = u_sphereSurface[i].a;
+    m.metallic = u_sphereExtra[i].x;
+    m.ao = u_sphereExtra[i].y;
+    return m;
+}
+
+vec3 lightPosition(int i) { return u_lightPosition[i].xyz; }
+vec3 lightIntensity(int i) { return u_lightIntensity[i].rgb; }

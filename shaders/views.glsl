@@ -1,0 +1,66 @@
+// views.glsl: the teaching views of `raylab view` (number keys) and
+// `raylab render --view NAME`, documented in docs/lecture.md. Each shows one
+// quantity at the primary hit, computed by the same exercise functions as the
+// final image. Term views use the scene's first light (the key light).
+
+uniform int u_view;        // one of the VIEW_ constants
+uniform int u_viewBounce;  // for VIEW_BOUNCE: 0 = primary hit, 1 = first reflection, ...
+
+const int VIEW_FINAL = 0;     // the picture
+const int VIEW_D = 1;         // GGX D, shown as D / (1 + D)
+const int VIEW_G = 2;         // Smith G
+const int VIEW_F = 3;         // Schlick F (rgb)
+const int VIEW_DIFFUSE = 4;   // diffuse radiance of all lights (through the display step)
+const int VIEW_SPECULAR = 5;  // specular radiance of all lights (through the display step)
+const int VIEW_NDOTL = 6;     // n.l of the key light
+const int VIEW_SHADOW = 7;    // 1 where the key light is visible, 0 in its shadow
+const int VIEW_NORMALS = 8;   // n * 0.5 + 0.5
+const int VIEW_BOUNCE = 9;    // the contribution of bounce u_viewBounce alone
+
+// Linear values in [0, 1] for the term views (radiance views are handled by
+// main() through the display step).
+vec3 teachingView(vec3 origin, vec3 dir) {
+    Hit hit = closestHit(origin, dir);
+    if (hit.t == NO_HIT) return vec3(0.0);
+    if (u_view == VIEW_NORMALS) return hit.n * 0.5 + 0.5;
+    vec3 v = -dir;
+    Material m = sphereMaterial(hit.sphere);
+    if (u_view == VIEW_DIFFUSE || u_view == VIEW_SPECULAR) {
+        vec3 sum = vec3(0.0);
+        for (int i = 0; i < lightCount(); ++i) {
+            vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
+            if (isStub(E) || E == vec3(0.0)) continue;
+            if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
+            vec3 l = normalize(lightPosition(i) - hit.p);
+            vec3 f = (u_view == VIEW_DIFFUSE) ? diffuseBRDF(hit.n, v, l, m) : specularBRDF(hit.n, v, l, m);
+            if (!isStub(f)) sum += f * E;
+        }
+        return sum;
+    }
+    if (lightCount() == 0) return vec3(0.0);
+    vec3 l = normalize(lightPosition(0) - hit.p);
+    vec3 h = normalize(l + v);
+    float NoL = clamp(dot(hit.n, l), 0.0, 1.0);
+    float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
+    if (u_view == VIEW_NDOTL) return vec3(NoL);
+    if (u_view == VIEW_SHADOW) {
+        return vec3(shadowVisibility(hit, lightPosition(0)));
+    }
+    if (u_view == VIEW_D) {
+        float D = D_GGX(hit.n, h, ggxAlpha(m.roughness));
+        return vec3(isStub(D) ? 0.0 : D / (1.0 + D));
+    }
+    if (u_view == VIEW_G) {
+        float G = G_SchlickGGX(NoV, NoL, m.roughness);
+        return vec3(isStub(G) ? 0.0 : G);
+    }
+    if (u_view == VIEW_F) {
+        vec3 F = F_Schlick(baseReflectance(m), dot(v, h));
+        return isStub(F) ? vec3(0.0) : F;
+    }
+    return vec3(0.0);
+}
+
+bool viewIsRadiance() {
+    return u_view == VIEW_FINAL || u_view == VIEW_BOUNCE || u_view == VIEW_DIFFUSE || u_view == VIEW_SPECULAR;
+}

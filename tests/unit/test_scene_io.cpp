@@ -1,0 +1,170 @@
+// Scene files: every field of the spec, the defaults, and one asserted
+// message per kind of bad input.
+#include "core/error.h"
+#include "core/scene_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace rl;
+
+namespace {
+
+std::string errorOf(const std::string& text, const std::string& origin = "scenes/x.json") {
+    try {
+        parseScene(text, origin);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string tempFile(const std::string& name, const std::string& text) {
+    auto path = std::filesystem::temp_directory_path() / ("raylab_scene_test_" + name);
+    std::ofstream(path) << text;
+    return path.string();
+}
+
+}  // namespace
+
+TEST(SceneIo, SpecExampleReadsEveryField) {
+    const char* text = R"({
+      "camera":  { "position": [0,0,2.5], "target": [0,0,-2], "up": [0,1,0], "fov_y": 60 },
+      "render":  { "width": 640, "height": 480, "max_bounces": 2, "spp": 1,
+                   "ambient": 0.03, "background": [0,0,0],
+                   "exposure": 1.0, "tonemap": "reinhard", "gamma": 2.2 },
+      "lights":  [ { "position": [0,0,0], "color": [1,1,1], "intensity": 40 } ],
+      "spheres": [ { "center": [2.5,0,-2], "radius": 0.3,
+                     "material": { "albedo": [0.9,0.1,0.1], "roughness": 1.0,
+                                   "metallic": 0.0, "ao": 1.0 } } ] })";
+    LoadedScene loaded = parseScene(text, "t.json");
+    const Scene& s = loaded.scene;
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_EQ(s.camera.position.z, 2.5);
+    EXPECT_EQ(s.camera.target.z, -2.0);
+    EXPECT_EQ(s.camera.fovYDegrees, 60.0);
+    EXPECT_EQ(s.render.width, 640);
+    EXPECT_EQ(s.render.maxBounces, 2);
+    EXPECT_EQ(s.render.tonemap, ToneMap::Reinhard);
+    EXPECT_DOUBLE_EQ(s.render.gamma, 2.2);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].intensity, 40.0);
+    ASSERT_EQ(s.spheres.size(), 1u);
+    EXPECT_EQ(s.spheres[0].radius, 0.3);
+    EXPECT_EQ(s.spheres[0].material.albedo.x, 0.9);
+    EXPECT_EQ(s.spheres[0].material.roughness, 1.0);
+}
+
+TEST(SceneIo, DefaultsFollowTheSpec) {
+    LoadedScene loaded = parseScene(R"({"spheres": [{}], "lights": [{}]})", "t.json");
+    const Scene& s = loaded.scene;
+    EXPECT_EQ(s.camera.position, glm::dvec3(0, 0, 0));
+    EXPECT_EQ(s.camera.target, glm::dvec3(0, 0, -1));
+    EXPECT_EQ(s.camera.up, glm::dvec3(0, 1, 0));
+    EXPECT_EQ(s.camera.fovYDegrees, 60.0);
+    EXPECT_EQ(s.render.width, 640);
+    EXPECT_EQ(s.render.height, 480);
+    EXPECT_EQ(s.render.maxBounces, 2);
+    EXPECT_EQ(s.render.spp, 1);
+    EXPECT_DOUBLE_EQ(s.render.ambient, 0.03);
+    EXPECT_EQ(s.render.background, glm::dvec3(0.0));
+    EXPECT_EQ(s.render.exposure, 1.0);
+    EXPECT_EQ(s.render.tonemap, ToneMap::Reinhard);
+    EXPECT_DOUBLE_EQ(s.render.gamma, 2.2);
+    EXPECT_FALSE(s.render.srgb);
+    EXPECT_EQ(s.spheres[0].material.albedo, glm::dvec3(1.0));
+    EXPECT_EQ(s.spheres[0].material.roughness, 0.5);
+    EXPECT_EQ(s.spheres[0].material.metallic, 0.0);
+    EXPECT_EQ(s.spheres[0].material.ao, 1.0);
+    EXPECT_EQ(s.lights[0].color, glm::dvec3(1.0));
+    EXPECT_EQ(s.lights[0].intensity, 1.0);
+    EXPECT_TRUE(parseScene("{}", "t.json").scene.spheres.empty());
+}
+
+TEST(SceneIo, GammaSrgbAndToneMaps) {
+    auto s = parseScene(R"({"render": {"gamma": "srgb", "tonemap": "exponential"}})", "t").scene;
+    EXPECT_TRUE(s.render.srgb);
+    EXPECT_EQ(s.render.tonemap, ToneMap::Exponential);
+    EXPECT_EQ(parseScene(R"({"render": {"tonemap": "none"}})", "t").scene.render.tonemap, ToneMap::None);
+}
+
+TEST(SceneIo, SyntaxErrorNamesFileLineAndColumn) {
+    std::string message = errorOf("{\n  \"camera\": {\n    \"fov_y\": 60,,\n  }\n}");
+    EXPECT_EQ(message.rfind("scenes/x.json:3:", 0), 0u) << message;
+    EXPECT_NE(message.find("syntax error"), std::string::npos) << message;
+}
+
+TEST(SceneIo, BadValueNamesTheFieldPath) {
+    const char* text = R"({"spheres": [{}, {}, {}, {"radius": -1}]})";
+    EXPECT_EQ(errorOf(text), "scenes/x.json: spheres[3].radius must be > 0");
+    EXPECT_EQ(errorOf(R"({"spheres": [{"material": {"roughness": 2}}]})"),
+              "scenes/x.json: spheres[0].material.roughness must be in [0, 1]");
+    EXPECT_EQ(errorOf(R"({"render": {"spp": 3}})"),
+              "scenes/x.json: render.spp must be a square number from 1 to 1024 (1, 4, 9, 16, ...)");
+    EXPECT_EQ(errorOf(R"({"render": {"tonemap": "aces"}})"),
+              "scenes/x.json: render.tonemap must be one of reinhard, exponential, none, not 'aces'");
+    EXPECT_EQ(errorOf(R"({"render": {"gamma": "linear"}})"), "scenes/x.json: render.gamma must be a number or \"srgb\"");
+    EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 0]}]})"),
+              "scenes/x.json: lights[0].position must be an array of 3 numbers");
+    EXPECT_EQ(errorOf(R"({"camera": {"fov_y": "wide"}})"), "scenes/x.json: camera.fov_y must be a number, not a string");
+    EXPECT_EQ(errorOf(R"({"camera": {"target": [0,0,0]}})"), "scenes/x.json: camera.target must differ from camera.position");
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0,0,-1]}})"),
+              "scenes/x.json: camera.up must not be zero or parallel to the viewing direction");
+    EXPECT_EQ(errorOf(R"({"spheres": {}})"), "scenes/x.json: spheres must be an array");
+    EXPECT_EQ(errorOf("[1, 2]"), "scenes/x.json: the scene must be an object");
+    EXPECT_EQ(errorOf(R"({"render": {"width": 0}})"), "scenes/x.json: render.width must be between 1 and 16384");
+}
+
+TEST(SceneIo, TooManySpheresOrLightsIsAnError) {
+    std::string spheres = "{\"spheres\": [";
+    for (int i = 0; i < kMaxSpheres + 1; ++i) spheres += (i ? ",{}" : "{}");
+    spheres += "]}";
+    EXPECT_EQ(errorOf(spheres), "scenes/x.json: spheres has 65 entries, at most 64 are supported");
+}
+
+TEST(SceneIo, UnknownKeyIsAWarningThatNamesIt) {
+    LoadedScene loaded = parseScene(R"({"spheres": [{"colour": [1,0,0]}], "extra": 1})", "scenes/x.json");
+    ASSERT_EQ(loaded.warnings.size(), 2u);
+    EXPECT_EQ(loaded.warnings[0], "scenes/x.json: unknown key 'spheres[0].colour' (ignored)");
+    EXPECT_EQ(loaded.warnings[1], "scenes/x.json: unknown key 'extra' (ignored)");
+}
+
+TEST(SceneIo, MissingFileDirectoryAndEmptyFile) {
+    auto messageOf = [](const std::string& path) {
+        try {
+            loadSceneFile(path);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_EQ(messageOf("/nonexistent/x.json"), "/nonexistent/x.json: scene file not found");
+    auto dir = std::filesystem::temp_directory_path().string();
+    EXPECT_EQ(messageOf(dir), dir + ": is a directory, expected a scene file (.json)");
+    std::string empty = tempFile("empty.json", "  \n");
+    EXPECT_EQ(messageOf(empty), empty + ": the scene file is empty (expected a JSON object)");
+}
+
+TEST(SceneIo, SaveAndLoadRoundTrip) {
+    Scene s = defaultScene();
+    s.render.srgb = true;
+    s.model.distribution = DistributionModel::Beckmann;
+    auto path = (std::filesystem::temp_directory_path() / "raylab_roundtrip.json").string();
+    saveSceneFile(s, path);
+    LoadedScene back = loadSceneFile(path);
+    EXPECT_TRUE(back.warnings.empty());
+    EXPECT_EQ(back.scene.spheres.size(), s.spheres.size());
+    EXPECT_EQ(back.scene.spheres[1].material.albedo, s.spheres[1].material.albedo);
+    EXPECT_TRUE(back.scene.render.srgb);
+    EXPECT_EQ(back.scene.model.distribution, DistributionModel::Beckmann);
+    EXPECT_EQ(back.scene.camera.position, s.camera.position);
+}
+
+TEST(SceneIo, DefaultSceneIsValid) {
+    LoadedScene loaded = parseScene(defaultSceneJson(), "<default>");
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_GE(loaded.scene.spheres.size(), 5u);
+    EXPECT_GE(loaded.scene.lights.size(), 1u);
+}
