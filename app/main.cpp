@@ -11,6 +11,13 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     rl::addRenderCommand(app);
     rl::addCheckCommand(app);
+#ifdef RAYLAB_WITH_GLFW
+    rl::addViewCommand(app);
+#else
+    app.add_subcommand("view", "The live window (not in this build)")->allow_extras()->callback([] {
+        throw rl::Error("view: this build has no window support (RAYLAB_WITH_GLFW=OFF); use `raylab render`");
+    });
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

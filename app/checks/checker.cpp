@@ -311,7 +311,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         // The core's budget (issue 2): <= 0.5% of pixels off by more than
         // 1/255, mean difference < 0.2/255, no NaN or Inf.
         s.passed = diff.offFraction <= 0.005 && diff.meanLsb < 0.2 && diff.nonFinite == 0;
-        if (!s.passed) {
+        if (!s.passed || options.writeAllImages) {
             std::error_code ec;
             fs::create_directories(outDir, ec);
             s.expectedPng = imagePath(outDir, c.name, "expected");
@@ -320,6 +320,8 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
             writePng(s.expectedPng, c.reference.display);
             writePng(s.gotPng, got.display);
             writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
+        }
+        if (!s.passed) {
             char line[256];
             std::snprintf(line, sizeof line, "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%), mean %.2f/255%s\n",
                           c.name.c_str(), 100 * diff.offFraction, diff.meanLsb,

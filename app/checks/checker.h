@@ -36,7 +36,7 @@ struct ImageSummary {
     bool passed = false;
     double offFraction = 0, meanLsb = 0;
     long nonFinite = 0;
-    std::string expectedPng, gotPng, diffPng;  // written on failure
+    std::string expectedPng, gotPng, diffPng;  // written on failure (always with CheckOptions::writeAllImages)
 };
 
 struct ExerciseReport {
@@ -60,6 +60,7 @@ ExerciseReport reportFromJson(const nlohmann::json& j);
 struct CheckOptions {
     std::filesystem::path implDir;          // the student's folder (exercises/ by default)
     std::filesystem::path outputDir = "check-output";  // expected/got/diff PNGs of failing images
+    bool writeAllImages = false;            // also write them for passing images (grading reports)
     double timeoutSeconds = 60;             // per exercise
     bool isolate = true;                    // run each exercise in a child process
     std::string backend = "auto";

@@ -9,6 +9,7 @@
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
+#include "render/shader_config.h"
 #include "shader/shader_library.h"
 
 #include <cmath>
@@ -38,6 +39,7 @@ struct RenderOptions {
     std::string impl;
     std::string view = "final";
     bool cpu = false;
+    bool generic = false;
 };
 
 void runRender(const RenderOptions& o) {
@@ -69,7 +71,7 @@ void runRender(const RenderOptions& o) {
         if (!std::filesystem::is_directory(impl.dir))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
-        ShaderProgram program = buildRayTracer(impl);
+        ShaderProgram program = buildRayTracer(impl, shaderDefinesFor(scene, !o.generic));
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;
         frame.viewBounce = bounce;
@@ -96,6 +98,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");
+    cmd->add_flag("--generic", options->generic, "Use the generic shader, not one specialised to the scene");
     cmd->callback([options] { runRender(*options); });
 }
 

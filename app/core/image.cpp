@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <locale>
+#include <sstream>
 
 // stb is third-party code compiled into this one file. Its functions are made
 // static (private to this file) so they cannot clash with Debian's libstb or
@@ -184,7 +186,7 @@ RadianceImage readPfm(const std::string& path) {
         while (pos < file.size() && isSpace(file[pos])) ++pos;
         std::size_t start = pos;
         while (pos < file.size() && !isSpace(file[pos]) && pos - start < 32) ++pos;  // 32: longer than any valid token
-        return std::string(file.begin() + long(start), file.begin() + long(pos));
+        return std::string(file.begin() + std::ptrdiff_t(start), file.begin() + std::ptrdiff_t(pos));
     };
     std::string magic = token();
     int channels = magic == "PF" ? 3 : magic == "Pf" ? 1 : 0;
@@ -200,12 +202,14 @@ RadianceImage readPfm(const std::string& path) {
     int width = positiveInt(token(), "width");
     int height = positiveInt(token(), "height");
     std::string scaleText = token();
-    char* end = nullptr;
-    double scale = std::strtod(scaleText.c_str(), &end);
-    if (scaleText.empty() || *end != '\0' || !std::isfinite(scale) || scale == 0.0)
+    std::istringstream scaleStream(scaleText);
+    scaleStream.imbue(std::locale::classic());  // "-1.0" whatever the user's decimal comma
+    double scale = 0.0;
+    scaleStream >> scale;
+    if (scaleStream.fail() || scaleStream.peek() != EOF || !std::isfinite(scale) || scale == 0.0)
         throw fail("bad scale \"" + scaleText + "\"");
     bool littleEndian = scale < 0;  // |scale| is a unit hint that raylab does not use
-    if (pos >= file.size() || !isSpace(file[pos])) throw fail("header does not end in a newline");
+    if (pos >= file.size() || !isSpace(file[pos])) throw fail("no whitespace between header and pixels");
     ++pos;
 
     std::uint64_t values = std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(channels);

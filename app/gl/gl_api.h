@@ -14,6 +14,7 @@
     X(PFNGLGETERRORPROC, GetError)                                                    \
     X(PFNGLGETINTEGERVPROC, GetIntegerv)                                              \
     X(PFNGLVIEWPORTPROC, Viewport)                                                    \
+    X(PFNGLSCISSORPROC, Scissor)                                                      \
     X(PFNGLCLEARCOLORPROC, ClearColor)                                                \
     X(PFNGLCLEARPROC, Clear)                                                          \
     X(PFNGLFINISHPROC, Finish)                                                        \

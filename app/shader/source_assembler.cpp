@@ -124,6 +124,9 @@ void SourceAssembler::appendFile(const fs::path& file, AssembledSource& out,
             } catch (const Error& e) {
                 throw Error(where + "#include \"" + m[2].str() + "\": " + e.what());
             }
+            std::error_code missing;
+            if (!fs::is_regular_file(target, missing))
+                throw Error(where + "#include \"" + m[2].str() + "\": " + displayPath(target) + ": file not found");
             // Keep a blank line in place of the directive so line k stays line k.
             out.text += "\n";
             out.lines.push_back({shown, k});

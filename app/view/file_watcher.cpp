@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+
 namespace rl {
 
 FileWatcher::FileWatcher(std::function<void()> onChange) : onChange_(std::move(onChange)) {
@@ -18,10 +20,16 @@ FileWatcher::~FileWatcher() {
 }
 
 void FileWatcher::watch(std::vector<std::filesystem::path> files) {
+    std::vector<Stamp> fresh;
+    fresh.reserve(files.size());
+    for (const auto& f : files) fresh.push_back(stampOf(f));  // outside the lock: stat() can be slow
+    std::lock_guard<std::mutex> lock(mutex_);
     std::vector<Stamp> stamps;
     stamps.reserve(files.size());
-    for (const auto& f : files) stamps.push_back(stampOf(f));
-    std::lock_guard<std::mutex> lock(mutex_);
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        auto known = std::find(files_.begin(), files_.end(), files[i]);
+        stamps.push_back(known != files_.end() ? stamps_[std::size_t(known - files_.begin())] : fresh[i]);
+    }
     files_ = std::move(files);
     stamps_ = std::move(stamps);
 }

@@ -31,7 +31,9 @@ public:
     FileWatcher(const FileWatcher&) = delete;
     FileWatcher& operator=(const FileWatcher&) = delete;
 
-    // Replaces the watched files; their current state is the new baseline.
+    // Replaces the watched files. Files watched before keep the state last
+    // seen (so an edit made while the caller was busy rebuilding is still
+    // reported); new ones start from their current state.
     void watch(std::vector<std::filesystem::path> files);
     // True once after any watched file changed, appeared or disappeared.
     bool takeChange() { return changed_.exchange(false); }

@@ -7,7 +7,7 @@ namespace rl {
 
 LiveScene::LiveScene(const std::string& path) : path_(path) {
     LoadedScene loaded = path.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(path);
-    scene_ = loaded.scene;
+    scene_ = fromFile_ = loaded.scene;
     warnings_ = loaded.warnings;
 }
 
@@ -19,7 +19,7 @@ bool LiveScene::reload() {
 bool LiveScene::open(const std::string& path) {
     try {
         LoadedScene loaded = loadSceneFile(path);
-        scene_ = loaded.scene;
+        scene_ = fromFile_ = loaded.scene;
         warnings_ = loaded.warnings;
         path_ = path;
         error_.clear();

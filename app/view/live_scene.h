@@ -25,6 +25,8 @@ public:
 
     Scene& scene() { return scene_; }  // the panel edits it in place
     const Scene& scene() const { return scene_; }
+    // The scene as its file has it, without the panel's edits.
+    const Scene& fromFile() const { return fromFile_; }
     const std::string& path() const { return path_; }  // "" for the embedded default
     const std::string& error() const { return error_; }
     // Warnings of the last successful load (unknown keys), one line each.
@@ -33,6 +35,7 @@ public:
 private:
     std::string path_;
     Scene scene_;
+    Scene fromFile_;
     std::string error_;
     std::vector<std::string> warnings_;
 };

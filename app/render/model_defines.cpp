@@ -1,0 +1,7 @@
+#include "render/shader_config.h"
+
+namespace rl {
+
+ShaderDefines modelDefines(const ShadingModel&) { return {}; }  // variants: not yet in GLSL
+
+}  // namespace rl

@@ -1,0 +1,24 @@
+#include "view/adaptive_resolution.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl {
+
+void AdaptiveResolution::record(double ms, double pixels) {
+    if (pixels <= 0 || !(ms > 0)) return;
+    const double sample = ms / pixels;
+    // Weight 0.3: follows a change of scene or view within a few frames while
+    // smoothing the jitter of single frames.
+    msPerPixel_ = msPerPixel_ == 0 ? sample : 0.7 * msPerPixel_ + 0.3 * sample;
+}
+
+double AdaptiveResolution::scale(bool moving, int fullWidth, int fullHeight) const {
+    if (!enabled || !moving || msPerPixel_ == 0) return 1.0;
+    const double fullMs = msPerPixel_ * double(fullWidth) * double(fullHeight);
+    if (fullMs <= kMovingBudgetMs) return 1.0;
+    const double s = std::sqrt(kMovingBudgetMs / fullMs);  // both sides shrink: cost goes with s^2
+    return std::clamp(std::floor(s / kStep) * kStep, kMinScale, 1.0);
+}
+
+}  // namespace rl

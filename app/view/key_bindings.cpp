@@ -1,0 +1,89 @@
+#include "view/key_bindings.h"
+
+#include "core/error.h"
+
+#include <cctype>
+
+#define GLFW_INCLUDE_NONE  // key codes only
+#include <GLFW/glfw3.h>
+
+namespace rl {
+
+const std::vector<KeyBinding>& keyBindings() {
+    static const std::vector<KeyBinding> table = {
+        {GLFW_KEY_H, false, Action::ToggleHelp, 0, "H", "show / hide this help"},
+        {GLFW_KEY_TAB, false, Action::TogglePanel, 0, "Tab", "show / hide the panel (a clean picture for the projector)"},
+        {GLFW_KEY_R, false, Action::ResetCamera, 0, "R", "reset the camera to the scene file's"},
+        {GLFW_KEY_0, false, Action::SetView, 0, "0", "view: final picture"},
+        {GLFW_KEY_1, false, Action::SetView, 1, "1", "view: D, GGX normal distribution (key light)"},
+        {GLFW_KEY_2, false, Action::SetView, 2, "2", "view: G, Smith geometry term (key light)"},
+        {GLFW_KEY_3, false, Action::SetView, 3, "3", "view: F, Schlick Fresnel (key light)"},
+        {GLFW_KEY_4, false, Action::SetView, 4, "4", "view: diffuse radiance of all lights"},
+        {GLFW_KEY_5, false, Action::SetView, 5, "5", "view: specular radiance of all lights"},
+        {GLFW_KEY_6, false, Action::SetView, 6, "6", "view: n.l of the key light"},
+        {GLFW_KEY_7, false, Action::SetView, 7, "7", "view: shadow of the key light"},
+        {GLFW_KEY_8, false, Action::SetView, 8, "8", "view: normals"},
+        {GLFW_KEY_9, false, Action::SetView, 9, "9", "view: bounce k alone"},
+        {GLFW_KEY_LEFT_BRACKET, false, Action::BounceDown, 0, "[", "bounce k - 1 (view 9)"},
+        {GLFW_KEY_RIGHT_BRACKET, false, Action::BounceUp, 0, "]", "bounce k + 1 (view 9)"},
+        {GLFW_KEY_DOWN, false, Action::ExposureDown, 0, "Down", "exposure half a stop down"},
+        {GLFW_KEY_UP, false, Action::ExposureUp, 0, "Up", "exposure half a stop up"},
+        {GLFW_KEY_G, false, Action::CycleGamma, 0, "G", "gamma: off (1.0) -> 2.2 -> sRGB"},
+        {GLFW_KEY_B, false, Action::ToggleReflections, 0, "B", "reflections off / on (max bounces 0 / the scene's)"},
+        {GLFW_KEY_PAGE_UP, false, Action::PreviousPreset, 0, "PageUp", "previous preset scene"},
+        {GLFW_KEY_PAGE_DOWN, false, Action::NextPreset, 0, "PageDown", "next preset scene"},
+        {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (with --compare)"},
+        {GLFW_KEY_LEFT, false, Action::DividerLeft, 0, "Left", "move the wipe divider left"},
+        {GLFW_KEY_RIGHT, false, Action::DividerRight, 0, "Right", "move the wipe divider right"},
+        {GLFW_KEY_F11, false, Action::ToggleFullscreen, 0, "F11", "fullscreen on / off"},
+        {GLFW_KEY_F, false, Action::ToggleFullscreen, 0, "F", "fullscreen on / off"},
+        {GLFW_KEY_P, false, Action::Screenshot, 0, "P", "screenshot of the picture (raylab-DATE-TIME.png)"},
+        {GLFW_KEY_F12, false, Action::ScreenshotWithUi, 0, "F12", "screenshot of the whole window, panel included"},
+        {GLFW_KEY_MINUS, false, Action::UiScaleDown, 0, "-", "smaller panel and text"},
+        {GLFW_KEY_EQUAL, false, Action::UiScaleUp, 0, "+", "larger panel and text (projectors)"},
+        {GLFW_KEY_S, true, Action::SaveScene, 0, "Ctrl+S", "save the edited scene (as in the panel)"},
+        {GLFW_KEY_ESCAPE, false, Action::Escape, 0, "Escape", "leave fullscreen / close the help"},
+        {GLFW_KEY_Q, false, Action::Quit, 0, "Q", "quit"},
+    };
+    return table;
+}
+
+const std::vector<MouseBinding>& mouseBindings() {
+    static const std::vector<MouseBinding> table = {
+        {"left drag", "rotate about the target (arcball)"},
+        {"right / middle drag", "pan"},
+        {"wheel", "zoom towards / away from the target"},
+        {"left drag on the divider", "move the wipe (with --compare)"},
+    };
+    return table;
+}
+
+namespace {
+// Keypad keys do what the main keys do.
+int canonicalKey(int key) {
+    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) return GLFW_KEY_0 + (key - GLFW_KEY_KP_0);
+    if (key == GLFW_KEY_KP_ADD) return GLFW_KEY_EQUAL;
+    if (key == GLFW_KEY_KP_SUBTRACT) return GLFW_KEY_MINUS;
+    return key;
+}
+}  // namespace
+
+std::optional<KeyBinding> bindingFor(int glfwKey, bool ctrl) {
+    const int key = canonicalKey(glfwKey);
+    for (const KeyBinding& b : keyBindings())
+        if (b.key == key && b.ctrl == ctrl) return b;
+    return std::nullopt;
+}
+
+KeyBinding bindingByName(const std::string& name) {
+    std::string valid;
+    for (const KeyBinding& b : keyBindings()) {
+        std::string keys = b.keys;
+        if (keys == name || (keys.size() == 1 && name.size() == 1 && std::toupper(keys[0]) == std::toupper(name[0])))
+            return b;
+        valid += (valid.empty() ? "" : ", ") + keys;
+    }
+    throw Error("unknown key '" + name + "' (expected one of " + valid + ")");
+}
+
+}  // namespace rl

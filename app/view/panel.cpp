@@ -1,0 +1,244 @@
+#include "view/panel.h"
+
+#include "view/key_bindings.h"
+#include "view/presets.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace rl {
+namespace {
+
+// Slider ranges. Exposure spans 1/64 .. 64 (six stops either way) on a
+// logarithmic slider, where equal distances are equal ratios, as in a camera.
+constexpr float kMinExposure = 1.0f / 64.0f;
+constexpr float kMaxExposure = 64.0f;
+constexpr float kMinGamma = 1.0f;  // 1 = no encoding ("gamma off"); below 1 would darken, not a display gamma
+constexpr float kMaxGamma = 3.0f;  // beyond any real display's 2.2-2.6
+constexpr float kMaxIntensity = 1000.0f;  // W-like units: the lecture scene's key light is 40
+constexpr int kSppChoices[] = {1, 4, 9, 16};  // square numbers, as the spec requires
+
+const ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;  // typed values obey the range too
+
+bool editDouble(const char* label, double& value, float min, float max, const char* format = "%.3f",
+                ImGuiSliderFlags flags = 0) {
+    float v = float(value);
+    if (!ImGui::SliderFloat(label, &v, min, max, format, flags | kClamp)) return false;
+    value = v;
+    return true;
+}
+
+bool editColour(const char* label, glm::dvec3& colour) {
+    float c[3] = {float(colour.x), float(colour.y), float(colour.z)};
+    // Float: the values are linear reflectances/colours in [0, 1], shown as such.
+    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float)) return false;
+    colour = {c[0], c[1], c[2]};
+    return true;
+}
+
+bool editPosition(const char* label, glm::dvec3& p) {
+    float v[3] = {float(p.x), float(p.y), float(p.z)};
+    // 0.01 scene units per pixel dragged: a light crosses the lecture scene in a few hundred pixels.
+    if (!ImGui::DragFloat3(label, v, 0.01f)) return false;
+    p = {v[0], v[1], v[2]};
+    return true;
+}
+
+void frameSection(ViewState& state, const PanelInfo& info) {
+    if (!ImGui::CollapsingHeader("Frame", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (info.frameMs > 0)
+        ImGui::Text("%.1f ms per frame (%.1f fps)", info.frameMs, 1000.0 / info.frameMs);
+    else
+        ImGui::TextDisabled("no frame measured yet");
+    if (info.gpuMs > 0) ImGui::Text("GPU %.1f ms (timer query)", info.gpuMs);
+    ImGui::Text("%d x %d", info.renderWidth, info.renderHeight);
+    if (info.renderWidth != info.windowWidth) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(moving; window %d x %d)", info.windowWidth, info.windowHeight);
+    }
+    ImGui::Checkbox("lower resolution while moving", &state.adaptiveResolution);
+    ImGui::Checkbox("render every frame", &state.continuous);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: render only when something changes (quiet laptop fans).");
+    ImGui::TextDisabled("%s", info.device.c_str());
+}
+
+void viewSection(ViewState& state, const Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Teaching view", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    static std::vector<std::string> names;  // "1  D, GGX normal distribution (key light)"
+    if (names.empty())
+        for (const KeyBinding& b : keyBindings())
+            if (b.action == Action::SetView) {
+                std::string what = b.what;
+                if (what.rfind("view: ", 0) == 0) what = what.substr(6);
+                names.push_back(std::string(b.keys) + "  " + what);
+            }
+    int current = int(state.view);
+    if (ImGui::BeginCombo("view", names[std::size_t(current)].c_str())) {
+        for (int i = 0; i < int(names.size()); ++i)
+            if (ImGui::Selectable(names[std::size_t(i)].c_str(), i == current)) {
+                state.view = View(i);
+                out.redraw = true;
+            }
+        ImGui::EndCombo();
+    }
+    if (state.view == View::Bounce) {
+        if (ImGui::SliderInt("bounce k", &state.viewBounce, 0, std::max(scene.render.maxBounces, 0), "%d", kClamp))
+            out.redraw = true;
+    }
+}
+
+void displaySection(Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    RenderSettings& r = scene.render;
+    out.sceneEdited |= editDouble("exposure", r.exposure, kMinExposure, kMaxExposure, "%.3f",
+                                  ImGuiSliderFlags_Logarithmic);
+    const char* toneMaps[] = {"reinhard", "exponential", "none"};  // the order of rl::ToneMap
+    int op = int(r.tonemap);
+    if (ImGui::Combo("tone map", &op, toneMaps, 3)) {
+        r.tonemap = ToneMap(op);
+        out.sceneEdited = true;
+    }
+    out.sceneEdited |= ImGui::Checkbox("sRGB", &r.srgb);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(r.srgb);
+    out.sceneEdited |= editDouble("gamma", r.gamma, kMinGamma, kMaxGamma, "%.2f");
+    ImGui::EndDisabled();
+}
+
+void renderSection(Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Render")) return;
+    RenderSettings& r = scene.render;
+    out.sceneEdited |= ImGui::SliderInt("max bounces", &r.maxBounces, 0, kMaxBounces, "%d", kClamp);
+    int sppIndex = 0;
+    for (int i = 0; i < 4; ++i)
+        if (kSppChoices[i] == r.spp) sppIndex = i;
+    const char* sppNames[] = {"1", "4", "9", "16"};
+    if (ImGui::Combo("samples per pixel", &sppIndex, sppNames, 4)) {
+        r.spp = kSppChoices[sppIndex];
+        out.sceneEdited = true;
+    }
+    out.sceneEdited |= editDouble("ambient", r.ambient, 0.0f, 1.0f);
+    out.sceneEdited |= editColour("background", r.background);
+}
+
+void materialsSection(Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Materials")) return;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        Material& m = scene.spheres[i].material;
+        ImGui::PushID(int(i));
+        ImVec4 swatch(float(m.albedo.x), float(m.albedo.y), float(m.albedo.z), 1.0f);
+        ImGui::ColorButton("##swatch", swatch, ImGuiColorEditFlags_NoTooltip);
+        ImGui::SameLine();
+        if (ImGui::TreeNode("sphere", "sphere %zu  (roughness %.2f, metallic %.2f)", i + 1, m.roughness, m.metallic)) {
+            out.sceneEdited |= editColour("albedo", m.albedo);
+            out.sceneEdited |= editDouble("roughness", m.roughness, 0.0f, 1.0f);
+            out.sceneEdited |= editDouble("metallic", m.metallic, 0.0f, 1.0f);
+            out.sceneEdited |= editDouble("ao", m.ao, 0.0f, 1.0f);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+}
+
+void lightsSection(Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Lights")) return;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        Light& l = scene.lights[i];
+        ImGui::PushID(int(i));
+        if (ImGui::TreeNode("light", "light %zu%s", i + 1, i == 0 ? "  (key light of the term views)" : "")) {
+            out.sceneEdited |= editPosition("position", l.position);
+            out.sceneEdited |= editColour("colour", l.color);
+            out.sceneEdited |= editDouble("intensity", l.intensity, 0.0f, kMaxIntensity, "%.1f",
+                                          ImGuiSliderFlags_Logarithmic);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+}
+
+void presetsSection(Scene& scene, const Scene& fromFile, const PanelInfo& info, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Presets (course figures)")) return;
+    const char* group = "";
+    for (const SettingPreset& p : settingPresets()) {
+        if (std::strcmp(group, p.group) != 0) {
+            group = p.group;
+            ImGui::Text("%-12s", group);
+        }
+        ImGui::SameLine();
+        ImGui::PushID(p.group);
+        if (ImGui::SmallButton(p.label)) {
+            p.apply(scene, fromFile);
+            out.sceneEdited = true;
+        }
+        ImGui::PopID();
+    }
+    if (!info.presets) return;
+    ImGui::TextDisabled("scenes (PageUp / PageDown):");
+    for (int i = 0; i < int(info.presets->size()); ++i) {
+        const auto& file = (*info.presets)[std::size_t(i)];
+        std::string label = presetTitle(file) + "##" + file.string();
+        if (ImGui::Selectable(label.c_str(), i == info.currentPreset)) out.openPreset = i;
+    }
+}
+
+void compareSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
+    if (info.right.empty() || !ImGui::CollapsingHeader("Compare", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    out.redraw |= ImGui::Checkbox("wipe (C)", &state.wipe);
+    ImGui::TextDisabled("left: %s | right: %s", info.left.c_str(), info.right.c_str());
+    out.redraw |= editDouble("divider", state.divider, 0.0f, 1.0f, "%.2f");
+}
+
+void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Scene file")) return;
+    ImGui::TextWrapped("%s", info.scenePath.empty() ? "embedded default scene" : info.scenePath.c_str());
+    char path[512];
+    std::snprintf(path, sizeof path, "%s", state.savePath.c_str());
+    if (ImGui::InputText("save as", path, sizeof path)) state.savePath = path;
+    ImGui::Checkbox("with the current view as its camera", &state.saveCamera);
+    if (ImGui::Button("Save (Ctrl+S)")) out.save = true;
+}
+
+void interfaceSection(const PanelInfo& info, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Interface")) return;
+    float scale = info.uiScale;
+    if (ImGui::SliderFloat("UI scale (- / +)", &scale, 0.5f, 4.0f, "%.2f")) out.uiScale = scale;
+    if (ImGui::Button("Screenshot (P)")) out.screenshot = true;
+    ImGui::SameLine();
+    if (ImGui::Button("with panel (F12)")) out.screenshotWithUi = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset camera (R)")) out.resetCamera = true;
+}
+
+}  // namespace
+
+ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info) {
+    ViewRequests out;
+    if (!state.showPanel) return out;
+    // 10 px from the corner, a third of the window high at first: the
+    // picture stays visible; the user can move and resize the panel.
+    const float s = info.uiScale;
+    ImGui::SetNextWindowPos(ImVec2(10 * s, 10 * s), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(340 * s, 0), ImGuiCond_Once);
+    if (ImGui::Begin("raylab  (H: keys, Tab: hide)", &state.showPanel)) {
+        // Widgets take what is left after a label column of ~9 characters.
+        ImGui::PushItemWidth(-9.0f * ImGui::GetFontSize());
+        frameSection(state, info);
+        viewSection(state, scene, out);
+        compareSection(state, info, out);
+        displaySection(scene, out);
+        renderSection(scene, out);
+        materialsSection(scene, out);
+        lightsSection(scene, out);
+        presetsSection(scene, fromFile, info, out);
+        sceneSection(state, info, out);
+        interfaceSection(info, out);
+        if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
+        ImGui::PopItemWidth();
+    }
+    ImGui::End();
+    return out;
+}
+
+}  // namespace rl

@@ -1,0 +1,32 @@
+// The ImGui panel: every material and light of the scene, the display and
+// render settings, the teaching view, presets, the wipe, frame times, UI
+// scale and saving. Edits change the scene in place and are reported in
+// ViewRequests; the window re-uploads uniforms, nothing is recompiled.
+#pragma once
+
+#include "core/scene.h"
+#include "view/view_state.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rl {
+
+// Facts the panel shows but does not change.
+struct PanelInfo {
+    std::string device;                 // GL vendor | renderer | version
+    std::string scenePath;              // "" for the embedded default scene
+    std::string left, right;            // implementation labels; right empty without --compare
+    double gpuMs = 0, frameMs = 0;      // recent medians; 0 = not measured yet
+    int renderWidth = 0, renderHeight = 0, windowWidth = 0, windowHeight = 0;
+    const std::vector<std::filesystem::path>* presets = nullptr;
+    int currentPreset = -1;             // index into presets, -1 when the scene is none of them
+    float uiScale = 1;
+    std::string status;                 // the last save or screenshot, one line
+};
+
+// Draws the panel (when state.showPanel) and returns what the user asked for.
+ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info);
+
+}  // namespace rl

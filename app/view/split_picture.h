@@ -1,0 +1,35 @@
+// The ray-traced picture of the window: one implementation, or two side by
+// side with a wipe (--compare). Each side renders into its own GlRenderer
+// target, only the pixels on its side of the divider (scissor), so a wipe
+// costs one picture, not two; present() blits both halves to the window,
+// upscaled when the picture was rendered at a lower resolution.
+#pragma once
+
+#include "render/gl_renderer.h"
+
+namespace rl {
+
+class SplitPicture {
+public:
+    // Spheres and lights of both sides.
+    void setScene(const Scene& scene);
+
+    // `frame.width` x `frame.height` is the render size. `left` draws the
+    // columns [0, splitX), `right` the columns [splitX, width); a null
+    // program (none has built yet) leaves its side black.
+    void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX);
+
+    // Copies the last render to the default framebuffer's back buffer,
+    // stretched to windowWidth x windowHeight (bilinear when upscaling).
+    void present(int windowWidth, int windowHeight) const;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    GlRenderer sides_[2];
+    bool drawn_[2] = {false, false};
+    int width_ = 0, height_ = 0, split_ = 0;
+};
+
+}  // namespace rl

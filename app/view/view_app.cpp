@@ -1,0 +1,368 @@
+#include "view/view_app.h"
+
+#include "core/error.h"
+#include "core/image.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "view/implementation_folder.h"
+#include "view/input_script.h"
+#include "view/overlays.h"
+#include "view/panel.h"
+#include "view/presets.h"
+#include "view/screenshot.h"
+
+#define GLFW_INCLUDE_NONE  // gl_api.h declares the GL functions
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace rl {
+namespace {
+
+// After the camera's last change, keep the low resolution this long before
+// refining: mouse-wheel notches and drag events arrive every 10-50 ms, and
+// refining between two of them would make every other frame a slow one.
+constexpr auto kSettleTime = std::chrono::milliseconds(200);
+// Idle: wait for events at most this long (the file watchers wake the loop
+// at once; the time-out only refreshes the panel's clock-driven parts).
+constexpr double kIdleWaitSeconds = 0.5;
+// Frames drawn after any wake-up before waiting again: ImGui needs one or
+// two frames to settle hover and layout after an input event.
+constexpr int kFramesAfterWake = 3;
+// How long a toast ("saved ...") stays on screen.
+constexpr auto kToastTime = std::chrono::seconds(3);
+
+bool sameCamera(const Camera& a, const Camera& b) {
+    return a.position == b.position && a.target == b.target && a.up == b.up && a.fovYDegrees == b.fovYDegrees;
+}
+
+std::string sceneName(const std::string& path) { return path.empty() ? "default scene" : fs::path(path).filename().string(); }
+
+}  // namespace
+
+ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options.scene) {
+    for (const auto& w : scene_.warnings()) std::cerr << "raylab: warning: " << w << "\n";
+    if (!options_.script.empty()) script_.emplace(parseScript(options_.script), options_.script);
+    int bounce = 0;
+    state_.view = parseView(options_.view, bounce);
+    if (state_.view == View::Bounce) state_.viewBounce = bounce;
+
+    std::vector<Implementation> impls;
+    impls.push_back(implementationFromFolder(options_.impl.empty() ? solutionsDir() : fs::path(options_.impl), "--impl"));
+    if (!options_.compare.empty()) impls.push_back(implementationFromFolder(options_.compare, "--compare"));
+
+    WindowSettings settings;
+    settings.width = options_.width > 0 ? options_.width : scene_.scene().render.width;
+    settings.height = options_.height > 0 ? options_.height : scene_.scene().render.height;
+    settings.title = "raylab view - " + sceneName(scene_.path()) + " - " + implementationLabel(impls[0]) +
+                     (impls.size() > 1 ? " | " + implementationLabel(impls[1]) : "");
+    settings.vsync = options_.frames == 0;  // timing runs measure the renderer, not the display
+    window_ = std::make_unique<GlfwWindowContext>(settings);
+    installCallbacks();  // before ImGui, which chains to them
+    ui_ = std::make_unique<ImGuiLayer>(window_->window());
+    float contentScale = 1.0f;
+#ifndef __APPLE__
+    // X11 and Windows report HiDPI as a content scale and give ImGui pixels;
+    // macOS scales ImGui's coordinates itself.
+    glfwGetWindowContentScale(window_->window(), &contentScale, nullptr);
+#endif
+    ui_->setScale(options_.uiScale > 0 ? options_.uiScale : contentScale);
+
+    picture_ = std::make_unique<SplitPicture>();
+    timer_ = std::make_unique<GpuTimer>();
+    for (const Implementation& impl : impls) {
+        Side side;
+        side.program = std::make_unique<LiveProgram>(impl, implementationLabel(impl));
+        side.watcher = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
+        sides_.push_back(std::move(side));
+        rebuild(sides_.back(), true);
+    }
+    if (!scene_.path().empty()) {
+        sceneWatcher_ = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
+        sceneWatcher_->watch({scene_.path()});
+    }
+    picture_->setScene(scene_.scene());
+    window_->framebufferSize(fbWidth_, fbHeight_);
+    trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
+
+    presets_ = presetScenes();
+    state_.wipe = sides_.size() == 2;
+    state_.savePath = scene_.path().empty() ? "scene.json" : scene_.path();
+    state_.showPanel = !options_.hidePanel;
+    framesLeft_ = options_.frames;
+    if (options_.frames > 0) state_.continuous = true;  // every frame renders: the median is the renderer's
+    if (options_.fullscreen) window_->toggleFullscreen();
+}
+
+ViewApp::~ViewApp() = default;
+
+int ViewApp::run() {
+    while (!quit_ && !glfwWindowShouldClose(window_->window())) frame();
+    if (options_.stats || options_.frames > 0) printStats();
+    const bool scripted = options_.frames > 0 || script_;
+    if (scripted && !errors().empty()) {
+        std::cerr << "raylab: error: the run ended with an error on screen (see above)\n";
+        return 1;
+    }
+    return 0;
+}
+
+void ViewApp::frame() {
+    const auto frameStart = Clock::now();
+    waitOrPoll();
+    const bool scriptDone = !script_ || script_->finished();
+    if (!scriptDone) script_->step(*this);
+    applyReloads();
+
+    int width = 0, height = 0;
+    window_->framebufferSize(width, height);
+    if (width != fbWidth_ || height != fbHeight_) {
+        fbWidth_ = width;
+        fbHeight_ = height;
+        lastMove_ = Clock::now();  // resizing counts as moving: low resolution until it stops
+        dirty_ = true;
+    }
+    if (fbWidth_ <= 0 || fbHeight_ <= 0) return;  // minimised: nothing to draw
+    trackball_->setViewport(fbWidth_, fbHeight_);
+    adaptive_.enabled = state_.adaptiveResolution;
+    while (auto result = timer_->poll()) {
+        stats_.addGpu(result->ms);
+        adaptive_.record(result->ms, result->tag);
+    }
+
+    const bool lastFrame = scriptDone && framesLeft_ == 1;
+    if (lastFrame && !options_.screenshot.empty()) pendingShot_ = options_.screenshot;
+    const bool screenshot = !pendingShot_.empty() || !pendingUiShot_.empty();
+    const bool refine = !moving() && renderedScale_ < 1.0;
+    bool rendered = false;
+    if (dirty_ || state_.continuous || refine || (screenshot && renderedScale_ < 1.0)) {
+        renderPicture(screenshot);
+        rendered = true;
+    }
+    picture_->present(fbWidth_, fbHeight_);
+    if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
+    pendingShot_.clear();
+
+    ViewRequests requests;
+    drawUi(requests);
+    if (!pendingUiShot_.empty()) writeScreenshot(pendingUiShot_, true);
+    pendingUiShot_.clear();
+    glfwSwapBuffers(window_->window());
+    if (rendered) stats_.addWall(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
+
+    handleRequests(requests);
+    if (scriptDone && framesLeft_ > 0 && --framesLeft_ == 0) quit_ = true;
+}
+
+void ViewApp::waitOrPoll() {
+    const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || framesBeforeIdle_ > 0 ||
+                      (script_ && !script_->finished()) || framesLeft_ > 0 || Clock::now() < toastUntil_;
+    if (busy) {
+        glfwPollEvents();
+        if (framesBeforeIdle_ > 0) --framesBeforeIdle_;
+    } else {
+        glfwWaitEventsTimeout(kIdleWaitSeconds);
+        framesBeforeIdle_ = kFramesAfterWake;
+    }
+}
+
+void ViewApp::applyReloads() {
+    for (Side& side : sides_)
+        if (side.watcher->takeChange()) rebuild(side, false);
+    if (sceneWatcher_ && sceneWatcher_->takeChange()) {
+        const Camera before = scene_.fromFile().camera;
+        ++reloads_;
+        if (scene_.reload()) {
+            for (const auto& w : scene_.warnings()) std::cerr << "raylab: warning: " << w << "\n";
+            std::cout << "raylab: reloaded " << scene_.path() << std::endl;
+            sceneChanged(!sameCamera(before, scene_.fromFile().camera));
+        } else {
+            std::cerr << "raylab: error: " << scene_.error() << " (the last good scene stays on screen)" << std::endl;
+        }
+    }
+}
+
+void ViewApp::rebuild(Side& side, bool initial) {
+    LiveProgram& program = *side.program;
+    const bool ok = program.rebuild();
+    side.watcher->watch(program.files());
+    if (!initial) ++reloads_;
+    if (ok) {
+        if (!initial)
+            std::cout << "raylab: reloaded " << program.label() << " (" << int(std::lround(program.lastBuildMs()))
+                      << " ms)" << std::endl;
+        stats_.clearRecent();
+        dirty_ = true;
+    } else {
+        std::cerr << "raylab: " << program.label() << ": the shader does not build"
+                  << (program.program() ? "; the last good picture stays on screen" : "") << ":\n"
+                  << program.error() << std::endl;
+    }
+}
+
+void ViewApp::sceneChanged(bool cameraChanged) {
+    picture_->setScene(scene_.scene());
+    if (cameraChanged)
+        trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
+    state_.viewBounce = std::clamp(state_.viewBounce, 0, std::max(scene_.scene().render.maxBounces, 0));
+    dirty_ = true;
+}
+
+bool ViewApp::moving() const {
+    return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime;
+}
+
+void ViewApp::renderPicture(bool fullResolution) {
+    const double scale = fullResolution ? 1.0 : adaptive_.scale(moving(), fbWidth_, fbHeight_);
+    FrameSettings frame = frameFromScene(scene_.scene());
+    frame.cameraToWorld = trackball_->cameraToWorldD();
+    frame.width = std::max(1, int(std::lround(fbWidth_ * scale)));
+    frame.height = std::max(1, int(std::lround(fbHeight_ * scale)));
+    frame.view = state_.view;
+    frame.viewBounce = state_.viewBounce;
+    const int split = wipeActive() ? int(std::lround(state_.divider * frame.width)) : frame.width;
+    const ShaderProgram* left = sides_[0].program->program();
+    const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
+    timer_->begin(double(frame.width) * frame.height);
+    try {
+        picture_->render(left, right, frame, split);
+        runtimeError_.clear();
+    } catch (const Error& e) {
+        if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
+        runtimeError_ = e.what();
+    }
+    timer_->end();
+    renderedScale_ = scale;
+    dirty_ = false;
+}
+
+void ViewApp::drawUi(ViewRequests& requests) {
+    ui_->beginFrame();
+    const float scale = ui_->scale();
+    PanelInfo info;
+    const GLubyte* renderer = gl::GetString(GL_RENDERER);
+    info.device = renderer ? reinterpret_cast<const char*>(renderer) : "";
+    info.scenePath = scene_.path();
+    info.left = sides_[0].program->label();
+    if (sides_.size() > 1) info.right = sides_[1].program->label();
+    info.gpuMs = stats_.recentGpuMs();
+    info.frameMs = stats_.recentWallMs();
+    info.renderWidth = picture_->width();
+    info.renderHeight = picture_->height();
+    info.windowWidth = fbWidth_;
+    info.windowHeight = fbHeight_;
+    info.presets = &presets_;
+    info.currentPreset = currentPreset();
+    info.uiScale = scale;
+    info.status = status_;
+    requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info);
+    drawHelpOverlay(state_.showHelp);
+    if (wipeActive()) {
+        int windowWidth = 0, windowHeight = 0;
+        glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+        const float toWindow = fbWidth_ > 0 ? float(windowWidth) / float(fbWidth_) : 1.0f;  // ImGui works in window units
+        drawWipeOverlay(float(dividerPixel()) * toWindow, float(windowHeight), sides_[0].program->label(),
+                        sides_[1].program->label(), scale);
+    }
+    drawErrorOverlay(errors(), scale);
+    if (Clock::now() < toastUntil_) drawToast(toast_, scale);
+    ui_->endFrame();
+}
+
+void ViewApp::handleRequests(const ViewRequests& r) {
+    if (r.sceneEdited) {
+        picture_->setScene(scene_.scene());  // uniforms only: the program stays
+        dirty_ = true;
+    }
+    if (r.redraw) dirty_ = true;
+    if (r.openPreset >= 0) openPreset(r.openPreset);
+    if (r.save) saveScene();
+    if (r.resetCamera) perform(Action::ResetCamera, 0);
+    if (r.screenshot) perform(Action::Screenshot, 0);
+    if (r.screenshotWithUi) perform(Action::ScreenshotWithUi, 0);
+    if (r.uiScale > 0) ui_->setScale(r.uiScale);
+}
+
+void ViewApp::writeScreenshot(const std::string& file, bool withUi) {
+    try {
+        writePng(file, readWindowPixels(fbWidth_, fbHeight_));
+        const std::string shown = fs::absolute(file).lexically_normal().string();
+        std::cout << "raylab: screenshot " << shown << (withUi ? " (window)" : "") << std::endl;
+        status_ = "saved " + shown;
+        toast("saved " + file);
+    } catch (const Error& e) {
+        std::cerr << "raylab: error: " << e.what() << std::endl;
+        status_ = e.what();
+        toast(e.what());
+    }
+}
+
+void ViewApp::saveScene() {
+    Scene scene = scene_.scene();
+    if (state_.saveCamera) scene.camera = trackball_->camera();
+    try {
+        saveSceneFile(scene, state_.savePath);
+        status_ = "saved " + state_.savePath;
+        std::cout << "raylab: " << status_ << std::endl;
+    } catch (const Error& e) {
+        status_ = e.what();
+        std::cerr << "raylab: error: " << e.what() << std::endl;
+    }
+    toast(status_);
+}
+
+void ViewApp::openPreset(int index) {
+    if (index < 0 || index >= int(presets_.size())) return;
+    const std::string path = presets_[std::size_t(index)].string();
+    if (!scene_.open(path)) {
+        std::cerr << "raylab: error: " << scene_.error() << std::endl;
+        toast(scene_.error());
+        return;
+    }
+    if (!sceneWatcher_) sceneWatcher_ = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
+    sceneWatcher_->watch({path});
+    state_.savePath = path;
+    sceneChanged(true);
+    toast(presetTitle(presets_[std::size_t(index)]));
+}
+
+int ViewApp::currentPreset() const {
+    if (scene_.path().empty()) return -1;
+    std::error_code ec;
+    for (std::size_t i = 0; i < presets_.size(); ++i)
+        if (fs::equivalent(presets_[i], scene_.path(), ec)) return int(i);
+    return -1;
+}
+
+std::vector<std::string> ViewApp::errors() const {
+    std::vector<std::string> out;
+    for (const Side& side : sides_)
+        if (!side.program->error().empty())
+            out.push_back((sides_.size() > 1 ? side.program->label() + ": " : "") + side.program->error());
+    if (!scene_.error().empty()) out.push_back(scene_.error());
+    if (!runtimeError_.empty()) out.push_back(runtimeError_);
+    return out;
+}
+
+void ViewApp::toast(const std::string& message) {
+    toast_ = message;
+    toastUntil_ = Clock::now() + kToastTime;
+}
+
+void ViewApp::printStats() const {
+    if (stats_.frames() == 0) return;
+    const double ms = stats_.allWallMs();
+    std::printf("raylab view: %zu frames at %dx%d (%s%s%s): median %.1f ms per frame (%.1f fps)", stats_.frames(),
+                fbWidth_, fbHeight_, sides_[0].program->label().c_str(), sides_.size() > 1 ? " | " : "",
+                sides_.size() > 1 ? sides_[1].program->label().c_str() : "", ms, ms > 0 ? 1000.0 / ms : 0.0);
+    if (stats_.gpuFrames() > 0) std::printf(", GPU %.1f ms", stats_.allGpuMs());
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
+}  // namespace rl

@@ -1,0 +1,133 @@
+// `raylab view`: the live ray tracer in a window. One frame of the loop:
+//   events (GLFW callbacks, or the script) -> hot reloads -> the picture
+//   (only when something changed, at a lower resolution while moving) ->
+//   panel and overlays -> swap.
+// Everything runs on this thread except the file watchers, which only raise
+// flags. Input handling and actions are in view_app_input.cpp.
+#pragma once
+
+#include "camera/trackball.h"
+#include "gl/context_glfw.h"
+#include "view/adaptive_resolution.h"
+#include "view/file_watcher.h"
+#include "view/frame_stats.h"
+#include "view/gpu_timer.h"
+#include "view/imgui_layer.h"
+#include "view/live_program.h"
+#include "view/live_scene.h"
+#include "view/script_player.h"
+#include "view/split_picture.h"
+#include "view/view_options.h"
+#include "view/view_state.h"
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rl {
+
+class ViewApp final : private ScriptTarget {
+public:
+    // Throws rl::Error (one line) for a bad option, scene, folder or script,
+    // or when no window can be opened. A shader that does not compile is not
+    // an error here: the window opens and shows it.
+    explicit ViewApp(const ViewOptions& options);
+    ~ViewApp() override;
+
+    // Runs until the window closes, the script quits or --frames are done.
+    // Returns the exit status: 0, or 1 when a run with --frames or --script
+    // ends with an error on screen.
+    int run();
+
+private:
+    friend struct ViewAppCallbacks;  // GLFW's C callbacks, in view_app_input.cpp
+    using Clock = std::chrono::steady_clock;
+
+    // One implementation: its live program and the watcher of its files.
+    struct Side {
+        std::unique_ptr<LiveProgram> program;
+        std::unique_ptr<FileWatcher> watcher;
+    };
+
+    // -- the loop (view_app.cpp)
+    void frame();
+    void waitOrPoll();
+    void applyReloads();
+    void rebuild(Side& side, bool initial);
+    void sceneChanged(bool cameraMayHaveChanged);
+    void renderPicture(bool fullResolution);
+    void drawUi(ViewRequests& requests);
+    void handleRequests(const ViewRequests& requests);
+    void writeScreenshot(const std::string& file, bool withUi);
+    void saveScene();
+    void openPreset(int index);
+    bool moving() const;
+    std::vector<std::string> errors() const;
+    void toast(const std::string& message);
+    void printStats() const;
+    int currentPreset() const;
+
+    // -- input and actions (view_app_input.cpp)
+    void installCallbacks();
+    void onKey(int key, int action, int mods);
+    void onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript);
+    void onCursor(glm::dvec2 pixel);
+    void onScroll(double steps);
+    void perform(Action action, int argument);
+    glm::dvec2 cursorPixel() const;   // the cursor in framebuffer pixels
+    double dividerPixel() const;      // the wipe divider in framebuffer pixels
+    bool wipeActive() const { return sides_.size() == 2 && state_.wipe; }
+    void cameraMoved();
+
+    // ScriptTarget
+    void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
+    void scriptCursor(glm::dvec2 pixel) override;
+    void scriptScroll(double steps) override;
+    void scriptKey(const KeyBinding& binding) override;
+    void scriptView(View view, int bounce) override;
+    void scriptDivider(double fraction) override;
+    void scriptResize(int width, int height) override;
+    void scriptScreenshot(const std::string& file, bool withUi) override;
+    void scriptQuit() override;
+    int reloadCount() const override { return reloads_; }
+
+    // Settings, in the order they are set up (and torn down in reverse: the
+    // watchers and GL objects go before the window and its context).
+    ViewOptions options_;
+    std::optional<ScriptPlayer> script_;
+    LiveScene scene_;
+    std::vector<std::filesystem::path> presets_;
+    std::unique_ptr<GlfwWindowContext> window_;
+    std::unique_ptr<ImGuiLayer> ui_;
+    std::vector<Side> sides_;                 // [0] = --impl (left), [1] = --compare (right)
+    std::unique_ptr<FileWatcher> sceneWatcher_;
+    std::unique_ptr<SplitPicture> picture_;
+    std::unique_ptr<GpuTimer> timer_;
+    std::unique_ptr<Trackball> trackball_;
+
+    // State of the running window.
+    ViewState state_;
+    AdaptiveResolution adaptive_;
+    FrameStats stats_;
+    int fbWidth_ = 0, fbHeight_ = 0;          // framebuffer size this frame
+    bool dirty_ = true;                       // the picture must be rendered again
+    double renderedScale_ = 0;                // scale of the picture on screen; 0 = none yet
+    Clock::time_point lastMove_{};            // last camera or window-size change
+    int framesBeforeIdle_ = 0;                // frames to draw before waiting for events
+    int framesLeft_ = 0;                      // --frames countdown, after the script
+    int reloads_ = 0;                         // hot reloads applied (for wait-reload)
+    bool quit_ = false;
+    bool draggingDivider_ = false;
+    int dragButton_ = -1;                     // the mouse button of the trackball drag, -1 = none
+    std::string runtimeError_;                // a GL error while drawing, shown like a shader error
+    std::string pendingShot_;                 // picture screenshot to write this frame
+    std::string pendingUiShot_;               // window screenshot to write this frame
+    std::string status_;                      // last save / screenshot, for the panel
+    std::string toast_;
+    Clock::time_point toastUntil_{};
+};
+
+}  // namespace rl

@@ -1,0 +1,256 @@
+// ViewApp, part two: mouse, keys and the script, all ending in the same
+// handful of functions, and the actions of the key table (key_bindings.h).
+#include "view/view_app.h"
+
+#include "view/presets.h"
+#include "view/screenshot.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace rl {
+namespace {
+
+// Exposure keys move half a stop (a factor of sqrt 2): four presses double
+// twice, fine enough to find the right brightness live.
+const double kHalfStop = std::sqrt(2.0);
+constexpr double kMinExposure = 1.0 / 64.0;  // as the panel's slider
+constexpr double kMaxExposure = 64.0;
+// UI scale keys: 25% a press; from 1 to 2 in three presses.
+constexpr float kUiScaleStep = 1.25f;
+// Wipe keys: 5% of the width a press.
+constexpr double kDividerStep = 0.05;
+// The divider can be grabbed this many pixels (times the UI scale) either
+// side of its line: a 2-pixel line needs a wider target for the mouse.
+constexpr double kDividerGrabPixels = 8.0;
+// Bounces for "reflections on" when the scene file has none (as presets.cpp).
+constexpr int kDefaultBounces = 2;
+
+ViewApp* appOf(GLFWwindow* window) { return static_cast<ViewApp*>(glfwGetWindowUserPointer(window)); }
+
+std::string formatNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", v);
+    return text;
+}
+
+bool repeats(Action a) {  // actions that a held key repeats; toggles do not
+    switch (a) {
+        case Action::BounceDown: case Action::BounceUp: case Action::ExposureDown: case Action::ExposureUp:
+        case Action::DividerLeft: case Action::DividerRight: case Action::UiScaleDown: case Action::UiScaleUp:
+            return true;
+        default: return false;
+    }
+}
+
+}  // namespace
+
+// GLFW calls plain functions; the window's user pointer leads back here.
+// (ImGui's GLFW backend keeps its own state and chains to these.)
+struct ViewAppCallbacks {
+    static void key(GLFWwindow* w, int key, int, int action, int mods) { appOf(w)->onKey(key, action, mods); }
+    static void button(GLFWwindow* w, int button, int action, int) {
+        ViewApp* app = appOf(w);
+        app->onMouseButton(button, action == GLFW_PRESS, app->cursorPixel(), false);
+    }
+    static void cursor(GLFWwindow* w, double, double) {
+        ViewApp* app = appOf(w);
+        app->onCursor(app->cursorPixel());
+    }
+    static void scroll(GLFWwindow* w, double, double y) {
+        ViewApp* app = appOf(w);
+        if (!app->ui_->wantsMouse()) app->onScroll(y);
+    }
+};
+
+void ViewApp::installCallbacks() {
+    GLFWwindow* w = window_->window();
+    glfwSetWindowUserPointer(w, this);
+    glfwSetKeyCallback(w, &ViewAppCallbacks::key);
+    glfwSetMouseButtonCallback(w, &ViewAppCallbacks::button);
+    glfwSetCursorPosCallback(w, &ViewAppCallbacks::cursor);
+    glfwSetScrollCallback(w, &ViewAppCallbacks::scroll);
+}
+
+glm::dvec2 ViewApp::cursorPixel() const {
+    double x = 0, y = 0;
+    int windowWidth = 1, windowHeight = 1;
+    glfwGetCursorPos(window_->window(), &x, &y);
+    glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+    // Screen coordinates to framebuffer pixels (they differ on HiDPI screens).
+    return {x * fbWidth_ / std::max(windowWidth, 1), y * fbHeight_ / std::max(windowHeight, 1)};
+}
+
+double ViewApp::dividerPixel() const { return state_.divider * fbWidth_; }
+
+void ViewApp::cameraMoved() {
+    lastMove_ = Clock::now();
+    dirty_ = true;
+}
+
+void ViewApp::onKey(int key, int action, int mods) {
+    if (action == GLFW_RELEASE || ui_->wantsKeyboard()) return;  // typing in a panel field
+    auto binding = bindingFor(key, (mods & GLFW_MOD_CONTROL) != 0);
+    if (!binding || (action == GLFW_REPEAT && !repeats(binding->action))) return;
+    perform(binding->action, binding->argument);
+}
+
+void ViewApp::onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript) {
+    if (!pressed) {
+        if (draggingDivider_ && button == GLFW_MOUSE_BUTTON_LEFT) {
+            draggingDivider_ = false;
+            dirty_ = true;
+        } else if (button == dragButton_) {
+            trackball_->drag(pixel);
+            trackball_->endDrag();
+            dragButton_ = -1;
+            cameraMoved();
+        }
+        return;
+    }
+    if ((!fromScript && ui_->wantsMouse()) || dragButton_ >= 0 || draggingDivider_) return;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && wipeActive() &&
+        std::abs(pixel.x - dividerPixel()) <= kDividerGrabPixels * ui_->scale()) {
+        draggingDivider_ = true;
+        return;
+    }
+    Trackball::Mode mode;
+    if (button == GLFW_MOUSE_BUTTON_LEFT) mode = Trackball::Mode::Rotate;
+    else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) mode = Trackball::Mode::Pan;
+    else return;
+    trackball_->beginDrag(pixel, mode);
+    dragButton_ = button;
+    cameraMoved();
+}
+
+void ViewApp::onCursor(glm::dvec2 pixel) {
+    if (draggingDivider_) {
+        state_.divider = std::clamp(pixel.x / std::max(fbWidth_, 1), 0.0, 1.0);
+        cameraMoved();  // not the camera, but the same "moving" state: low resolution until it stops
+    } else if (dragButton_ >= 0) {
+        trackball_->drag(pixel);
+        cameraMoved();
+    }
+}
+
+void ViewApp::onScroll(double steps) {
+    trackball_->zoom(steps);
+    cameraMoved();
+}
+
+void ViewApp::perform(Action action, int argument) {
+    RenderSettings& render = scene_.scene().render;
+    bool sceneEdited = false;
+    switch (action) {
+        case Action::ToggleHelp: state_.showHelp = !state_.showHelp; break;
+        case Action::TogglePanel: state_.showPanel = !state_.showPanel; break;
+        case Action::ResetCamera:
+            trackball_->reset();
+            dirty_ = true;
+            break;
+        case Action::SetView:
+            state_.view = View(argument);
+            dirty_ = true;
+            break;
+        case Action::BounceDown:
+        case Action::BounceUp:
+            state_.view = View::Bounce;
+            state_.viewBounce = std::clamp(state_.viewBounce + (action == Action::BounceUp ? 1 : -1), 0,
+                                           std::max(render.maxBounces, 0));
+            toast("view: bounce " + std::to_string(state_.viewBounce));
+            dirty_ = true;
+            break;
+        case Action::ExposureDown:
+        case Action::ExposureUp:
+            render.exposure = std::clamp(render.exposure * (action == Action::ExposureUp ? kHalfStop : 1.0 / kHalfStop),
+                                         kMinExposure, kMaxExposure);
+            toast("exposure " + formatNumber(render.exposure));
+            sceneEdited = true;
+            break;
+        case Action::CycleGamma:
+            if (render.srgb) {
+                render.srgb = false;
+                render.gamma = 1.0;
+                toast("gamma off (1.0)");
+            } else if (render.gamma == 1.0) {
+                render.gamma = 2.2;
+                toast("gamma 2.2");
+            } else {
+                render.srgb = true;
+                toast("gamma sRGB");
+            }
+            sceneEdited = true;
+            break;
+        case Action::ToggleReflections: {
+            const int fromFile = scene_.fromFile().render.maxBounces;
+            render.maxBounces = render.maxBounces > 0 ? 0 : (fromFile > 0 ? fromFile : kDefaultBounces);
+            toast(render.maxBounces > 0 ? "reflections on (" + std::to_string(render.maxBounces) + " bounces)"
+                                        : "reflections off");
+            sceneEdited = true;
+            break;
+        }
+        case Action::PreviousPreset:
+        case Action::NextPreset: {
+            if (presets_.empty()) break;
+            const int n = int(presets_.size());
+            const int current = currentPreset();
+            const int step = action == Action::NextPreset ? 1 : -1;
+            openPreset(current < 0 ? (step > 0 ? 0 : n - 1) : (current + step + n) % n);
+            break;
+        }
+        case Action::ToggleCompare:
+            if (sides_.size() < 2) {
+                toast("no wipe: start with --compare DIR");
+                break;
+            }
+            state_.wipe = !state_.wipe;
+            dirty_ = true;
+            break;
+        case Action::DividerLeft:
+        case Action::DividerRight:
+            state_.divider = std::clamp(state_.divider + (action == Action::DividerRight ? kDividerStep : -kDividerStep),
+                                        0.0, 1.0);
+            dirty_ = true;
+            break;
+        case Action::ToggleFullscreen: window_->toggleFullscreen(); break;
+        case Action::Screenshot: pendingShot_ = timestampedScreenshotName(); break;
+        case Action::ScreenshotWithUi: pendingUiShot_ = timestampedScreenshotName(); break;
+        case Action::UiScaleDown: ui_->setScale(ui_->scale() / kUiScaleStep); break;
+        case Action::UiScaleUp: ui_->setScale(ui_->scale() * kUiScaleStep); break;
+        case Action::SaveScene: saveScene(); break;
+        case Action::Escape:
+            if (window_->fullscreen()) window_->toggleFullscreen();
+            else state_.showHelp = false;
+            break;
+        case Action::Quit: quit_ = true; break;
+    }
+    if (sceneEdited) {
+        picture_->setScene(scene_.scene());
+        dirty_ = true;
+    }
+}
+
+// Script input goes to the picture directly (never to the panel).
+void ViewApp::scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) { onMouseButton(button, pressed, pixel, true); }
+void ViewApp::scriptCursor(glm::dvec2 pixel) { onCursor(pixel); }
+void ViewApp::scriptScroll(double steps) { onScroll(steps); }
+void ViewApp::scriptKey(const KeyBinding& binding) { perform(binding.action, binding.argument); }
+void ViewApp::scriptView(View view, int bounce) {
+    state_.view = view;
+    if (view == View::Bounce) state_.viewBounce = bounce;
+    dirty_ = true;
+}
+void ViewApp::scriptDivider(double fraction) {
+    state_.divider = fraction;
+    dirty_ = true;
+}
+void ViewApp::scriptResize(int width, int height) { glfwSetWindowSize(window_->window(), width, height); }
+void ViewApp::scriptScreenshot(const std::string& file, bool withUi) { (withUi ? pendingUiShot_ : pendingShot_) = file; }
+void ViewApp::scriptQuit() { quit_ = true; }
+
+}  // namespace rl

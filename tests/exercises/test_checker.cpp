@@ -1,0 +1,150 @@
+// The checker can fail: solutions pass, stubs are NOT STARTED, every mutant
+// in tests/mutants/ is caught by its exercise with a message that names the
+// mistake's symptom, compile errors name the student's file and line, and a
+// shader that never ends costs its exercise, not the run.
+#include "core/paths.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+
+namespace fs = std::filesystem;
+using namespace rl;
+
+namespace {
+
+fs::path copyOf(const fs::path& from, const std::string& name) {
+    fs::path dir = test::freshTempDir(name);
+    for (const auto& e : fs::directory_iterator(from)) fs::copy_file(e.path(), dir / e.path().filename());
+    return dir;
+}
+
+std::vector<std::string> mutantFiles() {
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "mutants"))
+        if (e.path().extension() == ".glsl") files.push_back(e.path().filename().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+int countOf(const std::string& text, const std::string& what) {
+    int n = 0;
+    for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(Checker, SolutionsPassEveryCheck) {
+    auto r = test::runRaylab("check --impl " + solutionsDir().string() + " --output " +
+                             test::freshTempDir("sol").string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(countOf(r.output, " PASS "), 10) << r.output;
+    EXPECT_NE(r.output.find("10 of 10 exercises pass"), std::string::npos);
+}
+
+TEST(Checker, StubsAreNotStartedEverywhere) {
+    auto r = test::runRaylab("check --impl " + exercisesDir().string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_EQ(countOf(r.output, " NOT STARTED "), 10) << r.output;
+}
+
+TEST(Checker, EditedStubsThatStillReturnTheSentinelAreNotStarted) {
+    // Not byte-equal to the shipped stub (a comment added), so the check
+    // compiles and runs it, and recognises NOT_STARTED in every result.
+    fs::path dir = copyOf(exercisesDir(), "edited_stubs");
+    std::string text = test::readText(dir / "07-fresnel.glsl") + "\n// I will start tomorrow.\n";
+    test::writeText(dir / "07-fresnel.glsl", text);
+    auto r = test::runRaylab("check --impl " + dir.string() + " --exercise 7");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("07-fresnel        NOT STARTED   every function still returns NOT_STARTED"),
+              std::string::npos)
+        << r.output;
+}
+
+class Mutants : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Mutants, AreCaughtWithTheirSymptom) {
+    fs::path file = sourceRoot() / "tests" / "mutants" / GetParam();
+    std::string text = test::readText(file);
+    std::smatch exercise, expect;
+    ASSERT_TRUE(std::regex_search(text, exercise, std::regex(R"(// mutant of: (\d\d)-)"))) << "header missing";
+    ASSERT_TRUE(std::regex_search(text, expect, std::regex(R"re(// caught by: .* contains "(.*)")re")));
+    auto r = test::runRaylab("check --exercise " + exercise[1].str() + " --file " + file.string() + " --output " +
+                             test::freshTempDir("mutant").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(" FAIL "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(expect[1].str()), std::string::npos) << "expected the symptom '" << expect[1] << "' in:\n"
+                                                                  << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(TestsMutants, Mutants, ::testing::ValuesIn(mutantFiles()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param.substr(0, info.param.size() - 5);
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+TEST(Checker, CompileErrorNamesTheStudentFileAndTheOthersAreStillChecked) {
+    fs::path dir = copyOf(solutionsDir(), "compile_error");
+    std::string text = test::readText(dir / "05-ggx.glsl");
+    auto pos = text.find("    float a2 = alpha * alpha;");
+    ASSERT_NE(pos, std::string::npos);
+    text.replace(pos, 29, "    float a2 = alpha * alpha");  // missing semicolon
+    test::writeText(dir / "05-ggx.glsl", text);
+    int line = 1 + int(std::count(text.begin(), text.begin() + pos, '\n'));
+    auto r = test::runRaylab("check --impl " + dir.string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("05-ggx            COMPILE ERROR"), std::string::npos) << r.output;
+    // Mesa reports the error at the next token, on this line or the next.
+    bool named = r.output.find("05-ggx.glsl:" + std::to_string(line) + ": error") != std::string::npos ||
+                 r.output.find("05-ggx.glsl:" + std::to_string(line + 1) + ": error") != std::string::npos;
+    EXPECT_TRUE(named) << r.output;
+    EXPECT_EQ(countOf(r.output, " PASS "), 9) << r.output;
+}
+
+TEST(Checker, AShaderThatNeverEndsCostsItsExerciseOnly) {
+    fs::path dir = copyOf(solutionsDir(), "endless");
+    std::string text = test::readText(dir / "10-display.glsl");
+    auto pos = text.find("vec3 toneMap(vec3 c, int op) {\n");
+    ASSERT_NE(pos, std::string::npos);
+    // An endless loop. llvmpipe cuts every loop off after 65535 iterations (a
+    // GPU driver would hang instead), so sixteen such loops of real work make
+    // a shader that runs for ~10 s on 2 cores: far past the 2 s timeout.
+    std::string loops = "    vec3 c0 = c;\n";
+    for (int k = 0; k < 16; ++k) loops += "    for (int i = 0; i >= 0; ++i) { c = sin(c * 1.0001 + vec3(1e-7)) + cos(c); }\n";
+    loops += "    c = c0 + 1e-30 * c;\n";
+    text.insert(pos + 31, loops);
+    test::writeText(dir / "10-display.glsl", text);
+    auto r = test::runRaylab("check --impl " + dir.string() + " --exercise 10 --exercise 7 --timeout 2");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("10-display        TIMEOUT"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("07-fresnel        PASS"), std::string::npos) << r.output;
+}
+
+TEST(Checker, BadCommandLine) {
+    auto e = test::runRaylab("check --exercise 11");
+    EXPECT_EQ(e.status, 1);
+    EXPECT_NE(e.output.find("--exercise: no exercise '11'"), std::string::npos) << e.output;
+    auto d = test::runRaylab("check --impl /nonexistent");
+    EXPECT_EQ(d.status, 1);
+    EXPECT_EQ(d.output, "raylab: error: --impl: /nonexistent is not a directory\n");
+}
+
+TEST(Checker, AnyMixOfStubsAndSolutionsRenders) {
+    // Stubs for the odd exercises, solutions for the even ones, and the other way round.
+    for (int parity = 0; parity < 2; ++parity) {
+        fs::path dir = copyOf(solutionsDir(), "mix" + std::to_string(parity));
+        int k = 0;
+        for (const auto& e : fs::directory_iterator(exercisesDir()))
+            if (++k % 2 == parity) fs::copy_file(e.path(), dir / e.path().filename(), fs::copy_options::overwrite_existing);
+        auto r = test::runRaylab("render --size 32x24 --impl " + dir.string() + " -o " + (dir / "x.png").string() +
+                                 " --hdr " + (dir / "x.pfm").string());
+        EXPECT_EQ(r.status, 0) << r.output;
+    }
+    auto stubs = test::runRaylab("render --size 32x24 --impl " + exercisesDir().string() + " -o /tmp/raylab_stubs.png");
+    EXPECT_EQ(stubs.status, 0) << stubs.output;
+}

@@ -1,0 +1,70 @@
+#include "support/test_support.h"
+
+#include "gl/context.h"
+#include "render/gl_renderer.h"
+#include "render/shader_config.h"
+#include "core/paths.h"
+#include "shader/shader_library.h"
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace rl::test {
+
+CommandResult runRaylab(const std::string& args, const std::string& env) {
+    std::string command = (env.empty() ? "" : env + " ") + std::string(RAYLAB_BINARY) + " " + args + " 2>&1";
+    CommandResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer;
+    std::size_t n;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    int status = pclose(pipe);
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::filesystem::path freshTempDir(const std::string& name) {
+    auto dir = std::filesystem::temp_directory_path() / ("raylab_test_" + name + "_" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+Rendering renderGl(const Scene& scene, const std::string& backend) {
+    // One context per backend for the whole test process.
+    static std::map<std::string, std::unique_ptr<GlContext>> contexts;
+    auto& context = contexts[backend];
+    if (!context) {
+        contexts.clear();  // only one context may be current; drop the other backend's
+        contexts[backend] = createHeadlessContext(parseBackend(backend));
+    }
+    ShaderProgram program = buildRayTracer(Implementation{solutionsDir(), {}}, shaderDefinesFor(scene, true));
+    return renderOnce(program, scene, frameFromScene(scene));
+}
+
+std::string describe(const ImageDiff& d) {
+    char text[256];
+    std::snprintf(text, sizeof text, "off %.3f%% mean %.3f p99 %.1f max %d pfmMedianRel %.2g nonFinite %ld",
+                  100 * d.offFraction, d.meanLsb, d.p99Lsb, d.maxLsb, d.pfmMedianRel, d.nonFinite);
+    return text;
+}
+
+}  // namespace rl::test

@@ -1,0 +1,34 @@
+// Helpers shared by the test suites: running the raylab binary, temporary
+// folders, and rendering through the library.
+#pragma once
+
+#include "core/image.h"
+#include "core/scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace rl::test {
+
+struct CommandResult {
+    int status = -1;     // exit status
+    std::string output;  // stdout and stderr together
+};
+
+// Runs `build/bin/raylab ARGS` through the shell (2>&1), with an optional
+// working directory and environment prefix (e.g. "RAYLAB_ROOT=/tmp/x").
+CommandResult runRaylab(const std::string& args, const std::string& env = "");
+
+// A fresh empty folder under the system temp directory, removed at exit.
+std::filesystem::path freshTempDir(const std::string& name);
+
+void writeText(const std::filesystem::path& path, const std::string& text);
+std::string readText(const std::filesystem::path& path);
+
+// Renders with OpenGL (solutions/, a headless context made once per process).
+Rendering renderGl(const Scene& scene, const std::string& backend = "auto");
+
+// "off 0.12% mean 0.03 p99 1 maxLsb 2 pfmRel 1e-6 nonFinite 0", for messages.
+std::string describe(const ImageDiff& d);
+
+}  // namespace rl::test
