@@ -10,6 +10,7 @@
 //     f = origin - center,  b = dot(f, dir),  c = dot(f, f) - radius^2
 //     discriminant = radius^2 - |f - b dir|^2
 //     q = -b - sign(b) sqrt(discriminant),  roots: c / q and q
+// (careful: GLSL's sign(0.0) is 0; here sign(b) must be +1 when b = 0)
 float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
     return NOT_STARTED;  // TODO
 }

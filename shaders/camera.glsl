@@ -16,5 +16,5 @@ vec3 primaryRayDirection(vec2 pixel, int s, int n) {
     vec3 up = u_cameraToWorld[1].xyz;
     vec3 forward = -u_cameraToWorld[2].xyz;
     vec3 d = cameraRayDirection(pixel + offset, u_resolution, u_fovY, right, up, forward);
-    return isStub(d) ? forward : d;
+    return isGeometryStub(d) ? forward : d;
 }

@@ -9,7 +9,7 @@ Hit closestHit(vec3 origin, vec3 dir) {
     float nearest = 3.4e38;  // FLT_MAX: any real hit is nearer
     for (int i = 0; i < sphereCount(); ++i) {
         float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
-        if (isStub(t)) return hit;  // 02 not started: nothing is hit
+        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (t > 0.0 && t < nearest) {
             nearest = t;
             hit.sphere = i;

@@ -17,6 +17,6 @@ void main() {
     }
     vec3 radiance = sum / float(n * n);  // the spec averages radiance before the display step
     vec3 colour = viewIsRadiance() ? displayColour(radiance) : clamp(radiance, 0.0, 1.0);
-    o_display = vec4(stubOverlay(colour, gl_FragCoord.xy), 1.0);
+    o_display = vec4(stubOverlay(colour, gl_FragCoord.xy, u_resolution), 1.0);
     o_radiance = vec4(radiance, 1.0);
 }

@@ -224,23 +224,34 @@ ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<f
             return out;
         }
     }
-    // Failures concentrated in one kind of input.
+    // Failures concentrated in one kind of input (ties: the group with a hint).
+    auto hintFor = [&](const std::string& group) -> const std::string* {
+        for (const auto& [g, hint] : spec.groupHints)
+            if (g == group) return &hint;
+        return nullptr;
+    };
     std::string worst;
-    double worstShare = 0;
+    int worstFailed = 0;
+    bool everyGroupFails = true;
     for (const auto& [group, counts] : groups) {
-        double share = double(counts.first) / failed;
-        if (counts.first > 0 && share > worstShare) {
-            worstShare = share;
+        everyGroupFails = everyGroupFails && counts.first > 0;
+        bool better = counts.first > worstFailed || (counts.first == worstFailed && counts.first > 0 &&
+                                                      hintFor(group) && !hintFor(worst));
+        if (better) {
+            worstFailed = counts.first;
             worst = group;
         }
     }
-    for (const auto& [group, hint] : spec.groupHints)
-        if (group == worst && worstShare >= 0.5) {
-            out.hint = "fails mostly on " + worst + ": " + hint;
-            return out;
-        }
-    out.hint = "fails on " + worst + " (" + std::to_string(groups[worst].first) + " of " +
-               std::to_string(groups[worst].second) + ")";
+    if (const std::string* hint = hintFor(worst); hint && 2 * worstFailed >= failed) {
+        out.hint = "fails mostly on " + worst + ": " + *hint;
+        return out;
+    }
+    if (everyGroupFails && groups.size() > 1) {
+        out.hint = "fails on every kind of input: compare your formula with the handout, term by term";
+        return out;
+    }
+    out.hint = "fails mostly on " + worst + " (" + std::to_string(groups[worst].first) + " of " +
+               std::to_string(groups[worst].second) + " such cases)";
     return out;
 }
 
@@ -273,26 +284,35 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
 
     // Probes.
     Scene scene = probeScene();
-    bool allStub = true;
-    std::string table;
-    for (const ProbeSpec& spec : probesForExercise(exercise.number)) {
-        ProbeOutcome outcome = evaluateProbe(spec, runProbe(probe, spec, spec.needsScene ? &scene : nullptr));
-        report.probes.push_back(outcome.summary);
-        allStub = allStub && outcome.allStub;
-        if (outcome.summary.passed < outcome.summary.total && !outcome.allStub) {
-            if (report.message.empty()) {
-                report.message = outcome.firstFailure;
-                report.hint = outcome.hint;
-            }
-            table += outcome.table;
-        }
-    }
+    std::vector<std::pair<std::string, ProbeOutcome>> outcomes;
+    for (const ProbeSpec& spec : probesForExercise(exercise.number))
+        outcomes.emplace_back(spec.signature,
+                              evaluateProbe(spec, runProbe(probe, spec, spec.needsScene ? &scene : nullptr)));
+    bool allStub = std::all_of(outcomes.begin(), outcomes.end(), [](const auto& o) { return o.second.allStub; });
     if (allStub) {
         report.status = CheckStatus::NotStarted;
         report.message = "every function still returns NOT_STARTED";
         report.hint = "start with the handout: " + exercise.handout();
-        report.probes.clear();
         return report;
+    }
+    std::string table;
+    for (const auto& [signature, outcome] : outcomes) {
+        report.probes.push_back(outcome.summary);
+        if (outcome.summary.passed == outcome.summary.total) continue;
+        if (outcome.allStub) {  // one function done, this one not yet
+            std::string line = outcome.summary.name + " is not started: it still returns NOT_STARTED";
+            if (report.message.empty()) {
+                report.message = line;
+                report.hint = "finish every function of the exercise: " + exercise.handout();
+            }
+            table += "  " + signature + ": not started (returns NOT_STARTED)\n";
+            continue;
+        }
+        if (report.message.empty()) {
+            report.message = outcome.firstFailure;
+            report.hint = outcome.hint;
+        }
+        table += outcome.table;
     }
 
     // Images: this exercise from the student, every other from solutions/.

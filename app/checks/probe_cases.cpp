@@ -189,7 +189,7 @@ std::vector<ProbeSpec> intersectProbes() {
             vec3 dir = rng.unitVector();
             vec3 side = glm::normalize(glm::cross(dir, rng.unitVector()));
             add(vec3(0), dir + float(rng.range(0, 0.7) / distance) * side, distance * dir, 1.0f,
-                "far sphere (distance " + fmt(distance) + ")");
+                "far sphere (distance 1e3 to 1e4)");
         }
     for (int k = 0; k < 10; ++k) {  // origin inside: the far root
         vec3 center(float(rng.range(-2, 2)), float(rng.range(-2, 2)), float(rng.range(-2, 2)));
@@ -251,12 +251,8 @@ std::vector<ProbeSpec> intersectProbes() {
          }},
     };
     p.groupHints = {
-        {"far sphere (distance 1000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
-                                        "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
-        {"far sphere (distance 3000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
-                                        "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
-        {"far sphere (distance 10000)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
-                                         "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
+        {"far sphere (distance 1e3 to 1e4)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
+                                              "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
         {"origin inside the sphere", "from inside, the near root is behind the origin: take the far one"},
         {"sphere behind the origin", "both roots negative means NO_HIT"},
         {"nearly tangent ray", "a negative discriminant is a miss; zero or positive is a hit"},
@@ -359,7 +355,11 @@ Scene makeProbeScene() {
     s.spheres = {sphere({0, -100, 0}, 100, {0.6, 0.6, 0.6}, 0.8, 0),
                  sphere({0, 1, 0}, 1, {0.9, 0.2, 0.1}, 0.4, 0),
                  sphere({2.5, 0.7, 0.5}, 0.7, {0.95, 0.9, 0.6}, 0.2, 1),
-                 sphere({-2.2, 0.8, -0.6}, 0.8, {0.2, 0.5, 0.9}, 0.05, 0.5)};
+                 sphere({-2.2, 0.8, -0.6}, 0.8, {0.2, 0.5, 0.9}, 0.05, 0.5),
+                 // Two facing mirrors off to the side: a ray between them
+                 // bounces until max_bounces ends it.
+                 sphere({9, 3, 0}, 1, {0.95, 0.95, 0.95}, 0.05, 1),
+                 sphere({13, 3, 0}, 1, {0.9, 0.8, 0.5}, 0.05, 1)};
     Light key;
     key.position = {1, 6, 2};
     key.intensity = 60;
@@ -514,7 +514,10 @@ std::vector<ProbeSpec> ggxProbes() {
         return std::make_pair(kAbs, c.group.rfind("near the peak", 0) == 0 ? 1e-2 : 1e-3);
     };
     d.describe = [](const ProbeCase& c) {
-        return "n.h=" + fmt(glm::dot(get(c, 0), get(c, 4))) + " alpha=" + fmt(f(c, 8));
+        double NoH = glm::dot(get(c, 0), get(c, 4));
+        // Near the peak n.h prints as 1: show how far from 1 it is instead.
+        std::string angle = NoH > 0.999 ? "1-n.h=" + fmt(1.0 - NoH) : "n.h=" + fmt(NoH);
+        return angle + " alpha=" + fmt(f(c, 8));
     };
     auto dTextbookLike = [](const ProbeCase& c, double piFactor, bool alphaSquared) {
         double NoH = glm::dot(get(c, 0), get(c, 4)), a = f(c, 8);
@@ -805,6 +808,16 @@ std::vector<ProbeSpec> reflectionProbes() {
         c.group = target == 2 ? "metal sphere (bounces)" : "scene ray";
         tr.cases.push_back(c);
     }
+    for (int k = 0; k < 12; ++k) {  // between the facing mirrors: the bounce limit decides
+        ProbeCase c;
+        // Convex mirrors spread rays apart, so only rays very near the axis
+        // bounce more than max_bounces times before they escape.
+        vec3 origin(float(rng.range(10.5, 11.5)), 3.0f + float(rng.range(-1e-6, 1e-6)), float(rng.range(-1e-6, 1e-6)));
+        put(c, 0, origin);
+        put(c, 4, vec3(k % 2 ? 1.0f : -1.0f, 0.0f, 0.0f));
+        c.group = "between two facing mirrors";
+        tr.cases.push_back(c);
+    }
     tr.expected = [scene](const ProbeCase& c) { return value(R::traceRadiance(scene, get(c, 0), get(c, 4))); };
     // Three bounces of float32 shading, each ~1e-4: 1e-3 relative.
     tr.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 1e-3); };
@@ -817,7 +830,8 @@ std::vector<ProbeSpec> reflectionProbes() {
          "reflect(I, N) takes the incident direction first: reflect(dir, hit.n)",
          [scene](const ProbeCase& c) { return value(traceVariant(scene, get(c, 0), get(c, 4), true, true)); }},
     };
-    tr.groupHints = {{"metal sphere (bounces)", "check the bounce: origin offset, reflect(dir, n), throughput"}};
+    tr.groupHints = {{"metal sphere (bounces)", "check the bounce: origin offset, reflect(dir, n), throughput"},
+                     {"between two facing mirrors", "stop after the primary hit and maxBounces() bounces"}};
     return {fr, tr};
 }
 
