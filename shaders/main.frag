@@ -13,10 +13,15 @@ void main() {
     vec3 sum = vec3(0.0);
     for (int s = 0; s < n * n; ++s) {
         vec3 dir = primaryRayDirection(pixel, s, n);
+#ifdef RL_PICTURE_ONLY  // a program for the picture and the bounce views: no term views (specialisation.cpp)
+        sum += radianceAlong(cameraPosition(), dir);
+#else
         sum += traced ? radianceAlong(cameraPosition(), dir) : teachingView(cameraPosition(), dir);
+#endif
     }
     vec3 radiance = sum / float(n * n);  // the spec averages radiance before the display step
     vec3 colour = viewIsRadiance() ? displayColour(radiance) : clamp(radiance, 0.0, 1.0);
+    markUnfinishedExercises();
     o_display = vec4(stubOverlay(colour, gl_FragCoord.xy, u_resolution), 1.0);
     o_radiance = vec4(radiance, 1.0);
 }
