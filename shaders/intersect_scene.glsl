@@ -1,8 +1,12 @@
 // intersect_scene.glsl: rays against every sphere of the scene, built on the
 // exercise's intersectSphere() (02-intersect).
 
-// Nearest hit along a unit direction; hit.t = NO_HIT when nothing is hit.
+// Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
+// renormalised first: a reflected direction is unit length only to ~1e-7,
+// and over a long chord inside a large sphere that puts the hit point farther
+// off the surface than the secondary-ray offset (the camera-inside hard case).
 Hit closestHit(vec3 origin, vec3 dir) {
+    dir = normalize(dir);
     Hit hit;
     hit.t = NO_HIT;
     hit.sphere = -1;

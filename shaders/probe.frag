@@ -1,68 +1,8 @@
-// probe.frag: evaluates ONE exercise function on a grid of inputs, for
-// `raylab check`. Case k is the pixel (k % width, k / width); its inputs are
-// the six RGBA32F texels (6 (k % width) + i, k / width) of u_probeInputs, laid
-// out as below; the result goes to the pixel's RGBA32F output. The CPU side
-// (app/checks/probe_cases.cpp) writes the inputs and compares the results.
+// probe.frag: the probe program of `raylab check` (see probe.glsl): one
+// exercise function evaluated on a grid of inputs, one case per pixel.
 #include "raytracer.glsl"
-
-uniform sampler2D u_probeInputs;
-uniform int u_probeFunction;  // one of the PROBE_ constants (probe_cases.h has the same list)
+#include "probe.glsl"
 
 layout(location = 0) out vec4 o_result;
 
-const int PROBE_SAMPLE_OFFSET = 0;
-const int PROBE_CAMERA_RAY = 1;
-const int PROBE_INTERSECT = 2;
-const int PROBE_LAMBERT = 3;
-const int PROBE_IRRADIANCE = 4;
-const int PROBE_OFFSET_ORIGIN = 5;
-const int PROBE_VISIBILITY = 6;
-const int PROBE_D_GGX = 7;
-const int PROBE_G1 = 8;
-const int PROBE_G = 9;
-const int PROBE_F_SCHLICK = 10;
-const int PROBE_ALPHA = 11;
-const int PROBE_F0 = 12;
-const int PROBE_SPECULAR = 13;
-const int PROBE_DIFFUSE = 14;
-const int PROBE_BRDF = 15;
-const int PROBE_F_ROUGHNESS = 16;
-const int PROBE_TRACE = 17;
-const int PROBE_TONEMAP = 18;
-const int PROBE_GAMMA = 19;
-const int PROBE_DISPLAY = 20;
-
-void main() {
-    ivec2 cell = ivec2(gl_FragCoord.xy);
-    vec4 a = texelFetch(u_probeInputs, ivec2(6 * cell.x + 0, cell.y), 0);
-    vec4 b = texelFetch(u_probeInputs, ivec2(6 * cell.x + 1, cell.y), 0);
-    vec4 c = texelFetch(u_probeInputs, ivec2(6 * cell.x + 2, cell.y), 0);
-    vec4 d = texelFetch(u_probeInputs, ivec2(6 * cell.x + 3, cell.y), 0);
-    vec4 e = texelFetch(u_probeInputs, ivec2(6 * cell.x + 4, cell.y), 0);
-    Material m = Material(a.xyz, a.w, b.x, b.y);
-    Hit hit = Hit(1.0, a.xyz, b.xyz, b.w, -1);
-    vec4 r = vec4(0.0);
-    int f = u_probeFunction;
-    if (f == PROBE_SAMPLE_OFFSET) r.xy = sampleOffset(int(a.x), int(a.y));
-    else if (f == PROBE_CAMERA_RAY) r.xyz = cameraRayDirection(a.xy, a.zw, b.x, c.xyz, d.xyz, e.xyz);
-    else if (f == PROBE_INTERSECT) r.x = intersectSphere(a.xyz, b.xyz, c.xyz, c.w);
-    else if (f == PROBE_LAMBERT) r.xyz = Fd_Lambert(a.xyz);
-    else if (f == PROBE_IRRADIANCE) r.xyz = pointLightIrradiance(a.xyz, b.xyz, c.xyz, d.xyz);
-    else if (f == PROBE_OFFSET_ORIGIN) r.xyz = offsetRayOrigin(a.xyz, b.xyz, b.w);
-    else if (f == PROBE_VISIBILITY) r.x = lightVisibility(hit, c.xyz);
-    else if (f == PROBE_D_GGX) r.x = D_GGX(a.xyz, b.xyz, c.x);
-    else if (f == PROBE_G1) r.x = G1_SchlickGGX(a.x, a.y);
-    else if (f == PROBE_G) r.x = G_SchlickGGX(a.x, a.y, a.z);
-    else if (f == PROBE_F_SCHLICK) r.xyz = F_Schlick(a.xyz, a.w);
-    else if (f == PROBE_ALPHA) r.x = ggxAlpha(a.x);
-    else if (f == PROBE_F0) r.xyz = baseReflectance(m);
-    else if (f == PROBE_SPECULAR) r.xyz = specularBRDF(c.xyz, d.xyz, e.xyz, m);
-    else if (f == PROBE_DIFFUSE) r.xyz = diffuseBRDF(c.xyz, d.xyz, e.xyz, m);
-    else if (f == PROBE_BRDF) r.xyz = cookTorranceBRDF(c.xyz, d.xyz, e.xyz, m);
-    else if (f == PROBE_F_ROUGHNESS) r.xyz = F_SchlickRoughness(a.xyz, a.w, b.x);
-    else if (f == PROBE_TRACE) r.xyz = traceRay(a.xyz, b.xyz);
-    else if (f == PROBE_TONEMAP) r.xyz = toneMap(a.xyz, int(a.w));
-    else if (f == PROBE_GAMMA) r.xyz = encodeGamma(a.xyz, a.w);
-    else if (f == PROBE_DISPLAY) r.xyz = displayEncode(a.xyz, a.w, int(b.x), b.y);
-    o_result = r;
-}
+void main() { o_result = evaluateProbe(); }

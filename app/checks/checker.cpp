@@ -268,11 +268,13 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     report.id = exercise.id;
     auto context = createHeadlessContext(parseBackend(options.backend));
     Implementation impl{solutionsDir(), {{exercise.file(), file}}};
-    ShaderProgram probe, tracer;
+    ShaderProgram probe, program;
     try {
         AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
-        probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, {}));
-        tracer = buildRayTracer(impl);
+        // Only this exercise's functions in the probe: the compiler drops the rest.
+        ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
+        probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
+        program = buildRayTracer(impl);
     } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
         report.status = CheckStatus::CompileError;
         std::string text = e.what();
@@ -320,7 +322,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     fs::path outDir = options.outputDir / exercise.id;
     for (const CheckScene& c : scenes) {
         renderer.setScene(c.scene);
-        renderer.draw(tracer, frameFromScene(c.scene));
+        renderer.draw(program, frameFromScene(c.scene));
         Rendering got = renderer.readBack();
         ImageDiff diff = compareRenderings(got, c.reference);
         ImageSummary s;

@@ -13,7 +13,7 @@
 
 namespace rl {
 
-// The same list as the PROBE_ constants of shaders/probe.frag.
+// The same list as the PROBE_ constants of shaders/probe.glsl.
 enum class ProbeFunction : int {
     SampleOffset = 0, CameraRay, Intersect, Lambert, Irradiance, OffsetOrigin, Visibility, DGgx, G1, G,
     FSchlick, Alpha, F0, Specular, Diffuse, Brdf, FRoughness, Trace, ToneMap, Gamma, Display

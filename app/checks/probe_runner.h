@@ -1,4 +1,4 @@
-// Runs one probe (shaders/probe.frag with an exercise function selected) on
+// Runs one probe (shaders/probe.glsl with an exercise function selected) on
 // the GPU: uploads the cases' inputs as an RGBA32F texture, draws one pixel
 // per case into an RGBA32F target and reads the results back.
 #pragma once
