@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     rl::addRenderCommand(app);
     rl::addCheckCommand(app);
+    rl::addGradeCommand(app);
+    rl::addBenchCommand(app);
 #ifdef RAYLAB_WITH_GLFW
     rl::addViewCommand(app);
 #else

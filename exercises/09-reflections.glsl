@@ -19,6 +19,9 @@ vec3 F_SchlickRoughness(vec3 F0, float NoV, float roughness) {
 //         throughput *= F_SchlickRoughness(F0 of the hit's material, clamp(n.v, 1e-4, 1), its roughness)
 //         continue from offsetRayOrigin(hit.p, hit.n, hit.magnitude) in reflect(dir, hit.n)
 // Framework: closestHit, shadeHit, backgroundRadiance, sphereMaterial(hit.sphere), maxBounces.
+// Optional, once it works: at the top of each bounce after the first,
+//         if (bounceCannotChangeOutput(radiance, throughput)) stop
+// saves the bounces that can no longer change the picture (docs/performance.md).
 vec3 traceRay(vec3 origin, vec3 dir) {
     return vec3(NOT_STARTED);  // TODO
 }

@@ -42,3 +42,4 @@ vec3 shadeHit(Hit hit, vec3 v);                        // lighting.glsl: direct 
 vec3 backgroundRadiance();                             // lighting.glsl: what a missed ray sees
 Material sphereMaterial(int i);                        // scene.glsl
 int maxBounces();                                      // scene.glsl
+bool bounceCannotChangeOutput(vec3 radiance, vec3 throughput);  // trace.glsl: nothing more can show

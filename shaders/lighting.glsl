@@ -22,23 +22,50 @@ vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m) {
     return isStub(fd) ? vec3(0.0) : fd;
 }
 
+#ifdef RL_MODEL_VARIANTS
+// A scene with model variants: modelBRDF() (model_variants.glsl) in place of
+// 08's cookTorranceBRDF(); its conductor Fresnel needs the sphere's edge tint.
+vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
+    if (cookTorranceReady()) return modelBRDF(n, v, l, m, edgeTint);
+    return surfaceBRDF(n, v, l, m);  // Lambert alone until 08 is started
+}
+#endif
+
 // Exercise 04's visibility, used once both of its functions are started
 // (lightVisibility starts its ray at offsetRayOrigin). 1.0 until then.
 float shadowVisibility(Hit hit, vec3 lightPosition) {
     if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), 1.0))) return 1.0;
+#ifdef RL_SINGLE_SPHERE
+    // Specialised to a scene of one sphere, which is convex: seen from outside
+    // it shadows nothing; seen from inside (n faces the centre) it hides every
+    // light outside it and none inside. Exact, and no shadow ray at all.
+    vec3 toLight = lightPosition - sphereCenter(0);
+    bool inside = dot(hit.p - sphereCenter(0), hit.n) < 0.0;
+    return inside && dot(toLight, toLight) > sphereRadius(0) * sphereRadius(0) ? 0.0 : 1.0;
+#endif
     float visible = lightVisibility(hit, lightPosition);
     return isStub(visible) ? 1.0 : visible;
 }
 
+// Exercise 03's irradiance, decided on constant inputs (the compiler folds
+// it): no light pays for a NOT_STARTED test.
+bool irradianceStarted() {
+    return !isStub(pointLightIrradiance(vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)));
+}
+
 vec3 directLight(Hit hit, vec3 v, Material m) {
     vec3 radiance = vec3(0.0);
+    if (lightCount() > 0 && !irradianceStarted()) return radiance;  // 03 not started: no direct light
     for (int i = 0; i < lightCount(); ++i) {
         vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
-        if (isStub(E)) return vec3(0.0);          // 03 not started: no direct light
         if (E == vec3(0.0)) continue;            // facing away, or light at p: no shadow ray needed
         if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
         vec3 l = normalize(lightPosition(i) - hit.p);
+#ifdef RL_MODEL_VARIANTS
+        radiance += surfaceBRDF(hit.n, v, l, m, sphereEdgeTint(hit.sphere)) * E;
+#else
         radiance += surfaceBRDF(hit.n, v, l, m) * E;
+#endif
     }
     return radiance;
 }

@@ -7,6 +7,9 @@
 #include "declarations.glsl"
 #include "intersect_scene.glsl"
 #include "exercises.glsl"
+#ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)
+#include "model_variants.glsl"
+#endif
 #include "lighting.glsl"
 #include "trace.glsl"
 #include "camera.glsl"

@@ -56,7 +56,11 @@ Material sphereMaterial(int i) {
     Material m;
     m.albedo = u_sphereSurface[i].rgb;
     m.roughness = u_sphereSurface[i].a;
+#ifdef RL_NO_METALS
+    m.metallic = 0.0;  // specialised to a scene without metals: F0 = 0.04, the metal terms fold away
+#else
     m.metallic = u_sphereExtra[i].x;
+#endif
     m.ao = u_sphereExtra[i].y;
     return m;
 }

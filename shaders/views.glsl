@@ -6,6 +6,7 @@
 uniform int u_view;        // one of the VIEW_ constants
 uniform int u_viewBounce;  // for VIEW_BOUNCE: 0 = primary hit, 1 = first reflection, ...
 
+// A scene with model variants shows its own D, G, F and lobes (model_variants.glsl).
 const int VIEW_FINAL = 0;     // the picture
 const int VIEW_D = 1;         // GGX D, shown as D / (1 + D)
 const int VIEW_G = 2;         // Smith G
@@ -32,7 +33,14 @@ vec3 teachingView(vec3 origin, vec3 dir) {
             if (isStub(E) || E == vec3(0.0)) continue;
             if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
             vec3 l = normalize(lightPosition(i) - hit.p);
+#ifdef RL_MODEL_VARIANTS  // the lobes of the scene's model (model_variants.glsl), once 08 is started
+            vec3 edgeTint = sphereEdgeTint(hit.sphere);
+            vec3 f = !cookTorranceReady()     ? vec3(NOT_STARTED)
+                     : (u_view == VIEW_DIFFUSE) ? modelDiffuseBRDF(hit.n, v, l, m, edgeTint)
+                                                : modelSpecularBRDF(hit.n, v, l, m, edgeTint);
+#else
             vec3 f = (u_view == VIEW_DIFFUSE) ? diffuseBRDF(hit.n, v, l, m) : specularBRDF(hit.n, v, l, m);
+#endif
             if (!isStub(f)) sum += f * E;
         }
         return sum;
@@ -47,15 +55,27 @@ vec3 teachingView(vec3 origin, vec3 dir) {
         return vec3(shadowVisibility(hit, lightPosition(0)));
     }
     if (u_view == VIEW_D) {
+#ifdef RL_MODEL_VARIANTS
+        float D = modelD(hit.n, h, ggxAlpha(m.roughness));  // the scene's D (GGX under Blinn-Phong)
+#else
         float D = D_GGX(hit.n, h, ggxAlpha(m.roughness));
+#endif
         return vec3(isStub(D) ? 0.0 : D / (1.0 + D));
     }
     if (u_view == VIEW_G) {
+#ifdef RL_MODEL_VARIANTS
+        float G = modelG(NoV, NoL, m.roughness);
+#else
         float G = G_SchlickGGX(NoV, NoL, m.roughness);
+#endif
         return vec3(isStub(G) ? 0.0 : G);
     }
     if (u_view == VIEW_F) {
+#ifdef RL_MODEL_VARIANTS
+        vec3 F = modelF(baseReflectance(m), sphereEdgeTint(hit.sphere), dot(v, h));
+#else
         vec3 F = F_Schlick(baseReflectance(m), dot(v, h));
+#endif
         return isStub(F) ? vec3(0.0) : F;
     }
     return vec3(0.0);

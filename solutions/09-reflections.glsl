@@ -17,6 +17,7 @@ vec3 traceRay(vec3 origin, vec3 dir) {
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
     for (int bounce = 0; bounce <= maxBounces(); ++bounce) {
+        if (bounce > 0 && bounceCannotChangeOutput(radiance, throughput)) break;  // optional: saves time
         Hit hit = closestHit(origin, dir);
         if (hit.t == NO_HIT) {
             radiance += throughput * backgroundRadiance();

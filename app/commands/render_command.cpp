@@ -71,7 +71,10 @@ void runRender(const RenderOptions& o) {
         if (!std::filesystem::is_directory(impl.dir))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
-        ShaderProgram program = buildRayTracer(impl, shaderDefinesFor(scene, !o.generic));
+        ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
+        if (!o.generic && (view == View::Final || view == View::Bounce))
+            for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+        ShaderProgram program = buildRayTracer(impl, defines);
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;
         frame.viewBounce = bounce;

@@ -1,4 +1,5 @@
-// raylab view [SCENE] [--impl DIR] [--compare DIR] [--size WxH] [--view NAME]
+// raylab view [SCENE] [--impl DIR] [--compare DIR] [--compare-model blinn-phong|pbr]
+//             [--size WxH] [--view NAME]
 //             [--frames N [--screenshot out.png]] [--script FILE] [--stats]
 //             [--fullscreen] [--no-panel] [--ui-scale S]
 // The live window (app/view/view_app.h); compiled only with RAYLAB_WITH_GLFW
@@ -10,27 +11,33 @@
 
 namespace rl {
 
-void addViewCommand(CLI::App& app) {    auto options = std::make_shared<ViewOptions>();
+void addViewCommand(CLI::App& app) {
+    auto options = std::make_shared<ViewOptions>();
     auto size = std::make_shared<std::string>();
     CLI::App* cmd = app.add_subcommand("view", "Open the live ray tracer in a window (trackball, hot reload, panel)");
     cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted");
-    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
+    cmd->add_option("--impl", options->impl,
+                    "Exercise implementations: a folder, or one exercise file such as a mutant (default: solutions/)");
     cmd->add_option("--compare", options->compare,
-                    "Second folder, shown right of a draggable divider (split-screen wipe)");
+                    "Second implementation (folder or file), shown right of a draggable divider (split-screen wipe)");
+    cmd->add_option("--compare-model", options->compareModel,
+                    "Right of the divider, the same scene with another model: blinn-phong or pbr")
+        ->check(CLI::IsMember({"blinn-phong", "pbr"}));
     cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT (default: the scene's size)");
     cmd->add_option("--view", options->view,
                     "Teaching view at start: final, d, g, f, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
-    CLI::Option* frames =
-        cmd->add_option("--frames", options->frames, "Render N frames (after the --script, if any), print timings, exit")
-            ->check(CLI::Range(1, 1000000));
+    CLI::Option* frames = cmd->add_option("--frames", options->frames,
+                                          "Render N frames (after the --script, if any), print timings, exit")
+                              ->check(CLI::Range(1, 1000000));
     cmd->add_option("--screenshot", options->screenshot, "With --frames: save the last frame's picture as PNG")
         ->needs(frames);
     cmd->add_option("--script", options->script, "Scripted input, one command a line (see docs/lecture.md)");
     cmd->add_flag("--stats", options->stats, "Print the median frame time at exit");
     cmd->add_flag("--fullscreen", options->fullscreen, "Start fullscreen");
     cmd->add_flag("--no-panel", options->hidePanel, "Start with the panel hidden (Tab shows it)");
-    cmd->add_option("--ui-scale", options->uiScale, "Panel and text scale, e.g. 2 for a projector (default: the screen's)")
+    cmd->add_option("--ui-scale", options->uiScale,
+                    "Panel and text scale, e.g. 2 for a projector (default: the screen's)")
         ->check(CLI::Range(0.5, 4.0));
     cmd->callback([options, size] {
         if (!size->empty()) {

@@ -14,11 +14,11 @@ struct GLFWwindow;
 namespace rl {
 
 struct WindowSettings {
-    int width = 640;            // initial size in screen coordinates (HiDPI: the framebuffer is larger)
+    int width = 640;  // initial size in screen coordinates (HiDPI: the framebuffer is larger)
     int height = 480;
     std::string title = "raylab";
-    bool visible = true;        // false: hidden window (never used for headless work, see context.h)
-    bool vsync = true;          // false: swap as fast as the driver allows (timing runs)
+    bool visible = true;  // false: hidden window (never used for headless work, see context.h)
+    bool vsync = true;    // false: swap as fast as the driver allows (timing runs)
 };
 
 class GlfwWindowContext final : public GlContext {

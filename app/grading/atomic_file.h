@@ -16,4 +16,22 @@ void writeFileAtomic(const std::filesystem::path& path, const std::string& conte
 // Reads a whole file; throws rl::Error "path: cannot read (reason)".
 std::string readWholeFile(const std::filesystem::path& path);
 
+// Holds an exclusive lock on FOLDER/.lock while it lives, so that two runs
+// never write one output folder at once (the second one stops with
+// rl::Error "FOLDER: another raylab grade is writing here"). Forked workers
+// share it; it goes with the process, however that ends.
+class FolderLock {
+public:
+    explicit FolderLock(const std::filesystem::path& folder);
+    ~FolderLock();
+    FolderLock(const FolderLock&) = delete;
+    FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// Whether either path is the other or lies inside it (after resolving links).
+bool pathsOverlap(const std::filesystem::path& a, const std::filesystem::path& b);
+
 }  // namespace rl

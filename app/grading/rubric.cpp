@@ -71,10 +71,12 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
     r.imageWeight = number(credit, "image_weight", r.imageWeight, where);
     r.failedSceneMax = number(credit, "failed_scene_max", r.failedSceneMax, where);
     r.zeroCreditMeanLsb = number(credit, "zero_credit_mean_lsb", r.zeroCreditMeanLsb, where);
+    r.failMax = number(credit, "fail_max", r.failMax, where);
     if (std::fabs(r.probeWeight + r.imageWeight - 1.0) > 1e-9)
         throw Error(where + ": probe_weight + image_weight must be 1");
     if (r.failedSceneMax > 1) throw Error(where + ": failed_scene_max must be at most 1");
     if (r.zeroCreditMeanLsb <= 0) throw Error(where + ": zero_credit_mean_lsb must be > 0");
+    if (r.failMax > 1) throw Error(where + ": fail_max must be at most 1");
 
     if (!j.contains("exercises") || !j["exercises"].is_array() || j["exercises"].empty())
         throw Error(shown + ": \"exercises\" must be a non-empty array of {\"id\", \"weight\"}");
@@ -112,7 +114,8 @@ json toJson(const Rubric& r) {
              {{"probe_weight", r.probeWeight},
               {"image_weight", r.imageWeight},
               {"failed_scene_max", r.failedSceneMax},
-              {"zero_credit_mean_lsb", r.zeroCreditMeanLsb}}},
+              {"zero_credit_mean_lsb", r.zeroCreditMeanLsb},
+              {"fail_max", r.failMax}}},
             {"exercises", exercises}};
 }
 
@@ -131,9 +134,9 @@ long exerciseHundredths(const Rubric& r, const RubricExercise& e, const Exercise
     if (!report.images.empty()) imageScore /= double(report.images.size());
     double credit = report.probes.empty() ? imageScore
                                           : r.probeWeight * report.probeFraction() + r.imageWeight * imageScore;
-    // A FAIL never rounds up to full marks.
+    // A FAIL never rounds up to full marks, whatever fail_max says.
     long full = toHundredths(e.weight);
-    return std::max(0L, std::min(toHundredths(e.weight * std::clamp(credit, 0.0, 1.0)), full - 1));
+    return std::max(0L, std::min(toHundredths(e.weight * std::clamp(credit, 0.0, r.failMax)), full - 1));
 }
 
 StudentScore scoreStudent(const Rubric& r, const StudentGrade& g) {

@@ -5,7 +5,7 @@
 //
 //   PASS                                          -> weight
 //   NOT STARTED, COMPILE ERROR, TIMEOUT, CRASH, REFUSED -> 0
-//   FAIL -> weight * (probe_weight * probeFraction + image_weight * imageScore)
+//   FAIL -> weight * min(fail_max, probe_weight * probeFraction + image_weight * imageScore)
 //   imageScore = mean over check scenes of
 //       1                                          the scene within budget
 //       0                                          NaN or Inf in the render
@@ -38,6 +38,7 @@ struct Rubric {
     double imageWeight = 0.5;          // share from the check images (probe + image = 1)
     double failedSceneMax = 0.5;       // most credit for a check scene over budget
     double zeroCreditMeanLsb = 8;      // mean error (in 1/255) at which a failed scene earns nothing
+    double failMax = 0.75;             // most credit for a FAIL: a mistake in a rare case is still a mistake
     std::vector<RubricExercise> exercises;  // graded and listed in this order; others are not checked
 
     long maxHundredths() const;

@@ -27,7 +27,7 @@ json toJson(const StudentGrade& g) {
         r["refused"] = e.refused;
         exercises.push_back(r);
     }
-    return {{"id", g.id},           {"source", g.source},   {"notes", g.notes},
+    return {{"id", g.id},         {"source", g.source},     {"fingerprint", g.fingerprint}, {"notes", g.notes},
             {"seconds", g.seconds}, {"complete", g.complete}, {"exercises", exercises}};
 }
 
@@ -35,6 +35,7 @@ StudentGrade studentGradeFromJson(const json& j) {
     StudentGrade g;
     g.id = j.at("id").get<std::string>();
     g.source = j.value("source", "");
+    g.fingerprint = j.value("fingerprint", "");
     g.notes = j.value("notes", std::vector<std::string>{});
     g.seconds = j.value("seconds", 0.0);
     g.complete = j.value("complete", false);

@@ -28,6 +28,7 @@ std::string gradeStatus(const ExerciseGrade& grade);
 struct StudentGrade {
     std::string id;                        // the entry's name in SUBMISSIONS ("alice" for alice.zip)
     std::string source;                    // that entry ("alice.zip")
+    std::string fingerprint;               // submissionFingerprint() of what was graded
     std::vector<std::string> notes;        // about the whole submission: ignored files, nesting, refusals
     std::vector<ExerciseGrade> exercises;  // in rubric order
     double seconds = 0;                    // wall-clock time grading took

@@ -1,6 +1,7 @@
 #include "render/scene_uniforms.h"
 
 #include "core/error.h"
+#include "render/bounce_cutoff.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -119,6 +120,8 @@ void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSet
     gl::Uniform1f(p.uniform("u_gamma"), r.srgb ? 0.0f : float(r.gamma));
     gl::Uniform1i(p.uniform("u_view"), int(frame.view));
     gl::Uniform1i(p.uniform("u_viewBounce"), frame.viewBounce);
+    glm::vec4 cutoff = bounceCutoffUniform(scene);  // read only by specialised shaders (trace.glsl)
+    gl::Uniform4f(p.uniform("u_bounceCutoff"), cutoff.x, cutoff.y, cutoff.z, cutoff.w);
 }
 
 }  // namespace rl

@@ -20,4 +20,12 @@ ShaderDefines specialisationDefines(const Scene& scene);
 // Both together: what `raylab render` and the live view compile with.
 ShaderDefines shaderDefinesFor(const Scene& scene, bool specialise);
 
+// For a frame that shows the picture or a bounce view, known before the
+// program is built: the teaching term views (d, g, f, ...) left out, and a
+// traceRay whose helpers are started trusted without a per-ray fallback
+// (app/render/specialisation.cpp). `raylab render` adds it to a specialised
+// program; the live view, which switches views at a key press and shows
+// half-written exercises, does not.
+ShaderDefines pictureOnlyDefines();
+
 }  // namespace rl

@@ -1,7 +1,52 @@
+// A shader specialised to a scene's structure: what the scene has (how many
+// spheres and lights, the bounce limit, whether any sphere is a metal) is
+// compiled in as constants, and code for what it lacks is left out. Values
+// (positions, colours, roughness, intensities, exposure, the camera) stay
+// uniforms, so editing them never recompiles: two scenes get different
+// defines only when their structure differs. docs/performance.md measures it.
+//
+// Why constants pay on llvmpipe: a loop over a uniform count reads the
+// uniform block with a per-lane gather in every iteration, and a constant
+// count unrolls into direct loads; a feature left out costs nothing, while
+// a feature behind a uniform branch costs its full price on a CPU rasteriser,
+// which runs both sides of every branch under a mask.
 #include "render/shader_config.h"
 
 namespace rl {
 
-ShaderDefines specialisationDefines(const Scene&) { return {}; }  // not yet specialised
+ShaderDefines specialisationDefines(const Scene& scene) {
+    ShaderDefines d;
+    int spheres = int(scene.spheres.size());
+    int lights = int(scene.lights.size());
+    int bounces = scene.render.maxBounces;
+    d["RL_SPHERE_COUNT"] = std::to_string(spheres);  // scene.glsl: loops unrolled, uniform block read directly
+    d["RL_LIGHT_COUNT"] = std::to_string(lights);
+    d["RL_MAX_BOUNCES"] = std::to_string(bounces);   // 0: the bounce code of traceRay folds away
+
+    bool metals = false;
+    for (const Sphere& s : scene.spheres) metals = metals || s.material.metallic != 0.0;
+    if (!metals) d["RL_NO_METALS"] = "1";  // metallic = 0: F0 = 0.04, no metal terms
+
+    // One sphere is convex: it can shadow only points seen from inside it,
+    // which needs no shadow ray (lighting.glsl). No lights: no shadow rays anyway.
+    if (spheres == 1) d["RL_SINGLE_SPHERE"] = "1";
+
+    // Stopping the bounces early (trace.glsl) needs a bound on what a path can
+    // bring back, derived for the reference model only (render/bounce_cutoff.h).
+    // Its test costs about 5% of a lecture-scene frame (two tests per pixel,
+    // llvmpipe runs them for every pixel) and, with at most two bounces, can
+    // rarely save one: after one or two hits the throughput is still at least
+    // F0 = 0.04, or its square. So it is compiled in from three bounces on.
+    if (bounces >= 3 && spheres > 0 && scene.model.isReference()) d["RL_BOUNCE_CUTOFF"] = "1";
+
+    return d;
+}
+
+ShaderDefines pictureOnlyDefines() {
+    // main.frag: no teaching term views; trace.glsl: no per-ray fallback to
+    // the first hit behind a started traceRay. On llvmpipe, which runs both
+    // sides of every branch, each costs about a bounce per pixel even unused.
+    return {{"RL_PICTURE_ONLY", "1"}};
+}
 
 }  // namespace rl

@@ -18,8 +18,8 @@ public:
     GpuTimer& operator=(const GpuTimer&) = delete;
 
     struct Result {
-        double ms = 0;      // GPU time of the frame
-        double tag = 0;     // what begin() was given, e.g. the pixels rendered
+        double ms = 0;   // GPU time of the frame
+        double tag = 0;  // what begin() was given, e.g. the pixels rendered
     };
 
     // Around the GL work of one frame. begin() returns false (and end() does
@@ -35,8 +35,8 @@ private:
     static constexpr int kQueries = 4;
     std::array<GLuint, kQueries> queries_{};
     std::array<double, kQueries> tags_{};
-    int head_ = 0;      // next slot to begin
-    int pending_ = 0;   // ended, not yet read (the oldest is head_ - pending_)
+    int head_ = 0;     // next slot to begin
+    int pending_ = 0;  // ended, not yet read (the oldest is head_ - pending_)
     bool running_ = false;
 };
 

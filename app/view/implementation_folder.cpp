@@ -8,9 +8,25 @@ namespace fs = std::filesystem;
 
 namespace rl {
 
-Implementation implementationFromFolder(const fs::path& dir, const std::string& option) {
+namespace {
+
+// "05-ggx--missing-pi.glsl" and "05-ggx.glsl" -> the exercise 05-ggx.
+Implementation fromSingleFile(const fs::path& file, const std::string& option) {
+    const std::string stem = file.stem().string();
+    const std::string id = stem.substr(0, stem.find("--"));
+    for (const ExerciseInfo& e : allExercises())
+        if (e.id == id && file.extension() == ".glsl") return Implementation{solutionsDir(), {{e.file(), file}}};
+    throw Error(option + ": " + file.string() + " is not named after an exercise (expected e.g. 05-ggx.glsl or " +
+                "05-ggx--what-is-wrong.glsl)");
+}
+
+}  // namespace
+
+Implementation implementationFrom(const fs::path& path, const std::string& option) {
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw Error(option + ": " + dir.string() + " is not a directory");
+    if (fs::is_regular_file(path, ec)) return fromSingleFile(path, option);
+    if (!fs::is_directory(path, ec)) throw Error(option + ": " + path.string() + " does not exist");
+    const fs::path& dir = path;
     Implementation impl{dir, {}};
     int present = 0;
     for (const ExerciseInfo& e : allExercises())
@@ -32,9 +48,14 @@ std::string implementationLabel(const Implementation& impl) {
         return clean.filename().string();
     };
     if (impl.overrides.empty()) return shortName(impl.dir);
-    fs::path folder = impl.overrides.begin()->second.parent_path().lexically_normal();
-    std::string parent = folder.has_parent_path() ? shortName(folder.parent_path()) + "/" : "";
-    return parent + shortName(folder) + " (+ " + shortName(impl.dir) + ")";
+    const fs::path first = impl.overrides.begin()->second.lexically_normal();
+    const fs::path folder = first.parent_path();
+    // One file: name the file (a mutant's name says what is wrong); several: the folder.
+    std::string shown =
+        impl.overrides.size() == 1
+            ? shortName(folder) + "/" + first.filename().string()
+            : (folder.has_parent_path() ? shortName(folder.parent_path()) + "/" : "") + shortName(folder);
+    return shown + " (+ " + shortName(impl.dir) + ")";
 }
 
 }  // namespace rl

@@ -1,8 +1,12 @@
-// What `--impl DIR` and `--compare DIR` name: a folder with exercise files.
-// A folder with all ten (exercises/, solutions/, a student's copy) is used
-// as it is; a folder with only some of them (a mutant, one exercise a
-// student is working on) takes the others from solutions/, the way a check
-// puts one student file beside the solutions.
+// What `--impl` and `--compare` name: exercise files.
+//  * A folder with all ten (exercises/, solutions/, a student's copy) is used
+//    as it is.
+//  * A folder with only some of them (one exercise a student is working on)
+//    takes the others from solutions/, the way a check puts one student file
+//    beside the solutions.
+//  * A single file named EXERCISE--WHAT.glsl, as tests/mutants/ names them
+//    ("05-ggx--missing-pi.glsl"), or EXERCISE.glsl, replaces that exercise of
+//    solutions/.
 #pragma once
 
 #include "shader/shader_library.h"
@@ -12,12 +16,12 @@
 
 namespace rl {
 
-// Throws rl::Error "--impl: DIR is not a directory" / "... has none of the
-// exercise files (01-camera.glsl ... 10-display.glsl)". `option` names the
-// flag in messages.
-Implementation implementationFromFolder(const std::filesystem::path& dir, const std::string& option);
+// Throws rl::Error "--impl: PATH does not exist" / "... has none of the
+// exercise files (01-camera.glsl ... 10-display.glsl)" / "... is not named
+// after an exercise". `option` names the flag in messages.
+Implementation implementationFrom(const std::filesystem::path& path, const std::string& option);
 
-// A short name for labels on screen: "exercises", "mutants/ggx-no-square (+ solutions)".
+// A short name for labels on screen: "exercises", "mutants/05-ggx--missing-pi.glsl (+ solutions)".
 std::string implementationLabel(const Implementation& impl);
 
 }  // namespace rl

@@ -12,6 +12,8 @@ namespace {
 // Frames a drag takes when the script does not say: enough to pass through
 // the low-resolution "moving" state, as a hand-made drag does.
 constexpr int kDefaultDragSteps = 4;
+// Counts (frames, steps, sizes) above a million are typos, not intentions.
+constexpr double kMaxCount = 1e6;
 
 class LineReader {
 public:
@@ -30,7 +32,8 @@ public:
     }
     int integer(const char* what, int min) {
         double v = number(what);
-        if (v != std::floor(v) || v < min || v > 1e6) fail(std::string(what) + " must be a whole number >= " + std::to_string(min));
+        if (v != std::floor(v) || v < min || v > kMaxCount)
+            fail(std::string(what) + " must be a whole number >= " + std::to_string(min));
         return int(v);
     }
     bool atEnd() {
@@ -81,10 +84,14 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
             c.count = kDefaultDragSteps;
             if (!r.atEnd()) {
                 std::string button = r.word();
-                if (button == "left") c.button = 0;
-                else if (button == "right") c.button = 1;
-                else if (button == "middle") c.button = 2;
-                else r.fail("drag button must be left, right or middle, not '" + button + "'");
+                if (button == "left")
+                    c.button = 0;
+                else if (button == "right")
+                    c.button = 1;
+                else if (button == "middle")
+                    c.button = 2;
+                else
+                    r.fail("drag button must be left, right or middle, not '" + button + "'");
             }
             if (!r.atEnd()) c.count = r.integer("a step count", 1);
         } else if (verb == "scroll") {
@@ -117,8 +124,9 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
         } else if (verb == "quit") {
             c.kind = K::Quit;
         } else {
-            r.fail("unknown command '" + verb +
-                   "' (expected wait, sleep, wait-reload, drag, scroll, key, view, divider, resize, screenshot or quit)");
+            r.fail(
+                "unknown command '" + verb +
+                "' (expected wait, sleep, wait-reload, drag, scroll, key, view, divider, resize, screenshot or quit)");
         }
         r.end();
         out.push_back(c);

@@ -6,8 +6,9 @@
 //   # comment
 //   wait 3                      render 3 frames
 //   sleep 0.5                   keep rendering for 0.5 s
-//   wait-reload 5               render until the next hot reload (shader or scene,
-//                               good or bad) is applied; an error after 5 s
+//   wait-reload 5               render until a hot reload (shader or scene, good or
+//                               bad) is applied that was not yet applied when the
+//                               previous command finished; an error after 5 s
 //   drag 80 60 120 60 [left|right|middle] [STEPS]
 //                               press at (80,60), move to (120,60) over STEPS
 //                               frames (default 4), release; framebuffer pixels,
@@ -33,14 +34,14 @@ namespace rl {
 struct ScriptCommand {
     enum class Kind { Wait, Sleep, WaitReload, Drag, Scroll, Key, View, Divider, Resize, Screenshot, Quit };
     Kind kind = Kind::Wait;
-    int line = 0;               // in the script file, for messages
-    int count = 0;              // Wait: frames; Drag: steps; Scroll: steps
-    double seconds = 0;         // Sleep, WaitReload
-    double value = 0;           // Divider
+    int line = 0;                   // in the script file, for messages
+    int count = 0;                  // Wait: frames; Drag: steps; Scroll: steps
+    double seconds = 0;             // Sleep, WaitReload
+    double value = 0;               // Divider
     glm::dvec2 from{0.0}, to{0.0};  // Drag; Resize uses `to` as the size
-    int button = 0;             // Drag: 0 left, 1 right, 2 middle (GLFW's numbering)
-    std::string text;           // Key: the key name; View: the view name; Screenshot: the file
-    bool withUi = false;        // Screenshot
+    int button = 0;                 // Drag: 0 left, 1 right, 2 middle (GLFW's numbering)
+    std::string text;               // Key: the key name; View: the view name; Screenshot: the file
+    bool withUi = false;            // Screenshot
 };
 
 // Throws rl::Error "script.txt:4: drag needs X0 Y0 X1 Y1" and the like.

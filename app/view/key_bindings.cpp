@@ -12,7 +12,7 @@ namespace rl {
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> table = {
         {GLFW_KEY_H, false, Action::ToggleHelp, 0, "H", "show / hide this help"},
-        {GLFW_KEY_TAB, false, Action::TogglePanel, 0, "Tab", "show / hide the panel (a clean picture for the projector)"},
+        {GLFW_KEY_TAB, false, Action::TogglePanel, 0, "Tab", "show / hide the panel (a clean picture to project)"},
         {GLFW_KEY_R, false, Action::ResetCamera, 0, "R", "reset the camera to the scene file's"},
         {GLFW_KEY_0, false, Action::SetView, 0, "0", "view: final picture"},
         {GLFW_KEY_1, false, Action::SetView, 1, "1", "view: D, GGX normal distribution (key light)"},
@@ -32,7 +32,7 @@ const std::vector<KeyBinding>& keyBindings() {
         {GLFW_KEY_B, false, Action::ToggleReflections, 0, "B", "reflections off / on (max bounces 0 / the scene's)"},
         {GLFW_KEY_PAGE_UP, false, Action::PreviousPreset, 0, "PageUp", "previous preset scene"},
         {GLFW_KEY_PAGE_DOWN, false, Action::NextPreset, 0, "PageDown", "next preset scene"},
-        {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (with --compare)"},
+        {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (--compare, --compare-model)"},
         {GLFW_KEY_LEFT, false, Action::DividerLeft, 0, "Left", "move the wipe divider left"},
         {GLFW_KEY_RIGHT, false, Action::DividerRight, 0, "Right", "move the wipe divider right"},
         {GLFW_KEY_F11, false, Action::ToggleFullscreen, 0, "F11", "fullscreen on / off"},
@@ -53,7 +53,7 @@ const std::vector<MouseBinding>& mouseBindings() {
         {"left drag", "rotate about the target (arcball)"},
         {"right / middle drag", "pan"},
         {"wheel", "zoom towards / away from the target"},
-        {"left drag on the divider", "move the wipe (with --compare)"},
+        {"left drag on the divider", "move the wipe (--compare, --compare-model)"},
     };
     return table;
 }

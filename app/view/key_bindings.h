@@ -13,8 +13,8 @@ enum class Action {
     ToggleHelp,
     TogglePanel,
     ResetCamera,
-    SetView,            // argument: the view number 0..9
-    BounceDown,         // the k of view 9 (bounce k)
+    SetView,     // argument: the view number 0..9
+    BounceDown,  // the k of view 9 (bounce k)
     BounceUp,
     ExposureDown,
     ExposureUp,
@@ -22,26 +22,26 @@ enum class Action {
     ToggleReflections,  // max bounces 0 <-> the scene's
     PreviousPreset,
     NextPreset,
-    ToggleCompare,      // the wipe, when --compare is given
+    ToggleCompare,  // the wipe, when --compare is given
     DividerLeft,
     DividerRight,
     ToggleFullscreen,
-    Screenshot,         // the picture only
-    ScreenshotWithUi,   // the whole window, panel included
+    Screenshot,        // the picture only
+    ScreenshotWithUi,  // the whole window, panel included
     UiScaleDown,
     UiScaleUp,
     SaveScene,
-    Escape,             // leave fullscreen, else close the help
+    Escape,  // leave fullscreen, else close the help
     Quit,
 };
 
 struct KeyBinding {
-    int key;            // GLFW_KEY_...
-    bool ctrl;          // needs Ctrl (Cmd is not used: one binding per platform)
+    int key;    // GLFW_KEY_...
+    bool ctrl;  // needs Ctrl (Cmd is not used: one binding per platform)
     Action action;
-    int argument;       // for SetView
-    const char* keys;   // as shown to the user, "1".."9", "Ctrl+S"
-    const char* what;   // one line for the help overlay; empty: listed under another key
+    int argument;      // for SetView
+    const char* keys;  // as shown to the user, "1".."9", "Ctrl+S"
+    const char* what;  // one line for the help overlay; empty: listed under another key
 };
 
 struct MouseBinding {

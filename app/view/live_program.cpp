@@ -22,17 +22,24 @@ void addGlslFiles(const fs::path& dir, std::vector<fs::path>& out) {
 
 }  // namespace
 
-LiveProgram::LiveProgram(Implementation impl, std::string label) : impl_(std::move(impl)), label_(std::move(label)) {
+LiveProgram::LiveProgram(Implementation impl, std::string label, ShaderDefines defines)
+    : impl_(std::move(impl)), label_(std::move(label)), defines_(std::move(defines)) {
     addGlslFiles(shadersDir(), files_);
     addGlslFiles(impl_.dir, files_);
     for (const auto& [name, file] : impl_.overrides) files_.push_back(file);
+}
+
+bool LiveProgram::setDefines(const ShaderDefines& defines) {
+    if (defines == defines_) return false;
+    defines_ = defines;
+    return true;
 }
 
 bool LiveProgram::rebuild() {
     const auto start = std::chrono::steady_clock::now();
     try {
         AssembledSource vertex = assembleShader("fullscreen.vert", impl_, {});
-        AssembledSource fragment = assembleShader("main.frag", impl_, {});
+        AssembledSource fragment = assembleShader("main.frag", impl_, defines_);
         std::vector<fs::path> files = vertex.files;
         for (const auto& f : fragment.files)
             if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);

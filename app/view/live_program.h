@@ -16,7 +16,12 @@ namespace rl {
 
 class LiveProgram {
 public:
-    LiveProgram(Implementation impl, std::string label);
+    // `defines`: the model variant's (render/shader_config.h modelDefines).
+    LiveProgram(Implementation impl, std::string label, ShaderDefines defines = {});
+
+    // Changes the defines for the next rebuild(); true when they differ from
+    // the current ones (then the caller rebuilds: a scene with another model).
+    bool setDefines(const ShaderDefines& defines);
 
     // True when a new program is in use. False: error() holds the message,
     // as rl::ShaderError formats it ("file:line: error: message\n    source line").
@@ -36,6 +41,7 @@ public:
 private:
     Implementation impl_;
     std::string label_;
+    ShaderDefines defines_;
     std::optional<ShaderProgram> program_;
     std::string error_;
     std::vector<std::filesystem::path> files_;

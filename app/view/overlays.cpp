@@ -10,6 +10,22 @@ namespace rl {
 namespace {
 // Red that stays readable on a projector: light enough on the dark box.
 const ImVec4 kErrorText(1.0f, 0.45f, 0.4f, 1.0f);
+// Distance from the window's edges (times the UI scale): clear of the edge
+// and of ImGui's own 8-pixel window padding.
+constexpr float kMargin = 10.0f;
+// Background opacity of the help and the error box: text must stay readable
+// over a bright picture; a toast is only glanced at, so more picture shows.
+constexpr float kReadableAlpha = 0.92f;
+constexpr float kToastAlpha = 0.75f;
+// The error box never covers more than 60% of the window's height: the
+// picture that is still running stays visible above it (it scrolls).
+constexpr float kMaxErrorHeight = 0.6f;
+// The help never exceeds 95% of the window (it scrolls): its edges stay visible.
+constexpr float kMaxHelpSize = 0.95f;
+// The wipe: a 2-pixel line is visible from the back of the room and hides
+// little; labels sit 6 pixels from it in a dark box of 6 pixels padding.
+constexpr float kDividerWidth = 2.0f;
+constexpr float kLabelPad = 6.0f;
 const ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                        ImGuiWindowFlags_NoNav;
@@ -18,13 +34,13 @@ const ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWind
 void drawHelpOverlay(bool& open) {
     if (!open) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowBgAlpha(0.92f);  // text over a bright picture must stay readable
-    // Never larger than the window (it scrolls instead): 95% leaves its edges visible.
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(viewport->Size.x * 0.95f, viewport->Size.y * 0.95f));
-    if (ImGui::Begin("Keys and mouse (H or Escape closes)", &open,
-                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                         ImGuiWindowFlags_NoCollapse)) {
+    ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Always, ImVec2(0.5f, 0.5f));  // centred
+    ImGui::SetNextWindowBgAlpha(kReadableAlpha);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                        ImVec2(viewport->Size.x * kMaxHelpSize, viewport->Size.y * kMaxHelpSize));
+    if (ImGui::Begin(
+            "Keys and mouse (H or Escape closes)", &open,
+            ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
         // The second column starts after the longest key or mouse input, plus two spaces.
         float column = 0;
         for (const MouseBinding& m : mouseBindings()) column = std::max(column, ImGui::CalcTextSize(m.input).x);
@@ -48,14 +64,15 @@ void drawHelpOverlay(bool& open) {
 void drawErrorOverlay(const std::vector<std::string>& errors, float uiScale) {
     if (errors.empty()) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float margin = 10.0f * uiScale;
+    const float margin = kMargin * uiScale;
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + margin, viewport->Pos.y + viewport->Size.y - margin),
-                            ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(viewport->Size.x - 2 * margin, viewport->Size.y * 0.6f));
-    ImGui::SetNextWindowBgAlpha(0.9f);
+                            ImGuiCond_Always, ImVec2(0.0f, 1.0f));  // pivot: its bottom-left corner
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                        ImVec2(viewport->Size.x - 2 * margin, viewport->Size.y * kMaxErrorHeight));
+    ImGui::SetNextWindowBgAlpha(kReadableAlpha);
     if (ImGui::Begin("##errors", nullptr, kOverlayFlags)) {
         ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-        ImGui::PushTextWrapPos(viewport->Size.x - 4 * margin);
+        ImGui::PushTextWrapPos(viewport->Size.x - 4 * margin);  // inside the box's own margin and padding
         for (const std::string& e : errors) ImGui::TextUnformatted(e.c_str());
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
@@ -67,27 +84,39 @@ void drawErrorOverlay(const std::vector<std::string>& errors, float uiScale) {
 void drawWipeOverlay(float dividerX, float windowHeight, const std::string& left, const std::string& right,
                      float uiScale) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the picture, under the panel and help
-    const float width = 2.0f * uiScale;  // visible from the back of the room, thin enough to hide little
-    draw->AddLine(ImVec2(dividerX, 0), ImVec2(dividerX, windowHeight), IM_COL32(255, 255, 255, 220), width);
-    const float pad = 6.0f * uiScale;
+    draw->AddLine(ImVec2(dividerX, 0), ImVec2(dividerX, windowHeight), IM_COL32(255, 255, 255, 220),
+                  kDividerWidth * uiScale);
+    const float pad = kLabelPad * uiScale;
     const ImVec2 leftSize = ImGui::CalcTextSize(left.c_str());
     const ImVec2 rightSize = ImGui::CalcTextSize(right.c_str());
-    const float y = 2 * pad;  // at the top, clear of the error box at the bottom
-    auto label = [&](float x, const ImVec2& size, const std::string& text) {
-        draw->AddRectFilled(ImVec2(x - pad, y - pad), ImVec2(x + size.x + pad, y + size.y + pad), IM_COL32(0, 0, 0, 170));
+    const float top = 2 * pad;  // at the top, clear of the error box at the bottom
+    const float nextRow = top + ImGui::GetFontSize() + 3 * pad;
+    auto label = [&](float x, float y, const ImVec2& size, const std::string& text) {
+        draw->AddRectFilled(ImVec2(x - pad, y - pad), ImVec2(x + size.x + pad, y + size.y + pad),
+                            IM_COL32(0, 0, 0, 170));
         draw->AddText(ImVec2(x, y), IM_COL32(255, 255, 255, 255), text.c_str());
     };
-    label(dividerX - leftSize.x - 2 * pad, leftSize, left);
-    label(dividerX + 2 * pad, rightSize, right);
+    // Beside the divider; a name too long for its side moves to the window's
+    // edge one row lower, so the two never overlap and neither leaves the window.
+    const float windowWidth = ImGui::GetMainViewport()->Size.x;
+    const float leftX = dividerX - leftSize.x - 2 * pad, rightX = dividerX + 2 * pad;
+    if (leftX >= pad)
+        label(leftX, top, leftSize, left);
+    else
+        label(pad, nextRow, leftSize, left);
+    if (rightX + rightSize.x + pad <= windowWidth)
+        label(rightX, top, rightSize, right);
+    else
+        label(std::max(pad, windowWidth - rightSize.x - pad), nextRow, rightSize, right);
 }
 
 void drawToast(const std::string& message, float uiScale) {
     if (message.empty()) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    const float margin = 10.0f * uiScale;
+    const float margin = kMargin * uiScale;
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - margin, viewport->Pos.y + margin),
-                            ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.75f);
+                            ImGuiCond_Always, ImVec2(1.0f, 0.0f));  // pivot: its top-right corner
+    ImGui::SetNextWindowBgAlpha(kToastAlpha);
     if (ImGui::Begin("##toast", nullptr, kOverlayFlags)) ImGui::TextUnformatted(message.c_str());
     ImGui::End();
 }

@@ -1,5 +1,6 @@
 #include "view/panel.h"
 
+#include "view/imgui_layer.h"
 #include "view/key_bindings.h"
 #include "view/presets.h"
 
@@ -11,12 +12,10 @@
 namespace rl {
 namespace {
 
-// Slider ranges. Exposure spans 1/64 .. 64 (six stops either way) on a
+// Slider ranges. Exposure (kMinExposure..kMaxExposure, view_state.h) is on a
 // logarithmic slider, where equal distances are equal ratios, as in a camera.
-constexpr float kMinExposure = 1.0f / 64.0f;
-constexpr float kMaxExposure = 64.0f;
-constexpr float kMinGamma = 1.0f;  // 1 = no encoding ("gamma off"); below 1 would darken, not a display gamma
-constexpr float kMaxGamma = 3.0f;  // beyond any real display's 2.2-2.6
+constexpr float kMinGamma = 1.0f;         // 1 = no encoding ("gamma off"); below 1 would darken, not a display gamma
+constexpr float kMaxGamma = 3.0f;         // beyond any real display's 2.2-2.6
 constexpr float kMaxIntensity = 1000.0f;  // W-like units: the lecture scene's key light is 40
 constexpr int kSppChoices[] = {1, 4, 9, 16};  // square numbers, as the spec requires
 
@@ -92,7 +91,7 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out) {
 void displaySection(Scene& scene, ViewRequests& out) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     RenderSettings& r = scene.render;
-    out.sceneEdited |= editDouble("exposure", r.exposure, kMinExposure, kMaxExposure, "%.3f",
+    out.sceneEdited |= editDouble("exposure", r.exposure, float(kMinExposure), float(kMaxExposure), "%.3f",
                                   ImGuiSliderFlags_Logarithmic);
     const char* toneMaps[] = {"reinhard", "exponential", "none"};  // the order of rl::ToneMap
     int op = int(r.tonemap);
@@ -119,7 +118,7 @@ void renderSection(Scene& scene, ViewRequests& out) {
         r.spp = kSppChoices[sppIndex];
         out.sceneEdited = true;
     }
-    out.sceneEdited |= editDouble("ambient", r.ambient, 0.0f, 1.0f);
+    out.sceneEdited |= editDouble("ambient", r.ambient, 0.0f, 1.0f);  // a fraction of the albedo
     out.sceneEdited |= editColour("background", r.background);
 }
 
@@ -131,7 +130,7 @@ void materialsSection(Scene& scene, ViewRequests& out) {
         ImVec4 swatch(float(m.albedo.x), float(m.albedo.y), float(m.albedo.z), 1.0f);
         ImGui::ColorButton("##swatch", swatch, ImGuiColorEditFlags_NoTooltip);
         ImGui::SameLine();
-        if (ImGui::TreeNode("sphere", "sphere %zu  (roughness %.2f, metallic %.2f)", i + 1, m.roughness, m.metallic)) {
+        if (ImGui::TreeNode("sphere", "sphere %zu  rough %.2f  metal %.2f", i + 1, m.roughness, m.metallic)) {
             out.sceneEdited |= editColour("albedo", m.albedo);
             out.sceneEdited |= editDouble("roughness", m.roughness, 0.0f, 1.0f);
             out.sceneEdited |= editDouble("metallic", m.metallic, 0.0f, 1.0f);
@@ -150,8 +149,8 @@ void lightsSection(Scene& scene, ViewRequests& out) {
         if (ImGui::TreeNode("light", "light %zu%s", i + 1, i == 0 ? "  (key light of the term views)" : "")) {
             out.sceneEdited |= editPosition("position", l.position);
             out.sceneEdited |= editColour("colour", l.color);
-            out.sceneEdited |= editDouble("intensity", l.intensity, 0.0f, kMaxIntensity, "%.1f",
-                                          ImGuiSliderFlags_Logarithmic);
+            out.sceneEdited |=
+                editDouble("intensity", l.intensity, 0.0f, kMaxIntensity, "%.1f", ImGuiSliderFlags_Logarithmic);
             ImGui::TreePop();
         }
         ImGui::PopID();
@@ -203,7 +202,8 @@ void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
 void interfaceSection(const PanelInfo& info, ViewRequests& out) {
     if (!ImGui::CollapsingHeader("Interface")) return;
     float scale = info.uiScale;
-    if (ImGui::SliderFloat("UI scale (- / +)", &scale, 0.5f, 4.0f, "%.2f")) out.uiScale = scale;
+    if (ImGui::SliderFloat("UI scale (- / +)", &scale, ImGuiLayer::kMinScale, ImGuiLayer::kMaxScale, "%.2f"))
+        out.uiScale = scale;
     if (ImGui::Button("Screenshot (P)")) out.screenshot = true;
     ImGui::SameLine();
     if (ImGui::Button("with panel (F12)")) out.screenshotWithUi = true;
@@ -216,11 +216,13 @@ void interfaceSection(const PanelInfo& info, ViewRequests& out) {
 ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info) {
     ViewRequests out;
     if (!state.showPanel) return out;
-    // 10 px from the corner, a third of the window high at first: the
-    // picture stays visible; the user can move and resize the panel.
+    // 10 px from the top-left corner, 340 px wide (the labels and sliders
+    // fit at any UI scale) and the window's height; the picture stays
+    // visible to the right, and the user can move and resize the panel.
     const float s = info.uiScale;
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(10 * s, 10 * s), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(340 * s, 0), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(340 * s, viewport->Size.y - 20 * s), ImGuiCond_Once);
     if (ImGui::Begin("raylab  (H: keys, Tab: hide)", &state.showPanel)) {
         // Widgets take what is left after a label column of ~9 characters.
         ImGui::PushItemWidth(-9.0f * ImGui::GetFontSize());

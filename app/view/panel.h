@@ -15,15 +15,15 @@ namespace rl {
 
 // Facts the panel shows but does not change.
 struct PanelInfo {
-    std::string device;                 // GL vendor | renderer | version
-    std::string scenePath;              // "" for the embedded default scene
-    std::string left, right;            // implementation labels; right empty without --compare
-    double gpuMs = 0, frameMs = 0;      // recent medians; 0 = not measured yet
+    std::string device;             // GL vendor | renderer | version
+    std::string scenePath;          // "" for the embedded default scene
+    std::string left, right;        // implementation labels; right empty without --compare
+    double gpuMs = 0, frameMs = 0;  // recent medians; 0 = not measured yet
     int renderWidth = 0, renderHeight = 0, windowWidth = 0, windowHeight = 0;
     const std::vector<std::filesystem::path>* presets = nullptr;
-    int currentPreset = -1;             // index into presets, -1 when the scene is none of them
+    int currentPreset = -1;  // index into presets, -1 when the scene is none of them
     float uiScale = 1;
-    std::string status;                 // the last save or screenshot, one line
+    std::string status;  // the last save or screenshot, one line
 };
 
 // Draws the panel (when state.showPanel) and returns what the user asked for.

@@ -22,8 +22,8 @@ std::vector<std::filesystem::path> presetScenes();
 std::string presetTitle(const std::filesystem::path& file);
 
 struct SettingPreset {
-    const char* group;   // "Gamma", "Exposure", "Reflections": one row of buttons each
-    const char* label;   // the button
+    const char* group;  // "Gamma", "Exposure", "Reflections": one row of buttons each
+    const char* label;  // the button
     // Changes `scene`; `fromFile` is the scene as its file has it (for
     // "reflections on", which restores the file's bounce count).
     void (*apply)(Scene& scene, const Scene& fromFile);

@@ -45,7 +45,8 @@ bool ScriptPlayer::start(ScriptTarget& target) {
         case K::Wait: framesLeft_ = c.count; return c.count == 0;
         case K::Sleep:
         case K::WaitReload:
-            deadline_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(c.seconds));
+            deadline_ =
+                Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(c.seconds));
             return proceed(target);
         case K::Drag:
             target.scriptCursor(c.from);

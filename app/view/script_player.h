@@ -49,15 +49,15 @@ private:
     bool proceed(ScriptTarget& target);
 
     std::vector<ScriptCommand> commands_;
-    std::vector<KeyBinding> keys_;                 // per command, for Key
-    std::vector<std::pair<View, int>> views_;      // per command, for View
+    std::vector<KeyBinding> keys_;             // per command, for Key
+    std::vector<std::pair<View, int>> views_;  // per command, for View
     std::string origin_;
     std::size_t next_ = 0;
-    bool running_ = false;     // commands_[next_] has started and takes more frames
-    int framesLeft_ = 0;       // Wait
-    int dragStep_ = 0;         // Drag: frames done
+    bool running_ = false;          // commands_[next_] has started and takes more frames
+    int framesLeft_ = 0;            // Wait
+    int dragStep_ = 0;              // Drag: frames done
     Clock::time_point deadline_{};  // Sleep, WaitReload
-    int reloadMark_ = 0;       // reloads applied when the previous command finished
+    int reloadMark_ = 0;            // reloads applied when the previous command finished
 };
 
 }  // namespace rl

@@ -4,6 +4,7 @@
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
+#include "render/shader_config.h"
 #include "view/implementation_folder.h"
 #include "view/input_script.h"
 #include "view/overlays.h"
@@ -41,7 +42,9 @@ bool sameCamera(const Camera& a, const Camera& b) {
     return a.position == b.position && a.target == b.target && a.up == b.up && a.fovYDegrees == b.fovYDegrees;
 }
 
-std::string sceneName(const std::string& path) { return path.empty() ? "default scene" : fs::path(path).filename().string(); }
+std::string sceneName(const std::string& path) {
+    return path.empty() ? "default scene" : fs::path(path).filename().string();
+}
 
 }  // namespace
 
@@ -53,8 +56,21 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     if (state_.view == View::Bounce) state_.viewBounce = bounce;
 
     std::vector<Implementation> impls;
-    impls.push_back(implementationFromFolder(options_.impl.empty() ? solutionsDir() : fs::path(options_.impl), "--impl"));
-    if (!options_.compare.empty()) impls.push_back(implementationFromFolder(options_.compare, "--compare"));
+    impls.push_back(implementationFrom(options_.impl.empty() ? solutionsDir() : fs::path(options_.impl), "--impl"));
+    if (!options_.compare.empty()) impls.push_back(implementationFrom(options_.compare, "--compare"));
+    std::optional<ShadingModel> compareModel;
+    std::string compareModelName;
+    if (options_.compareModel == "blinn-phong") {
+        compareModel = ShadingModel{};
+        compareModel->blinnPhong = true;
+        compareModelName = "Blinn-Phong";
+    } else if (options_.compareModel == "pbr") {
+        compareModel = ShadingModel{};  // the reference model: GGX, Schlick-GGX, Schlick, Lambert
+        compareModelName = "PBR";
+    } else if (!options_.compareModel.empty()) {
+        throw Error("--compare-model: unknown model '" + options_.compareModel + "' (expected blinn-phong or pbr)");
+    }
+    if (compareModel && impls.size() == 1) impls.push_back(impls[0]);  // the same code, another model
 
     WindowSettings settings;
     settings.width = options_.width > 0 ? options_.width : scene_.scene().render.width;
@@ -63,6 +79,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
                      (impls.size() > 1 ? " | " + implementationLabel(impls[1]) : "");
     settings.vsync = options_.frames == 0;  // timing runs measure the renderer, not the display
     window_ = std::make_unique<GlfwWindowContext>(settings);
+    window_->framebufferSize(fbWidth_, fbHeight_);
     installCallbacks();  // before ImGui, which chains to them
     ui_ = std::make_unique<ImGuiLayer>(window_->window());
     float contentScale = 1.0f;
@@ -75,9 +92,18 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
 
     picture_ = std::make_unique<SplitPicture>();
     timer_ = std::make_unique<GpuTimer>();
-    for (const Implementation& impl : impls) {
+    for (std::size_t i = 0; i < impls.size(); ++i) {
         Side side;
-        side.program = std::make_unique<LiveProgram>(impl, implementationLabel(impl));
+        std::string label = implementationLabel(impls[i]);
+        if (compareModel) {  // name the model on both sides
+            const ShadingModel& own = scene_.scene().model;
+            if (i == 1) side.model = compareModel;
+            label += ", " + (i == 1              ? compareModelName
+                             : own.blinnPhong    ? "Blinn-Phong"
+                             : own.isReference() ? "PBR"
+                                                 : "the scene's model");
+        }
+        side.program = std::make_unique<LiveProgram>(impls[i], label, definesFor(side));
         side.watcher = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
         sides_.push_back(std::move(side));
         rebuild(sides_.back(), true);
@@ -87,7 +113,6 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
         sceneWatcher_->watch({scene_.path()});
     }
     picture_->setScene(scene_.scene());
-    window_->framebufferSize(fbWidth_, fbHeight_);
     trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
 
     presets_ = presetScenes();
@@ -113,8 +138,8 @@ int ViewApp::run() {
 }
 
 void ViewApp::frame() {
-    const auto frameStart = Clock::now();
     waitOrPoll();
+    const auto frameStart = Clock::now();  // after the wait: idle time is no frame time
     const bool scriptDone = !script_ || script_->finished();
     if (!scriptDone) script_->step(*this);
     applyReloads();
@@ -160,6 +185,10 @@ void ViewApp::frame() {
 }
 
 void ViewApp::waitOrPoll() {
+    if (fbWidth_ <= 0 || fbHeight_ <= 0) {  // minimised: nothing to draw until the window comes back
+        glfwWaitEventsTimeout(kIdleWaitSeconds);
+        return;
+    }
     const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || framesBeforeIdle_ > 0 ||
                       (script_ && !script_->finished()) || framesLeft_ > 0 || Clock::now() < toastUntil_;
     if (busy) {
@@ -205,7 +234,17 @@ void ViewApp::rebuild(Side& side, bool initial) {
     }
 }
 
+ShaderDefines ViewApp::definesFor(const Side& side) const {
+    // The generic shader plus the model variant: never specialised to the
+    // scene's structure (render/shader_config.h), because the panel edits
+    // values that specialisation compiles in (bounces, metallic) and editing
+    // must never recompile.
+    return modelDefines(side.model.value_or(scene_.scene().model));
+}
+
 void ViewApp::sceneChanged(bool cameraChanged) {
+    for (Side& side : sides_)
+        if (side.program->setDefines(definesFor(side))) rebuild(side, false);  // another model: another program
     picture_->setScene(scene_.scene());
     if (cameraChanged)
         trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
@@ -213,9 +252,7 @@ void ViewApp::sceneChanged(bool cameraChanged) {
     dirty_ = true;
 }
 
-bool ViewApp::moving() const {
-    return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime;
-}
+bool ViewApp::moving() const { return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime; }
 
 void ViewApp::renderPicture(bool fullResolution) {
     const double scale = fullResolution ? 1.0 : adaptive_.scale(moving(), fbWidth_, fbHeight_);
@@ -265,7 +302,8 @@ void ViewApp::drawUi(ViewRequests& requests) {
     if (wipeActive()) {
         int windowWidth = 0, windowHeight = 0;
         glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
-        const float toWindow = fbWidth_ > 0 ? float(windowWidth) / float(fbWidth_) : 1.0f;  // ImGui works in window units
+        const float toWindow =
+            fbWidth_ > 0 ? float(windowWidth) / float(fbWidth_) : 1.0f;  // ImGui works in window units
         drawWipeOverlay(float(dividerPixel()) * toWindow, float(windowHeight), sides_[0].program->label(),
                         sides_[1].program->label(), scale);
     }
@@ -306,7 +344,16 @@ void ViewApp::saveScene() {
     Scene scene = scene_.scene();
     if (state_.saveCamera) scene.camera = trackball_->camera();
     try {
-        saveSceneFile(scene, state_.savePath);
+        // Written next to the target and renamed over it: the file watcher
+        // (and any editor) never sees a half-written scene.
+        const std::string temporary = state_.savePath + ".saving";
+        saveSceneFile(scene, temporary);
+        std::error_code ec;
+        fs::rename(temporary, state_.savePath, ec);
+        if (ec) {
+            fs::remove(temporary, ec);
+            throw Error(state_.savePath + ": cannot write the scene (" + ec.message() + ")");
+        }
         status_ = "saved " + state_.savePath;
         std::cout << "raylab: " << status_ << std::endl;
     } catch (const Error& e) {

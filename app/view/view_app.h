@@ -50,6 +50,7 @@ private:
     struct Side {
         std::unique_ptr<LiveProgram> program;
         std::unique_ptr<FileWatcher> watcher;
+        std::optional<ShadingModel> model;  // the model it shows (--compare-model); none: the scene's
     };
 
     // -- the loop (view_app.cpp)
@@ -57,6 +58,7 @@ private:
     void waitOrPoll();
     void applyReloads();
     void rebuild(Side& side, bool initial);
+    ShaderDefines definesFor(const Side& side) const;  // the model variant's defines
     void sceneChanged(bool cameraMayHaveChanged);
     void renderPicture(bool fullResolution);
     void drawUi(ViewRequests& requests);
@@ -77,8 +79,8 @@ private:
     void onCursor(glm::dvec2 pixel);
     void onScroll(double steps);
     void perform(Action action, int argument);
-    glm::dvec2 cursorPixel() const;   // the cursor in framebuffer pixels
-    double dividerPixel() const;      // the wipe divider in framebuffer pixels
+    glm::dvec2 toPixels(glm::dvec2 screen) const;  // window (screen) coordinates to framebuffer pixels
+    double dividerPixel() const;                   // the wipe divider in framebuffer pixels
     bool wipeActive() const { return sides_.size() == 2 && state_.wipe; }
     void cameraMoved();
 
@@ -102,7 +104,7 @@ private:
     std::vector<std::filesystem::path> presets_;
     std::unique_ptr<GlfwWindowContext> window_;
     std::unique_ptr<ImGuiLayer> ui_;
-    std::vector<Side> sides_;                 // [0] = --impl (left), [1] = --compare (right)
+    std::vector<Side> sides_;  // [0] = --impl (left), [1] = --compare (right)
     std::unique_ptr<FileWatcher> sceneWatcher_;
     std::unique_ptr<SplitPicture> picture_;
     std::unique_ptr<GpuTimer> timer_;
@@ -112,20 +114,21 @@ private:
     ViewState state_;
     AdaptiveResolution adaptive_;
     FrameStats stats_;
-    int fbWidth_ = 0, fbHeight_ = 0;          // framebuffer size this frame
-    bool dirty_ = true;                       // the picture must be rendered again
-    double renderedScale_ = 0;                // scale of the picture on screen; 0 = none yet
-    Clock::time_point lastMove_{};            // last camera or window-size change
-    int framesBeforeIdle_ = 0;                // frames to draw before waiting for events
-    int framesLeft_ = 0;                      // --frames countdown, after the script
-    int reloads_ = 0;                         // hot reloads applied (for wait-reload)
+    int fbWidth_ = 0, fbHeight_ = 0;  // framebuffer size this frame
+    bool dirty_ = true;               // the picture must be rendered again
+    double renderedScale_ = 0;        // scale of the picture on screen; 0 = none yet
+    Clock::time_point lastMove_{};    // last camera or window-size change
+    int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
+    int framesLeft_ = 0;              // --frames countdown, after the script
+    int reloads_ = 0;                 // hot reloads applied (for wait-reload)
     bool quit_ = false;
     bool draggingDivider_ = false;
-    int dragButton_ = -1;                     // the mouse button of the trackball drag, -1 = none
-    std::string runtimeError_;                // a GL error while drawing, shown like a shader error
-    std::string pendingShot_;                 // picture screenshot to write this frame
-    std::string pendingUiShot_;               // window screenshot to write this frame
-    std::string status_;                      // last save / screenshot, for the panel
+    int dragButton_ = -1;        // the mouse button of the trackball drag, -1 = none
+    glm::dvec2 cursor_{0.0};     // framebuffer pixels, from the last motion event
+    std::string runtimeError_;   // a GL error while drawing, shown like a shader error
+    std::string pendingShot_;    // picture screenshot to write this frame
+    std::string pendingUiShot_;  // window screenshot to write this frame
+    std::string status_;         // last save / screenshot, for the panel
     std::string toast_;
     Clock::time_point toastUntil_{};
 };

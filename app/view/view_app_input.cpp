@@ -2,7 +2,6 @@
 // handful of functions, and the actions of the key table (key_bindings.h).
 #include "view/view_app.h"
 
-#include "view/presets.h"
 #include "view/screenshot.h"
 
 #define GLFW_INCLUDE_NONE
@@ -19,8 +18,6 @@ namespace {
 // Exposure keys move half a stop (a factor of sqrt 2): four presses double
 // twice, fine enough to find the right brightness live.
 const double kHalfStop = std::sqrt(2.0);
-constexpr double kMinExposure = 1.0 / 64.0;  // as the panel's slider
-constexpr double kMaxExposure = 64.0;
 // UI scale keys: 25% a press; from 1 to 2 in three presses.
 constexpr float kUiScaleStep = 1.25f;
 // Wipe keys: 5% of the width a press.
@@ -41,9 +38,14 @@ std::string formatNumber(double v) {
 
 bool repeats(Action a) {  // actions that a held key repeats; toggles do not
     switch (a) {
-        case Action::BounceDown: case Action::BounceUp: case Action::ExposureDown: case Action::ExposureUp:
-        case Action::DividerLeft: case Action::DividerRight: case Action::UiScaleDown: case Action::UiScaleUp:
-            return true;
+        case Action::BounceDown:
+        case Action::BounceUp:
+        case Action::ExposureDown:
+        case Action::ExposureUp:
+        case Action::DividerLeft:
+        case Action::DividerRight:
+        case Action::UiScaleDown:
+        case Action::UiScaleUp: return true;
         default: return false;
     }
 }
@@ -54,13 +56,17 @@ bool repeats(Action a) {  // actions that a held key repeats; toggles do not
 // (ImGui's GLFW backend keeps its own state and chains to these.)
 struct ViewAppCallbacks {
     static void key(GLFWwindow* w, int key, int, int action, int mods) { appOf(w)->onKey(key, action, mods); }
+    // The press happens where the last motion event put the cursor: asking
+    // the window system now (glfwGetCursorPos) would give where the mouse is
+    // by the time a slow frame lets the events through.
     static void button(GLFWwindow* w, int button, int action, int) {
         ViewApp* app = appOf(w);
-        app->onMouseButton(button, action == GLFW_PRESS, app->cursorPixel(), false);
+        app->onMouseButton(button, action == GLFW_PRESS, app->cursor_, false);
     }
-    static void cursor(GLFWwindow* w, double, double) {
+    static void cursor(GLFWwindow* w, double x, double y) {
         ViewApp* app = appOf(w);
-        app->onCursor(app->cursorPixel());
+        app->cursor_ = app->toPixels({x, y});
+        app->onCursor(app->cursor_);
     }
     static void scroll(GLFWwindow* w, double, double y) {
         ViewApp* app = appOf(w);
@@ -75,15 +81,16 @@ void ViewApp::installCallbacks() {
     glfwSetMouseButtonCallback(w, &ViewAppCallbacks::button);
     glfwSetCursorPosCallback(w, &ViewAppCallbacks::cursor);
     glfwSetScrollCallback(w, &ViewAppCallbacks::scroll);
+    double x = 0, y = 0;
+    glfwGetCursorPos(w, &x, &y);
+    cursor_ = toPixels({x, y});
 }
 
-glm::dvec2 ViewApp::cursorPixel() const {
-    double x = 0, y = 0;
+glm::dvec2 ViewApp::toPixels(glm::dvec2 screen) const {
     int windowWidth = 1, windowHeight = 1;
-    glfwGetCursorPos(window_->window(), &x, &y);
     glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
     // Screen coordinates to framebuffer pixels (they differ on HiDPI screens).
-    return {x * fbWidth_ / std::max(windowWidth, 1), y * fbHeight_ / std::max(windowHeight, 1)};
+    return {screen.x * fbWidth_ / std::max(windowWidth, 1), screen.y * fbHeight_ / std::max(windowHeight, 1)};
 }
 
 double ViewApp::dividerPixel() const { return state_.divider * fbWidth_; }
@@ -120,9 +127,12 @@ void ViewApp::onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fro
         return;
     }
     Trackball::Mode mode;
-    if (button == GLFW_MOUSE_BUTTON_LEFT) mode = Trackball::Mode::Rotate;
-    else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) mode = Trackball::Mode::Pan;
-    else return;
+    if (button == GLFW_MOUSE_BUTTON_LEFT)
+        mode = Trackball::Mode::Rotate;
+    else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE)
+        mode = Trackball::Mode::Pan;
+    else
+        return;
     trackball_->beginDrag(pixel, mode);
     dragButton_ = button;
     cameraMoved();
@@ -205,7 +215,7 @@ void ViewApp::perform(Action action, int argument) {
         }
         case Action::ToggleCompare:
             if (sides_.size() < 2) {
-                toast("no wipe: start with --compare DIR");
+                toast("no wipe: start with --compare DIR or --compare-model MODEL");
                 break;
             }
             state_.wipe = !state_.wipe;
@@ -213,8 +223,8 @@ void ViewApp::perform(Action action, int argument) {
             break;
         case Action::DividerLeft:
         case Action::DividerRight:
-            state_.divider = std::clamp(state_.divider + (action == Action::DividerRight ? kDividerStep : -kDividerStep),
-                                        0.0, 1.0);
+            state_.divider =
+                std::clamp(state_.divider + (action == Action::DividerRight ? kDividerStep : -kDividerStep), 0.0, 1.0);
             dirty_ = true;
             break;
         case Action::ToggleFullscreen: window_->toggleFullscreen(); break;
@@ -224,8 +234,10 @@ void ViewApp::perform(Action action, int argument) {
         case Action::UiScaleUp: ui_->setScale(ui_->scale() * kUiScaleStep); break;
         case Action::SaveScene: saveScene(); break;
         case Action::Escape:
-            if (window_->fullscreen()) window_->toggleFullscreen();
-            else state_.showHelp = false;
+            if (window_->fullscreen())
+                window_->toggleFullscreen();
+            else
+                state_.showHelp = false;
             break;
         case Action::Quit: quit_ = true; break;
     }
@@ -236,7 +248,9 @@ void ViewApp::perform(Action action, int argument) {
 }
 
 // Script input goes to the picture directly (never to the panel).
-void ViewApp::scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) { onMouseButton(button, pressed, pixel, true); }
+void ViewApp::scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) {
+    onMouseButton(button, pressed, pixel, true);
+}
 void ViewApp::scriptCursor(glm::dvec2 pixel) { onCursor(pixel); }
 void ViewApp::scriptScroll(double steps) { onScroll(steps); }
 void ViewApp::scriptKey(const KeyBinding& binding) { perform(binding.action, binding.argument); }
@@ -250,7 +264,9 @@ void ViewApp::scriptDivider(double fraction) {
     dirty_ = true;
 }
 void ViewApp::scriptResize(int width, int height) { glfwSetWindowSize(window_->window(), width, height); }
-void ViewApp::scriptScreenshot(const std::string& file, bool withUi) { (withUi ? pendingUiShot_ : pendingShot_) = file; }
+void ViewApp::scriptScreenshot(const std::string& file, bool withUi) {
+    (withUi ? pendingUiShot_ : pendingShot_) = file;
+}
 void ViewApp::scriptQuit() { quit_ = true; }
 
 }  // namespace rl

@@ -6,18 +6,19 @@
 namespace rl {
 
 struct ViewOptions {
-    std::string scene;        // scene file; "" = the embedded default scene
-    std::string impl;         // exercise folder; "" = solutions/
-    std::string compare;      // second folder for the wipe; "" = none
-    int width = 0, height = 0;  // window size (--size); 0 = the scene's render size
+    std::string scene;           // scene file; "" = the embedded default scene
+    std::string impl;            // exercise folder; "" = solutions/
+    std::string compare;         // second folder for the wipe; "" = none
+    std::string compareModel;    // "blinn-phong" or "pbr": the wipe's right side uses that model; "" = the scene's
+    int width = 0, height = 0;   // window size (--size); 0 = the scene's render size
     std::string view = "final";  // teaching view at start, as `render --view`
-    std::string script;       // scripted input (input_script.h); "" = none
-    int frames = 0;           // > 0: run this many frames (after the script) and exit
-    std::string screenshot;   // with --frames: the last frame's picture as PNG
-    bool stats = false;       // print the median frame time at exit (always with --frames)
-    bool fullscreen = false;  // start fullscreen
-    bool hidePanel = false;   // start with the panel hidden (a clean picture)
-    float uiScale = 0;        // 0 = the monitor's content scale
+    std::string script;          // scripted input (input_script.h); "" = none
+    int frames = 0;              // > 0: run this many frames (after the script) and exit
+    std::string screenshot;      // with --frames: the last frame's picture as PNG
+    bool stats = false;          // print the median frame time at exit (always with --frames)
+    bool fullscreen = false;     // start fullscreen
+    bool hidePanel = false;      // start with the panel hidden (a clean picture)
+    float uiScale = 0;           // 0 = the monitor's content scale
 };
 
 }  // namespace rl

@@ -1,0 +1,531 @@
+#include "bench/bench.h"
+
+#include "bench/pareto.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "render/gl_renderer.h"
+#include "render/shader_config.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+namespace rl::bench {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& sweepNames() {
+    static const std::vector<std::string> names = {"modes", "bounces", "spp", "resolution", "models", "strategies"};
+    return names;
+}
+
+std::string modeName(bool specialised, bool picture) {
+    if (specialised) return picture ? "specialised" : "specialised-full";
+    return picture ? "generic-picture" : "generic";
+}
+
+namespace {
+
+bool wanted(const Options& o, const std::string& sweep) { return o.sweeps.empty() || o.sweeps.count(sweep) > 0; }
+
+// The numerical strategies: a naive version of one solution function, taken
+// from the mutants the checker must catch (tests/mutants/) or the naive
+// versions the hard-case tests compare against (tests/accuracy/naive/).
+struct Strategy {
+    const char* name;
+    const char* exerciseFile;
+    const char* path;  // relative to the source root
+};
+const Strategy kStrategies[] = {
+    {"strategy:textbook-intersect", "02-intersect.glsl", "tests/mutants/02-intersect--textbook-quadratic.glsl"},
+    {"strategy:naive-D", "05-ggx.glsl", "tests/accuracy/naive/05-ggx--textbook-denominator.glsl"},
+    {"strategy:fixed-offset", "04-shadows.glsl", "tests/mutants/04-shadows--fixed-offset.glsl"},
+};
+
+struct ModelVariant {
+    const char* name;
+    ShadingModel model;
+};
+std::vector<ModelVariant> modelVariants() {
+    std::vector<ModelVariant> out;
+    ShadingModel m;
+    m.distribution = DistributionModel::Beckmann;
+    out.push_back({"model:beckmann", m});
+    m = {};
+    m.geometry = GeometryModel::SmithGGXSeparable;
+    out.push_back({"model:smith-ggx", m});
+    m = {};
+    m.geometry = GeometryModel::SmithGGXCorrelated;
+    out.push_back({"model:smith-ggx-correlated", m});
+    m = {};
+    m.fresnel = FresnelModel::Dielectric;
+    out.push_back({"model:fresnel-dielectric", m});
+    m = {};
+    m.fresnel = FresnelModel::Conductor;
+    out.push_back({"model:fresnel-conductor", m});
+    m = {};
+    m.diffuse = DiffuseModel::Burley;
+    out.push_back({"model:burley", m});
+    m = {};
+    m.blinnPhong = true;
+    out.push_back({"model:blinn-phong", m});
+    return out;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+std::string sceneName(const std::string& path) { return fs::path(path).stem().string(); }
+
+}  // namespace
+
+std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
+    std::vector<Variant> out;
+    auto add = [&](std::string name, std::string sweep, bool specialised, Scene s, bool picture = true) {
+        Variant v;
+        v.name = std::move(name);
+        v.sweep = std::move(sweep);
+        v.specialised = specialised;
+        v.picture = picture;
+        v.scene = std::move(s);
+        out.push_back(std::move(v));
+        return &out.back();
+    };
+    const RenderSettings& r = scene.render;
+
+    if (wanted(options, "modes")) {
+        add("generic", "modes", false, scene, false);
+        add("generic-picture", "modes", false, scene, true);
+        add("specialised-full", "modes", true, scene, false);
+        add("specialised", "modes", true, scene, true);
+    }
+    if (wanted(options, "bounces")) {
+        for (int b : {0, 1, 2, 3, 4}) {
+            if (b == r.maxBounces && wanted(options, "modes")) continue;  // that is the "specialised" row
+            Scene s = scene;
+            s.render.maxBounces = b;
+            add("bounces=" + std::to_string(b), "bounces", true, s);
+        }
+        // The early stop of the bounces on its own: its test costs a little in
+        // every pixel and saves whole bounces where it fires.
+        if (specialisationDefines(scene).count("RL_BOUNCE_CUTOFF")) {
+            Variant* v = add("no-early-stop", "bounces", true, scene);
+            v->withoutDefines.push_back("RL_BOUNCE_CUTOFF");
+        }
+    }
+    if (wanted(options, "spp")) {
+        for (int spp : {1, 4, 9, 16}) {
+            if (spp == r.spp && wanted(options, "modes")) continue;
+            Scene s = scene;
+            s.render.spp = spp;
+            add("spp=" + std::to_string(spp), "spp", true, s);
+        }
+    }
+    if (wanted(options, "resolution")) {
+        for (int k : {2, 4}) {
+            Scene s = scene;
+            s.render.width = std::max(1, (r.width + k - 1) / k);
+            s.render.height = std::max(1, (r.height + k - 1) / k);
+            add("res=1/" + std::to_string(k), "resolution", true, s);
+        }
+    }
+    if (wanted(options, "models")) {
+        for (const ModelVariant& mv : modelVariants()) {
+            Scene s = scene;
+            s.model = mv.model;
+            Variant* v = add(mv.name, "models", true, s);
+            if (modelDefines(mv.model).empty())
+                v->skipReason = "not in GLSL yet (modelDefines() gives no define for it)";
+        }
+    }
+    if (wanted(options, "strategies")) {
+        for (const Strategy& st : kStrategies) {
+            Variant* v = add(st.name, "strategies", true, scene);
+            fs::path file = sourceRoot() / st.path;
+            if (fs::is_regular_file(file))
+                v->overrides[st.exerciseFile] = file;
+            else
+                v->skipReason = "strategy file " + std::string(st.path) + " not found";
+        }
+    }
+    return out;
+}
+
+Rendering resampleNearest(const Rendering& image, int width, int height) {
+    Rendering out;
+    out.display = {width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
+    bool hasRadiance = !image.radiance.rgb.empty();
+    if (hasRadiance) out.radiance = {width, height, std::vector<float>(std::size_t(width) * height * 3)};
+    for (int y = 0; y < height; ++y) {
+        int sy = std::min(image.display.height - 1, int((y + 0.5) * image.display.height / height));
+        for (int x = 0; x < width; ++x) {
+            int sx = std::min(image.display.width - 1, int((x + 0.5) * image.display.width / width));
+            for (int c = 0; c < 3; ++c) {
+                out.display.at(x, y)[c] = image.display.at(sx, sy)[c];
+                if (hasRadiance) out.radiance.at(x, y)[c] = image.radiance.at(sx, sy)[c];
+            }
+        }
+    }
+    return out;
+}
+
+namespace {
+
+// Software rasterisers run the fragment shader on worker threads that a
+// GL_TIME_ELAPSED query does not cover: llvmpipe answers a few ms, in no
+// relation to the ~100 ms a frame takes. There the clock is the wall clock
+// around draw + glFinish, which is the frame's cost on a CPU.
+bool isSoftwareRasteriser(const std::string& description) {
+    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe"})
+        if (description.find(name) != std::string::npos) return true;
+    return false;
+}
+
+// CPU time of every thread of this process (llvmpipe's workers included), ms.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+const char* clockName(Clock clock) {
+    switch (clock) {
+    case Clock::Gpu: return "GL_TIME_ELAPSED queries";
+    case Clock::Wall: return "the wall clock around draw + glFinish";
+    case Clock::Cpu: return "the process CPU time (all threads) around draw + glFinish";
+    default: return "auto";
+    }
+}
+
+Measurement describe(const Variant& v) {
+    Measurement m;
+    m.variant = v.name;
+    m.sweep = v.sweep;
+    m.mode = modeName(v.specialised, v.picture);
+    m.width = v.scene.render.width;
+    m.height = v.scene.render.height;
+    m.spp = v.scene.render.spp;
+    m.maxBounces = v.scene.render.maxBounces;
+    return m;
+}
+
+// One renderer per size, so that no timed frame reallocates its targets.
+GlRenderer& rendererFor(std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>>& renderers, const Scene& scene) {
+    auto& r = renderers[{scene.render.width, scene.render.height}];
+    if (!r) r = std::make_unique<GlRenderer>();
+    return *r;
+}
+
+// Measures every variant of one scene. Programs are built first (a variant
+// that does not build is skipped with the first line of its error), each is
+// warmed up and its picture compared with the reference, then the timed
+// frames run in rounds, one frame of each variant per round, so that a
+// change in the machine's load during the run touches every variant alike.
+std::vector<Measurement> measureScene(const std::string& sceneName, const std::vector<Variant>& variants,
+                                      const Rendering& reference, const Options& o, const fs::path& implDir,
+                                      Clock clock, std::ostream& log) {
+    std::vector<Measurement> out;
+    std::vector<ShaderProgram> programs(variants.size());
+    std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>> renderers;
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+        const Variant& v = variants[i];
+        Measurement m = describe(v);
+        m.scene = sceneName;
+        m.skipped = true;
+        m.note = v.skipReason;
+        if (v.skipReason.empty()) {
+            try {
+                auto start = std::chrono::steady_clock::now();
+                ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
+                if (v.picture)
+                    for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+                for (const std::string& name : v.withoutDefines) defines.erase(name);
+                programs[i] = buildRayTracer(Implementation{implDir, v.overrides}, defines);
+                m.compileMs = msSince(start);
+                GlRenderer& renderer = rendererFor(renderers, v.scene);
+                renderer.setScene(v.scene);
+                FrameSettings frame = frameFromScene(v.scene);
+                for (int k = 0; k < std::max(1, o.warmup); ++k) renderer.draw(programs[i], frame);  // llvmpipe compiles here
+                gl::Finish();
+                Rendering got = renderer.readBack();
+                if (got.display.width != reference.display.width || got.display.height != reference.display.height)
+                    got = resampleNearest(got, reference.display.width, reference.display.height);
+                m.error = compareRenderings(got, reference);
+                m.skipped = false;
+                m.clock = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
+                m.note.clear();
+            } catch (const Error& e) {  // ShaderError included: a variant that does not build
+                programs[i] = ShaderProgram();
+                m.note = std::string("does not build: ") + firstLine(e.what());
+            }
+        }
+        out.push_back(m);
+    }
+
+    std::vector<std::vector<double>> times(variants.size());
+    for (int round = 0; round < o.frames; ++round) {
+        for (std::size_t i = 0; i < variants.size(); ++i) {
+            if (out[i].skipped) continue;
+            GlRenderer& renderer = rendererFor(renderers, variants[i].scene);
+            renderer.setScene(variants[i].scene);
+            FrameSettings frame = frameFromScene(variants[i].scene);
+            if (clock == Clock::Gpu) {
+                times[i].push_back(renderer.drawTimed(programs[i], frame));
+            } else if (clock == Clock::Cpu) {
+                gl::Finish();
+                double t0 = processCpuMs();
+                renderer.draw(programs[i], frame);
+                gl::Finish();
+                times[i].push_back(processCpuMs() - t0);
+            } else {
+                gl::Finish();
+                auto t0 = std::chrono::steady_clock::now();
+                renderer.draw(programs[i], frame);
+                gl::Finish();
+                times[i].push_back(msSince(t0));
+            }
+        }
+    }
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+        Measurement& m = out[i];
+        if (!m.skipped) {
+            m.frames = int(times[i].size());
+            m.msMedian = median(times[i]);
+            m.msMin = *std::min_element(times[i].begin(), times[i].end());
+            m.msMax = *std::max_element(times[i].begin(), times[i].end());
+        }
+        char line[512];
+        if (m.skipped)
+            std::snprintf(line, sizeof line, "bench: %s %-28s skipped: %s\n", sceneName.c_str(), m.variant.c_str(),
+                          m.note.c_str());
+        else
+            std::snprintf(line, sizeof line, "bench: %s %-28s %8.2f ms (min %.2f, max %.2f)  mean %.3f LSB\n",
+                          sceneName.c_str(), m.variant.c_str(), m.msMedian, m.msMin, m.msMax, m.error.meanLsb);
+        log << line;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<Measurement> runBench(const Options& options, std::ostream& log) {
+    if (options.width < 1 || options.height < 1) throw Error("bench: the size must be at least 1x1");
+    if (options.frames < 1) throw Error("--frames: at least 1 timed frame");
+    if (options.warmup < 0) throw Error("--warmup: cannot be negative");
+    int n = int(std::lround(std::sqrt(double(options.referenceSpp))));
+    if (options.referenceSpp < 1 || n * n != options.referenceSpp)
+        throw Error("--reference-spp: must be a square number (1, 4, 9, 16, ...), not " +
+                    std::to_string(options.referenceSpp));
+    for (const std::string& s : options.sweeps)
+        if (std::find(sweepNames().begin(), sweepNames().end(), s) == sweepNames().end())
+            throw Error("--sweeps: unknown group '" + s + "' (expected modes, bounces, spp, resolution, models, strategies)");
+
+    std::vector<std::string> files = options.scenes;
+    if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
+    fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
+    if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
+
+    // Load every scene first: a typo in the last file fails before minutes of work.
+    std::vector<Scene> scenes;
+    for (const std::string& file : files) {
+        LoadedScene loaded = loadSceneFile(file);
+        for (const auto& w : loaded.warnings) log << "raylab: warning: " << w << "\n";
+        Scene s = loaded.scene;
+        s.render.width = options.width;
+        s.render.height = options.height;
+        scenes.push_back(s);
+    }
+
+    auto context = createHeadlessContext(parseBackend(options.backend));
+    Clock clock = options.clock;
+    if (clock == Clock::Auto) clock = isSoftwareRasteriser(context->description()) ? Clock::Wall : Clock::Gpu;
+    log << "bench: " << context->description() << "\n"
+        << "bench: timing with " << clockName(clock)
+        << ", " << options.warmup << " warm-up and " << options.frames << " timed frames per variant\n";
+    std::vector<Measurement> out;
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const Scene& scene = scenes[i];
+        std::string name = sceneName(files[i]);
+        Scene converged = scene;
+        converged.render.spp = options.referenceSpp;
+        auto start = std::chrono::steady_clock::now();
+        Rendering reference = ref::renderCpu(converged);
+        log << "bench: " << name << ": CPU reference " << scene.render.width << "x" << scene.render.height << " at "
+            << options.referenceSpp << " spp in " << int(msSince(start)) << " ms\n";
+        std::vector<Measurement> rows =
+            measureScene(name, makeVariants(scene, options), reference, options, implDir, clock, log);
+        out.insert(out.end(), rows.begin(), rows.end());
+    }
+    markParetoFronts(out);
+    return out;
+}
+
+void markParetoFronts(std::vector<Measurement>& measurements) {
+    std::vector<std::string> names;
+    for (const Measurement& m : measurements)
+        if (std::find(names.begin(), names.end(), m.scene) == names.end()) names.push_back(m.scene);
+    for (const std::string& scene : names) {
+        std::vector<std::size_t> rows;
+        std::vector<ParetoPoint> points;
+        for (std::size_t i = 0; i < measurements.size(); ++i) {
+            if (measurements[i].scene != scene || measurements[i].skipped) continue;
+            rows.push_back(i);
+            points.push_back({measurements[i].msMedian, measurements[i].error.meanLsb});
+        }
+        std::vector<bool> front = paretoFront(points);
+        for (std::size_t k = 0; k < rows.size(); ++k) measurements[rows[k]].onFront = front[k];
+    }
+}
+
+double ModeComparison::speedup() const {
+    if (!generic || !specialised || specialised->msMedian <= 0) return 0;
+    return generic->msMedian / specialised->msMedian;
+}
+
+std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements) {
+    std::vector<ModeComparison> out;
+    for (const Measurement& m : measurements) {
+        if (m.sweep != "modes" || m.skipped) continue;
+        auto it = std::find_if(out.begin(), out.end(), [&](const ModeComparison& c) { return c.scene == m.scene; });
+        if (it == out.end()) {
+            out.push_back({m.scene, nullptr, nullptr, nullptr, nullptr});
+            it = out.end() - 1;
+        }
+        if (m.mode == "generic") it->generic = &m;
+        else if (m.mode == "specialised") it->specialised = &m;
+        else if (m.mode == "generic-picture") it->genericPicture = &m;
+        else if (m.mode == "specialised-full") it->specialisedFull = &m;
+    }
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](const ModeComparison& c) { return !c.generic || !c.specialised; }),
+              out.end());
+    return out;
+}
+
+namespace {
+std::string fixed(double v, int digits) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (std::isnan(v)) return "nan";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    return text;
+}
+std::string general(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+}  // namespace
+
+std::string formatTable(const std::vector<Measurement>& measurements) {
+    std::ostringstream s;
+    char line[512];
+    std::snprintf(line, sizeof line, "%-10s %-28s %9s %4s %3s %9s %9s %7s %6s %7s %9s %7s %5s\n", "scene", "variant",
+                  "size", "spp", "bnc", "ms median", "ms min", "mean", "p99", "off %", "relMSE", "PSNR", "front");
+    s << line;
+    for (const Measurement& m : measurements) {
+        std::string size = std::to_string(m.width) + "x" + std::to_string(m.height);
+        if (m.skipped) {
+            std::snprintf(line, sizeof line, "%-10s %-28s %9s %4d %3d   skipped: %s\n", m.scene.c_str(),
+                          m.variant.c_str(), size.c_str(), m.spp, m.maxBounces, m.note.c_str());
+        } else {
+            std::snprintf(line, sizeof line, "%-10s %-28s %9s %4d %3d %9.2f %9.2f %7.3f %6.1f %7.3f %9.2e %7s %5s\n",
+                          m.scene.c_str(), m.variant.c_str(), size.c_str(), m.spp, m.maxBounces, m.msMedian, m.msMin,
+                          m.error.meanLsb, m.error.p99Lsb, 100 * m.error.offFraction, m.error.relMse,
+                          fixed(m.error.psnr, 2).c_str(), m.onFront ? "*" : "");
+        }
+        s << line;
+    }
+    std::string clock = "gpu";
+    for (const Measurement& m : measurements)
+        if (!m.skipped) clock = m.clock;
+    s << "(ms: median time per frame, "
+      << (clock == "gpu" ? "GL_TIME_ELAPSED" : clock == "wall" ? "wall clock around draw + glFinish"
+                                                                 : "process CPU time around draw + glFinish")
+      << "; mean, p99: difference from the converged CPU\n reference in 8-bit steps; off %: pixels off by more "
+         "than 1/255; front *: on the Pareto front of time and mean error)\n";
+    return s.str();
+}
+
+std::string formatComparisons(const std::vector<Measurement>& measurements) {
+    std::ostringstream s;
+    for (const ModeComparison& c : modeComparisons(measurements)) {
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "%s at %dx%d: specialised %.2f ms, generic %.2f ms per frame: %.2fx faster; "
+                      "error mean %.3f vs %.3f LSB, p99 %.1f vs %.1f, off %.3f%% vs %.3f%%\n",
+                      c.scene.c_str(), c.specialised->width, c.specialised->height, c.specialised->msMedian,
+                      c.generic->msMedian, c.speedup(), c.specialised->error.meanLsb, c.generic->error.meanLsb,
+                      c.specialised->error.p99Lsb, c.generic->error.p99Lsb, 100 * c.specialised->error.offFraction,
+                      100 * c.generic->error.offFraction);
+        s << line;
+        if (c.genericPicture && c.specialisedFull) {
+            double g = c.generic->msMedian;
+            std::snprintf(line, sizeof line,
+                          "  parts: scene constants alone (specialised-full) %.2fx, picture program alone "
+                          "(generic-picture) %.2fx, both (specialised) %.2fx\n",
+                          g / c.specialisedFull->msMedian, g / c.genericPicture->msMedian, c.speedup());
+            s << line;
+        }
+        double more = c.specialised->error.meanLsb - c.generic->error.meanLsb;
+        if (more == 0 && c.generic->error.maxLsb == c.specialised->error.maxLsb) {
+            s << "  the same error against the reference for both\n";
+        } else {
+            std::snprintf(line, sizeof line, "  error against the reference, specialised minus generic: mean %+.4f LSB\n",
+                          more);
+            s << line;
+        }
+    }
+    return s.str();
+}
+
+std::string toCsv(const std::vector<Measurement>& measurements) {
+    std::ostringstream s;
+    s << "scene,variant,sweep,mode,width,height,spp,max_bounces,frames,ms_median,ms_min,ms_max,clock,compile_ms,"
+         "err_mean_lsb,err_p99_lsb,err_max_lsb,off_frac,relmse,psnr,non_finite,pareto,skipped,note\n";
+    for (const Measurement& m : measurements) {
+        std::string note = m.note;
+        std::replace(note.begin(), note.end(), '"', '\'');
+        s << m.scene << "," << m.variant << "," << m.sweep << "," << m.mode << "," << m.width << "," << m.height << ","
+          << m.spp << "," << m.maxBounces << "," << m.frames << ",";
+        if (m.skipped) {
+            s << ",,,,,,,,,,,,0,1,\"" << note << "\"\n";
+            continue;
+        }
+        s << fixed(m.msMedian, 3) << "," << fixed(m.msMin, 3) << "," << fixed(m.msMax, 3) << "," << m.clock << ","
+          << fixed(m.compileMs, 1) << "," << general(m.error.meanLsb) << "," << general(m.error.p99Lsb) << ","
+          << m.error.maxLsb << "," << general(m.error.offFraction) << "," << general(m.error.relMse) << ","
+          << general(m.error.psnr) << "," << m.error.nonFinite << "," << (m.onFront ? 1 : 0) << ",0,\"" << note
+          << "\"\n";
+    }
+    return s.str();
+}
+
+void writeTextFile(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw Error(path.string() + ": cannot write");
+}
+
+}  // namespace rl::bench

@@ -1,0 +1,125 @@
+// `raylab bench`: GPU time per frame against error, for the ways of rendering
+// a scene that raylab offers. Each measurement renders one variant (a whole-
+// shader mode, a model variant, a numerical strategy) at one setting (bounce
+// limit, samples per pixel, resolution), takes the median time of several
+// frames after warm-up frames (GL_TIME_ELAPSED on a GPU; see Clock for
+// llvmpipe) and compares the picture with a converged CPU reference of the
+// same scene at the same size.
+// docs/performance.md, "Speed against error (raylab bench)", shows a run.
+#pragma once
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "shader/shader_library.h"
+
+#include <filesystem>
+#include <iosfwd>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace rl::bench {
+
+// What one measurement renders. The scene carries every setting (size, spp,
+// bounce limit, model); the rest says how the shader is built.
+struct Variant {
+    std::string name;        // "specialised", "generic", "bounces=0", "spp=4", "res=1/2", "model:beckmann", ...
+    std::string sweep;       // the group it belongs to: "modes", "bounces", "spp", "resolution", "models", "strategies"
+    bool specialised = true; // shaderDefinesFor(scene, specialised)
+    bool picture = true;     // plus pictureOnlyDefines(): what `raylab render` adds for the picture
+    Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
+    std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
+    // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
+    std::map<std::string, std::filesystem::path> overrides;
+    std::string skipReason;  // non-empty: not measured, reported with this note
+};
+
+struct Measurement {
+    std::string scene;       // scene name (file stem)
+    std::string variant;
+    std::string sweep;
+    std::string mode;        // modeName(): "generic", "generic-picture", "specialised-full" or "specialised"
+    int width = 0, height = 0;  // rendered size (the reference's size for every variant but resolution ones)
+    int spp = 1;
+    int maxBounces = 0;
+    int frames = 0;          // timed frames
+    double msMedian = 0, msMin = 0, msMax = 0;  // time per frame, by `clock`
+    std::string clock;       // "gpu" (GL_TIME_ELAPSED), "wall" or "cpu" (see Clock)
+    double compileMs = 0;    // building the program (compile + link), wall clock
+    ImageDiff error;         // against the converged CPU reference (upscaled first for resolution variants)
+    bool onFront = false;    // on the Pareto front of (msMedian, error.meanLsb) within its scene
+    bool skipped = false;
+    std::string note;        // why it was skipped, or how it was timed
+};
+
+// How a frame is timed: GL_TIME_ELAPSED queries; the wall clock around
+// draw + glFinish (software rasterisers, whose queries miss the worker
+// threads); or the CPU time of the whole process around draw + glFinish
+// (software rasterisers on a busy machine: other processes do not inflate it,
+// but it adds up the worker threads, so it is about cores x wall time).
+enum class Clock { Auto, Gpu, Wall, Cpu };
+
+struct Options {
+    std::vector<std::string> scenes;  // scene files; empty: scenes/lecture.json
+    int width = 320, height = 240;    // size of every measurement and of the reference
+    int warmup = 2;                   // untimed frames first (llvmpipe compiles on the first draw)
+    int frames = 5;                   // timed frames; the median is reported
+    int referenceSpp = 16;            // samples per pixel of the converged CPU reference
+    // Which groups to run: modes, bounces, spp, resolution, models, strategies (empty: all).
+    std::set<std::string> sweeps;
+    std::string backend = "auto";
+    Clock clock = Clock::Auto;        // Auto: Wall on llvmpipe and other software rasterisers, else Gpu
+    std::filesystem::path implDir;    // empty: solutions/
+};
+
+// Every group name Options::sweeps accepts, in the order they run.
+const std::vector<std::string>& sweepNames();
+
+// The four whole-shader modes, from the flags of a Variant:
+//   generic           shaderDefinesFor(scene, false): `raylab render --generic`
+//   generic-picture   the same plus pictureOnlyDefines()
+//   specialised-full  shaderDefinesFor(scene, true): every view, as a live window compiles it
+//   specialised       shaderDefinesFor(scene, true) plus pictureOnlyDefines(): `raylab render`
+std::string modeName(bool specialised, bool picture);
+
+// The variants of one scene (already at the bench size), in table order.
+// Variants that cannot run here (a model variant not in GLSL yet, a missing
+// strategy file) come back with skipReason set.
+std::vector<Variant> makeVariants(const Scene& scene, const Options& options);
+
+// Runs everything (creates its own headless context); progress lines go to `log`.
+// Marks each scene's Pareto front. Throws rl::Error for a bad scene file or options.
+std::vector<Measurement> runBench(const Options& options, std::ostream& log);
+
+// Nearest-neighbour resampling to width x height (display and radiance), for
+// comparing a lower-resolution render with the full-size reference.
+Rendering resampleNearest(const Rendering& image, int width, int height);
+
+// Marks Measurement::onFront per scene (skipped rows are never on it).
+void markParetoFronts(std::vector<Measurement>& measurements);
+
+// Specialised against generic at the scene's own settings, with the two
+// intermediate modes that split the speed-up into its parts (null if not run).
+struct ModeComparison {
+    std::string scene;
+    const Measurement* generic = nullptr;
+    const Measurement* specialised = nullptr;
+    const Measurement* genericPicture = nullptr;
+    const Measurement* specialisedFull = nullptr;
+    double speedup() const;  // generic ms / specialised ms
+};
+std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements);
+
+// Output. The CSV has one row per measurement and at least the columns
+// scene, variant, width, height, ms_median, err_mean_lsb, err_p99_lsb,
+// off_frac, relmse, psnr.
+std::string formatTable(const std::vector<Measurement>& measurements);
+std::string formatComparisons(const std::vector<Measurement>& measurements);
+std::string toCsv(const std::vector<Measurement>& measurements);
+void writeTextFile(const std::filesystem::path& path, const std::string& text);  // throws rl::Error
+
+// Error against time, one panel per scene, the Pareto front marked (svg_plot.cpp).
+std::string errorTimeSvg(const std::vector<Measurement>& measurements);
+
+}  // namespace rl::bench

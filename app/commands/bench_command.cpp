@@ -1,0 +1,95 @@
+// raylab bench [SCENE...] [--csv FILE] [--plot FILE] [--size WxH] [--warmup N] [--frames N]
+//              [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
+// GPU time per frame against error for every variant and setting
+// (app/bench/bench.h), as a table, a CSV and an SVG plot with the Pareto front.
+#include "commands/commands.h"
+
+#include "bench/bench.h"
+#include "core/error.h"
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace rl {
+namespace {
+
+struct BenchCommandOptions {
+    std::vector<std::string> scenes;
+    std::string csv;
+    std::string plot;
+    std::string size = "320x240";
+    int warmup = 2;
+    int frames = 5;
+    int referenceSpp = 16;
+    std::string sweeps;
+    std::string backend = "auto";
+    std::string clock = "auto";
+    std::string impl;
+};
+
+std::set<std::string> splitList(const std::string& text) {
+    std::set<std::string> out;
+    std::stringstream s(text);
+    std::string item;
+    while (std::getline(s, item, ','))
+        if (!item.empty()) out.insert(item);
+    return out;
+}
+
+void runBenchCommand(const BenchCommandOptions& o) {
+    bench::Options options;
+    options.scenes = o.scenes;
+    Size size = parseSize(o.size);
+    options.width = size.width;
+    options.height = size.height;
+    options.warmup = o.warmup;
+    options.frames = o.frames;
+    options.referenceSpp = o.referenceSpp;
+    options.sweeps = splitList(o.sweeps);
+    options.backend = o.backend;
+    options.implDir = o.impl;
+    if (o.clock == "auto") options.clock = bench::Clock::Auto;
+    else if (o.clock == "gpu") options.clock = bench::Clock::Gpu;
+    else if (o.clock == "wall") options.clock = bench::Clock::Wall;
+    else if (o.clock == "cpu") options.clock = bench::Clock::Cpu;
+    else throw Error("--clock: expected auto, gpu, wall or cpu, not '" + o.clock + "'");
+
+    std::vector<bench::Measurement> results = bench::runBench(options, std::cerr);
+    std::cout << bench::formatTable(results) << "\n" << bench::formatComparisons(results);
+    if (!o.csv.empty()) {
+        bench::writeTextFile(o.csv, bench::toCsv(results));
+        std::cout << std::filesystem::absolute(o.csv).lexically_normal().string() << "\n";
+    }
+    if (!o.plot.empty()) {
+        bench::writeTextFile(o.plot, bench::errorTimeSvg(results));
+        std::cout << std::filesystem::absolute(o.plot).lexically_normal().string() << "\n";
+    }
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+    auto options = std::make_shared<BenchCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("bench", "Measure GPU time per frame against error for shader variants and settings");
+    cmd->add_option("scenes", options->scenes, "Scene files (.json); scenes/lecture.json when omitted");
+    cmd->add_option("--csv", options->csv, "Write one CSV row per measurement to FILE");
+    cmd->add_option("--plot", options->plot, "Write error against time, Pareto front marked, as SVG to FILE");
+    cmd->add_option("--size", options->size, "Size of every measurement and of the reference, WIDTHxHEIGHT")
+        ->capture_default_str();
+    cmd->add_option("--warmup", options->warmup, "Untimed frames before timing each variant")->capture_default_str();
+    cmd->add_option("--frames", options->frames, "Timed frames per variant (the median is reported)")
+        ->capture_default_str();
+    cmd->add_option("--reference-spp", options->referenceSpp, "Samples per pixel of the converged CPU reference")
+        ->capture_default_str();
+    cmd->add_option("--sweeps", options->sweeps,
+                    "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all)");
+    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--clock", options->clock,
+                    "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")
+        ->capture_default_str();
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
+    cmd->callback([options] { runBenchCommand(*options); });
+}
+
+}  // namespace rl

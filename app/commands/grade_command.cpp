@@ -1,0 +1,120 @@
+// raylab grade SUBMISSIONS -o OUT [--jobs N] [--timeout S] [--rubric FILE]
+//              [--id-column NAME] [--shard I/N] [--force]
+// raylab grade merge SHARD_OUT... -o OUT
+// raylab grade --gradescope [--gradescope-root DIR]
+// Batch grading for instructors (docs/grading.md): every student of
+// SUBMISSIONS graded in isolated processes, grades.csv, Gradescope
+// results.json per student, an HTML report and summary.json in OUT.
+#include "commands/commands.h"
+
+#include "core/error.h"
+#include "grading/grade_run.h"
+#include "grading/merge.h"
+#include "grading/rubric.h"
+
+#include <cstdlib>
+#include <iostream>
+
+namespace rl {
+namespace {
+
+struct GradeCommandOptions {
+    std::string submissions;
+    std::string out;
+    int jobs = 1;
+    double timeout = 30;
+    std::string rubric;
+    std::string idColumn;
+    std::string shard;
+    bool force = false;
+    std::string backend = "auto";
+    bool gradescope = false;
+    std::string gradescopeRoot;
+    std::vector<std::string> mergeInputs;
+    std::string mergeOut;
+};
+
+void parseShard(const std::string& text, int& index, int& count) {
+    auto slash = text.find('/');
+    try {
+        if (slash == std::string::npos) throw std::invalid_argument(text);
+        std::size_t used = 0;
+        index = std::stoi(text.substr(0, slash), &used);
+        if (used != slash) throw std::invalid_argument(text);
+        count = std::stoi(text.substr(slash + 1), &used);
+        if (used != text.size() - slash - 1) throw std::invalid_argument(text);
+    } catch (const std::logic_error&) {
+        throw Error("--shard: expected I/N, e.g. 2/8, got '" + text + "'");
+    }
+    if (count < 1 || index < 1 || index > count)
+        throw Error("--shard: " + text + " is not a slice: I must be between 1 and N");
+}
+
+GradeSettings settingsFrom(const GradeCommandOptions& o) {
+    GradeSettings s;
+    if (o.jobs < 1) throw Error("--jobs: must be at least 1");
+    if (!(o.timeout > 0)) throw Error("--timeout: must be more than 0 seconds");
+    s.rubric = loadRubric(o.rubric.empty() ? defaultRubricPath() : std::filesystem::path(o.rubric));
+    if (!o.idColumn.empty()) s.rubric.idColumn = o.idColumn;
+    s.out = o.out;
+    s.jobs = o.jobs;
+    s.timeoutSeconds = o.timeout;
+    s.force = o.force;
+    s.backend = o.backend;
+    return s;
+}
+
+int runGradeCommand(const GradeCommandOptions& o, bool merge) {
+    if (merge) {
+        if (o.mergeOut.empty()) throw Error("grade merge: -o OUT is required");
+        std::vector<std::filesystem::path> inputs(o.mergeInputs.begin(), o.mergeInputs.end());
+        mergeGradeOutputs(inputs, o.mergeOut, std::cout);
+        return 0;
+    }
+    if (o.gradescope) {
+        std::string root = o.gradescopeRoot;
+        if (root.empty()) {
+            const char* env = std::getenv("RAYLAB_GRADESCOPE_ROOT");
+            root = env && *env ? env : "/autograder";
+        }
+        GradeCommandOptions withOut = o;
+        withOut.out = root + "/results/raylab";
+        return runGradescope(root, settingsFrom(withOut), std::cout);
+    }
+    if (o.submissions.empty()) throw Error("grade: name the SUBMISSIONS folder (or use --gradescope)");
+    if (o.out.empty()) throw Error("grade: -o OUT is required");
+    GradeRunOptions run;
+    run.submissions = o.submissions;
+    run.settings = settingsFrom(o);
+    if (!o.shard.empty()) parseShard(o.shard, run.shardIndex, run.shardCount);
+    return runGrade(run, std::cout);
+}
+
+}  // namespace
+
+void addGradeCommand(CLI::App& app) {
+    auto o = std::make_shared<GradeCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("grade", "Grade a class of submissions: grades.csv, Gradescope JSON, HTML report");
+    cmd->add_option("submissions", o->submissions, "Folder with one folder or .zip per student");
+    cmd->add_option("-o,--output", o->out, "Output folder (a second run skips students already graded there)");
+    cmd->add_option("-j,--jobs", o->jobs, "Students graded at the same time")->capture_default_str();
+    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")->capture_default_str();
+    cmd->add_option("--rubric", o->rubric, "Rubric JSON (default: grading/default-rubric.json)");
+    cmd->add_option("--id-column", o->idColumn, "Header of the id column in grades.csv (e.g. Username)");
+    cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`");
+    cmd->add_flag("--force", o->force, "Grade again students already graded in OUT");
+    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_flag("--gradescope", o->gradescope,
+                  "Run as Gradescope's autograder: ROOT/submission in, ROOT/results/results.json out");
+    cmd->add_option("--gradescope-root", o->gradescopeRoot,
+                    "ROOT for --gradescope (default: $RAYLAB_GRADESCOPE_ROOT, else /autograder)");
+    CLI::App* merge = cmd->add_subcommand("merge", "Join the outputs of `grade --shard I/N` runs into one");
+    merge->add_option("shards", o->mergeInputs, "Output folders of the shards")->required();
+    merge->add_option("-o,--output", o->mergeOut, "Merged output folder")->required();
+    cmd->callback([o, merge] {
+        int status = runGradeCommand(*o, merge->parsed());
+        if (status != 0) throw CLI::RuntimeError(status);
+    });
+}
+
+}  // namespace rl

@@ -1,0 +1,254 @@
+#include "grading/html_report.h"
+
+#include "checks/exercise_registry.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace rl {
+
+using nlohmann::json;
+
+namespace {
+
+const char* kStyle = R"(<style>
+body{font:14px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;margin:24px;color:#1d1d1f;background:#fff}
+h1{font-size:22px;margin:0 0 8px} h2{font-size:17px;margin:28px 0 6px;border-bottom:1px solid #ddd;padding-bottom:4px}
+table{border-collapse:collapse;margin:8px 0} th,td{border:1px solid #d0d0d0;padding:4px 8px;text-align:right;vertical-align:top}
+th{background:#f2f2f2;font-weight:600} td{white-space:nowrap} td.l,th.l{text-align:left}
+td.wrap{white-space:normal;min-width:16em}
+table.sortable th{cursor:pointer;user-select:none} table.sortable th:hover{background:#e4e4e4}
+th[aria-sort=ascending]::after{content:" \25B2"} th[aria-sort=descending]::after{content:" \25BC"}
+.s-pass{background:#dff3df} .s-fail{background:#ffe9c2} .s-error{background:#f9d0d0;color:#7a0000} .s-none{background:#eee;color:#666}
+tr.problem td.id{border-left:4px solid #d33}
+.badge{display:inline-block;padding:1px 8px;border-radius:9px;font-size:12px;font-weight:600;vertical-align:middle}
+.notes{background:#fff6d8;border:1px solid #e8d48a;padding:6px 12px;margin:8px 0}
+.muted{color:#666} pre{background:#f7f7f7;border:1px solid #ddd;padding:8px;overflow-x:auto;font-size:12px}
+.scenes{display:flex;flex-wrap:wrap;gap:14px} figure{margin:0;border:1px solid #ddd;padding:6px}
+figure .row{display:flex;gap:6px} figure .img{text-align:center;font-size:11px;color:#555}
+figure img{height:108px;image-rendering:pixelated;display:block;background:#888}
+figcaption{font-size:12px;margin-top:4px}
+</style>
+)";
+
+// Sorts the table whose header was clicked: numbers by data-v, text otherwise.
+const char* kSortScript = R"(<script>
+document.querySelectorAll('table.sortable th').forEach(function (th, col) {
+  th.addEventListener('click', function () {
+    var table = th.closest('table'), body = table.tBodies[0];
+    var ascending = th.getAttribute('aria-sort') !== 'ascending';
+    table.querySelectorAll('th').forEach(function (h) { h.removeAttribute('aria-sort'); });
+    th.setAttribute('aria-sort', ascending ? 'ascending' : 'descending');
+    var numeric = th.dataset.type === 'num';
+    var key = function (row) { var c = row.cells[col]; return c.dataset.v !== undefined ? c.dataset.v : c.textContent; };
+    var rows = Array.prototype.slice.call(body.rows);
+    rows.sort(function (a, b) {
+      var x = key(a), y = key(b);
+      var d = numeric ? parseFloat(x) - parseFloat(y) : x.localeCompare(y);
+      return ascending ? d : -d;
+    });
+    rows.forEach(function (r) { body.appendChild(r); });
+  });
+});
+</script>
+)";
+
+std::string statusClass(const ExerciseGrade* g) {
+    if (!g) return "s-none";
+    std::string s = gradeStatus(*g);
+    if (s == "PASS") return "s-pass";
+    if (s == "FAIL") return "s-fail";
+    if (s == "NOT STARTED") return "s-none";
+    return "s-error";
+}
+
+std::string fixed(double x, int decimals) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", decimals, x);
+    return b;
+}
+
+// Lets a long column name ("08-cook-torrance") wrap after its hyphens.
+std::string breakable(const std::string& html) {
+    std::string out;
+    for (char c : html) out += c == '-' ? std::string("-<wbr>") : std::string(1, c);
+    return out;
+}
+
+std::string pageHead(const std::string& title) {
+    return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
+           "</title>\n" + kStyle + "</head>\n<body>\n";
+}
+
+// An image path stored relative to the student's folder, as a URL.
+std::string imageUrl(const std::string& path) {
+    std::string url, segment;
+    for (char c : path) {
+        if (c == '/') {
+            url += (segment == ".." ? segment : urlSegment(segment)) + "/";
+            segment.clear();
+        } else {
+            segment += c;
+        }
+    }
+    return url + urlSegment(segment);
+}
+
+}  // namespace
+
+std::string htmlEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&#39;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string urlSegment(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+            out += char(c);
+        } else {
+            char b[4];
+            std::snprintf(b, sizeof b, "%%%02X", c);
+            out += b;
+        }
+    }
+    return out;
+}
+
+std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>& grades, const json& summary) {
+    std::string max = formatPoints(rubric.maxHundredths());
+    std::string html = pageHead("raylab grades");
+    html += "<h1>raylab grades</h1>\n<p>";
+    html += std::to_string(grades.size()) + " students &middot; mean " +
+            fixed(summary.value("mean_total", 0.0), 2) + " / " + max + " &middot; " +
+            std::to_string(summary.value("full_marks", 0)) + " at full marks &middot; exercises: ";
+    bool first = true;
+    const json outcomes = summary.value("exercise_outcomes", json::object());
+    for (const auto& [status, count] : outcomes.items()) {
+        html += (first ? "" : ", ") + htmlEscape(status) + " " + std::to_string(count.get<int>());
+        first = false;
+    }
+    html += "</p>\n<p class=\"muted\">Click a column header to sort. Each cell's tooltip gives the exercise's status "
+            "and reason; the student's page has the renders, differences and logs. "
+            "Files: <a href=\"grades.csv\">grades.csv</a>, <a href=\"summary.json\">summary.json</a>, "
+            "<a href=\"rubric.json\">rubric.json</a>.</p>\n";
+    html += "<table class=\"sortable\" id=\"grades\">\n<thead><tr><th class=\"l\" data-type=\"text\">" +
+            htmlEscape(rubric.idColumn) + "</th>";
+    for (const RubricExercise& e : rubric.exercises)
+        html += "<th data-type=\"num\">" + breakable(htmlEscape(e.column)) + "<br><span class=\"muted\">/&nbsp;" +
+                formatPoints(std::lround(e.weight * 100)) + "</span></th>";
+    html += "<th data-type=\"num\">" + htmlEscape(rubric.totalColumn) + "<br><span class=\"muted\">/&nbsp;" + max +
+            "</span></th><th data-type=\"num\">Prob&shy;lems</th><th class=\"l\" data-type=\"text\">Notes</th></tr></thead>\n<tbody>\n";
+    for (const StudentGrade& g : grades) {
+        StudentScore s = scoreStudent(rubric, g);
+        int problems = 0;
+        std::string cells;
+        for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
+            const ExerciseGrade* x = g.find(rubric.exercises[k].id);
+            std::string status = x ? gradeStatus(*x) : "NOT STARTED";
+            problems += status != "PASS";
+            std::string tip = status + (x && !x->report.message.empty() ? ": " + x->report.message : "");
+            cells += "<td class=\"" + statusClass(x) + "\" data-v=\"" + formatPoints(s.hundredths[k]) + "\" title=\"" +
+                     htmlEscape(tip) + "\">" + formatPoints(s.hundredths[k]) + "</td>";
+        }
+        std::string notes;
+        for (const std::string& n : g.notes) notes += (notes.empty() ? "" : "; ") + n;
+        html += std::string("<tr") + (problems ? " class=\"problem\"" : "") + "><td class=\"l id\"><a href=\"" +
+                urlSegment(g.id) + "/index.html\">" + htmlEscape(g.id) + "</a></td>" + cells + "<td data-v=\"" +
+                formatPoints(s.total) + "\"><b>" + formatPoints(s.total) + "</b></td><td data-v=\"" +
+                std::to_string(problems) + "\"" + (problems ? " class=\"s-fail\"" : "") + ">" +
+                std::to_string(problems) + "</td><td class=\"l wrap\">" + htmlEscape(notes) + "</td></tr>\n";
+    }
+    html += "</tbody>\n</table>\n";
+    html += kSortScript;
+    html += "</body>\n</html>\n";
+    return html;
+}
+
+std::string studentPage(const Rubric& rubric, const StudentGrade& g) {
+    StudentScore s = scoreStudent(rubric, g);
+    std::string html = pageHead(g.id + " - raylab grade");
+    html += "<p><a href=\"../index.html\">&larr; all students</a></p>\n";
+    html += "<h1>" + htmlEscape(g.id) + ": " + formatPoints(s.total) + " / " + formatPoints(rubric.maxHundredths()) +
+            "</h1>\n<p class=\"muted\">Submitted as " + htmlEscape(g.source) + "; graded in " + fixed(g.seconds, 1) +
+            " s. The files graded are in <a href=\"submission/\">submission/</a>.</p>\n";
+    if (!g.notes.empty()) {
+        html += "<div class=\"notes\"><b>About the submission</b><ul>\n";
+        for (const std::string& n : g.notes) html += "<li>" + htmlEscape(n) + "</li>\n";
+        html += "</ul></div>\n";
+    }
+    html += "<table>\n<thead><tr><th class=\"l\">Exercise</th><th class=\"l\">Status</th><th>Points</th><th "
+            "class=\"l\">Reason</th></tr></thead>\n<tbody>\n";
+    for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
+        const RubricExercise& e = rubric.exercises[k];
+        const ExerciseGrade* x = g.find(e.id);
+        html += "<tr><td class=\"l\"><a href=\"#" + urlSegment(e.id) + "\">" + htmlEscape(e.id) + "</a></td><td class=\"l " +
+                statusClass(x) + "\">" + htmlEscape(x ? gradeStatus(*x) : "NOT STARTED") + "</td><td>" +
+                formatPoints(s.hundredths[k]) + " / " + formatPoints(std::lround(e.weight * 100)) +
+                "</td><td class=\"l wrap\">" + htmlEscape(x ? x->report.message : "") + "</td></tr>\n";
+    }
+    html += "</tbody>\n</table>\n";
+
+    for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
+        const RubricExercise& e = rubric.exercises[k];
+        const ExerciseGrade* x = g.find(e.id);
+        const ExerciseInfo& info = findExercise(e.id);
+        html += "<h2 id=\"" + htmlEscape(urlSegment(e.id)) + "\">" + htmlEscape(e.id + ": " + info.title) +
+                " <span class=\"badge " + statusClass(x) + "\">" + htmlEscape(x ? gradeStatus(*x) : "NOT STARTED") +
+                "</span> " + formatPoints(s.hundredths[k]) + " / " + formatPoints(std::lround(e.weight * 100)) +
+                "</h2>\n";
+        if (!x) continue;
+        const ExerciseReport& r = x->report;
+        if (!r.message.empty()) html += "<p>" + htmlEscape(r.message) + "</p>\n";
+        if (!r.hint.empty()) html += "<p class=\"muted\">hint: " + htmlEscape(r.hint) + "</p>\n";
+        if (!r.probes.empty()) {
+            html += "<table><thead><tr><th class=\"l\">Probe</th><th>Cases passed</th></tr></thead><tbody>\n";
+            for (const ProbeSummary& p : r.probes)
+                html += "<tr><td class=\"l\">" + htmlEscape(p.name) + "</td><td class=\"" +
+                        (p.passed == p.total ? "s-pass" : "s-fail") + "\">" + std::to_string(p.passed) + " / " +
+                        std::to_string(p.total) + "</td></tr>\n";
+            html += "</tbody></table>\n";
+        }
+        if (!r.images.empty()) {
+            html += "<div class=\"scenes\">\n";
+            for (const ImageSummary& i : r.images) {
+                html += "<figure><div class=\"row\">";
+                for (const auto& [label, path] : {std::pair<const char*, const std::string&>{"yours", i.gotPng},
+                                                  {"reference", i.expectedPng},
+                                                  {"difference", i.diffPng}}) {
+                    html += "<div class=\"img\">";
+                    if (!path.empty())
+                        html += "<img src=\"" + htmlEscape(imageUrl(path)) + "\" alt=\"" + htmlEscape(i.scene) + " " +
+                                label + "\">";
+                    html += std::string(label) + "</div>";
+                }
+                html += "</div><figcaption><b class=\"badge " + std::string(i.passed ? "s-pass" : "s-fail") + "\">" +
+                        (i.passed ? "PASS" : "FAIL") + "</b> " + htmlEscape(i.scene) + ": " +
+                        fixed(100 * i.offFraction, 2) + "% of pixels off, mean " + fixed(i.meanLsb, 2) + "/255" +
+                        (i.nonFinite ? ", " + std::to_string(i.nonFinite) + " NaN/Inf" : "") +
+                        "</figcaption></figure>\n";
+            }
+            html += "</div>\n";
+        }
+        if (!r.details.empty())
+            html += std::string("<details") + (r.status == CheckStatus::CompileError ? " open" : "") +
+                    "><summary>" + std::string(r.status == CheckStatus::CompileError ? "Compile log" : "Details") + "</summary><pre>" + htmlEscape(r.details) + "</pre></details>\n";
+    }
+    html += "</body>\n</html>\n";
+    return html;
+}
+
+}  // namespace rl

@@ -1,0 +1,49 @@
+#include "grading/outputs.h"
+
+#include "core/error.h"
+#include "core/image.h"
+#include "grading/atomic_file.h"
+#include "grading/grades_csv.h"
+#include "grading/gradescope_results.h"
+#include "grading/html_report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace rl {
+
+std::string referenceImagePath(const std::string& scene) { return "_reference/" + scene + ".png"; }
+
+void writeReferenceImages(const fs::path& out, const std::vector<CheckScene>& scenes) {
+    std::error_code ec;
+    fs::create_directories(out / "_reference", ec);
+    for (const CheckScene& c : scenes) {
+        // Written beside, then renamed: a concurrent shard or reader never sees half a PNG.
+        fs::path target = out / referenceImagePath(c.name);
+        fs::path temp = target;
+        temp += ".tmp-" + std::to_string(::getpid());
+        writePng(temp.string(), c.reference.display);
+        fs::rename(temp, target, ec);
+        if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
+    }
+}
+
+void writeStudentOutputs(const fs::path& out, const Rubric& rubric, const StudentGrade& grade) {
+    fs::path dir = studentDir(out, grade.id);
+    writeFileAtomic(dir / "results.json", gradescopeResults(rubric, grade).dump(2) + "\n");
+    writeFileAtomic(dir / "index.html", studentPage(rubric, grade));
+}
+
+void writeClassOutputs(const fs::path& out, const Rubric& rubric, const std::vector<StudentGrade>& grades,
+                       const nlohmann::json& summary) {
+    for (const StudentGrade& g : grades) writeStudentOutputs(out, rubric, g);
+    writeFileAtomic(out / "rubric.json", toJson(rubric).dump(2) + "\n");
+    writeFileAtomic(out / "grades.csv", gradesCsv(rubric, grades));
+    writeFileAtomic(out / "summary.json", summary.dump(2) + "\n");
+    writeFileAtomic(out / "index.html", classIndexPage(rubric, grades, summary));
+}
+
+}  // namespace rl

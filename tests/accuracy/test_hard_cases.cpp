@@ -1,0 +1,420 @@
+// The hard numerical cases of issue #6 (scenes/hard/README.md): each scene
+// rendered by the GLSL ray tracer and by the double-precision CPU reference,
+// with the reference model and with every model variant, within the case's
+// budget; free of NaN and Inf; the case's own expected behaviour; and, so that
+// each case is known to be able to fail, the naive formulations it exists to
+// catch (tests/mutants/, tests/accuracy/naive/) must break it.
+//
+// Budgets are shares of pixels off by more than 1/255 in any channel
+// (ImageDiff::offFraction). The aim is 0.25%; where a case states more, its
+// row says why (measured values in scenes/hard/README.md).
+#include "accuracy/accuracy_support.h"
+
+#include "core/paths.h"
+#include "core/scene_transform.h"
+#include "reference/cpu_reference.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+using namespace rl;
+using glm::dvec3;
+
+constexpr double kAim = 0.0025;  // the issue's aim: 0.25% of the pixels off by more than 1/255
+
+// What a case checks beyond the budget, given the scene and the GLSL
+// rendering; returns "" when the behaviour is right, else what is wrong.
+using BehaviourCheck = std::function<std::string(const Scene&, const Rendering&)>;
+
+struct HardCase {
+    std::string name;            // the CTest name: HardCases/HardCase.<test>/<name>
+    std::string file;            // in scenes/hard/
+    double budget = kAim;        // GLSL vs CPU reference
+    double offsetBudget = kAim;  // CPU reference (offset 2^-19) vs the same with offset 2^-40
+    std::vector<std::string> naive;  // files, relative to the source root, that must break the case
+    BehaviourCheck check;        // the case's expected behaviour, if it has one of its own
+    double invarianceBudget = -1;  // scaled / translated cases: GLSL vs the CPU render of contact.json
+
+    Scene scene() const { return acc::hardScene(file); }
+};
+
+std::ostream& operator<<(std::ostream& out, const HardCase& c) { return out << c.name; }
+
+// ---- expected behaviours -------------------------------------------------------------------
+
+std::array<std::uint8_t, 3> backgroundPixel(const Scene& scene) {
+    dvec3 c = ref::displayEncode(scene.render.background, scene.render);
+    return {quantize8(c.x), quantize8(c.y), quantize8(c.z)};
+}
+
+bool isBackground(const Rendering& r, int x, int y, const std::array<std::uint8_t, 3>& background) {
+    const std::uint8_t* p = r.display.at(x, y);
+    return p[0] == background[0] && p[1] == background[1] && p[2] == background[2];
+}
+
+// Nothing in front of the camera: every pixel is exactly the background.
+std::string onlyBackground(const Scene& scene, const Rendering& gl) {
+    auto background = backgroundPixel(scene);
+    int other = 0;
+    for (int y = 0; y < gl.display.height; ++y)
+        for (int x = 0; x < gl.display.width; ++x) other += !isBackground(gl, x, y, background);
+    return other ? std::to_string(other) + " pixels are not the background" : "";
+}
+
+// Inside a closed sphere every camera ray hits something: no background.
+std::string noBackground(const Scene& scene, const Rendering& gl) {
+    auto background = backgroundPixel(scene);
+    int seen = 0;
+    for (int y = 0; y < gl.display.height; ++y)
+        for (int x = 0; x < gl.display.width; ++x) seen += isBackground(gl, x, y, background);
+    return seen ? std::to_string(seen) + " pixels show the background from inside a closed sphere" : "";
+}
+
+// The far sphere (radius 1, the camera looking at its centre) covers exactly
+// the pixels whose ray makes an angle below asin(1/d) with the view axis:
+// with x, y of the spec's camera, tan(angle) = sqrt(x^2 + y^2). Pixels within
+// 0.05 pixel of that silhouette may go either way.
+std::string farSphereCoverage(const Scene& scene, const Rendering& gl) {
+    const Sphere& sphere = scene.spheres.at(0);
+    double distance = glm::length(sphere.center - scene.camera.position);
+    double edge = std::tan(std::asin(sphere.radius / distance));
+    double t = std::tan(0.5 * scene.camera.fovYDegrees * ref::kPi / 180.0);
+    int w = scene.render.width, h = scene.render.height;
+    double pixel = 2.0 * t / h;  // one pixel in units of tan(angle) near the axis
+    auto background = backgroundPixel(scene);
+    int wrong = 0, inside = 0;
+    for (int y = 0; y < h; ++y)
+        for (int i = 0; i < w; ++i) {
+            int j = h - 1 - y;
+            double px = (2.0 * (i + 0.5) / w - 1.0) * t * w / h, py = (2.0 * (j + 0.5) / h - 1.0) * t;
+            double rho = std::sqrt(px * px + py * py);
+            bool hit = rho < edge;
+            inside += hit;
+            if (hit == isBackground(gl, i, y, background) && std::fabs(rho - edge) > 0.05 * pixel) ++wrong;
+        }
+    if (inside < w * h / 10) return "the disc covers only " + std::to_string(inside) + " pixels: not a test";
+    return wrong ? std::to_string(wrong) + " pixels disagree with the analytic silhouette" : "";
+}
+
+// The roughness clamp: roughness 0 shades exactly like roughness 0.045.
+std::string roughnessZeroIsClamped(const Scene& scene, const Rendering& gl) {
+    Scene clamped = scene;
+    for (Sphere& s : clamped.spheres)
+        if (s.material.roughness < ref::kMinRoughness) s.material.roughness = ref::kMinRoughness;
+    Rendering expected = acc::renderGlsl(clamped);
+    if (gl.display.rgb != expected.display.rgb) return "roughness 0 does not render like roughness 0.045";
+    return "";
+}
+
+// No pixel brighter than all its neighbours that the double-precision
+// reference does not have too (a grazing 1/NoV or 1/NoL blow-up).
+std::string noNewFireflies(const Scene& scene, const Rendering& gl) {
+    long count = acc::newFireflies(gl.radiance, ref::renderCpu(scene).radiance);
+    return count ? std::to_string(count) + " fireflies that the reference does not have" : "";
+}
+
+// ---- the suite -------------------------------------------------------------------------------
+
+const std::string kMutants = "tests/mutants/";
+const std::string kNaive = "tests/accuracy/naive/";
+
+std::vector<HardCase> hardCases() {
+    std::vector<HardCase> cases;
+    auto add = [&](HardCase c) { cases.push_back(std::move(c)); };
+    for (const char* d : {"1e3", "3e3", "1e4"})
+        add({std::string("far_sphere_") + d, std::string("far-sphere-") + d + ".json", kAim, kAim,
+             {kMutants + "02-intersect--textbook-quadratic.glsl"}, farSphereCoverage});
+    // The camera 0.35 above the ground is known to float32 only up to half an
+    // ulp of the centre's 1e4 (5e-4) or 1e5 (4e-3): hit distances on the ground
+    // carry 0.1% and 1% error, moving shadow and reflection edges by up to a
+    // pixel (measured 0.22-0.26% and 0.30-0.40% over the model variants; the
+    // same scene seen from 1.5 above: 0.04% and 0.01%).
+    // The offset of 2^-19 of the hit magnitude (2 R) is 0.04 and 0.38 there:
+    // it loses the contact shadows and reflections of the small spheres
+    // (measured 5.3% and 19.8% of the pixels against a 2^-40 offset).
+    add({"ground_1e4", "ground-1e4.json", 0.0035, 0.06,
+         {kMutants + "04-shadows--no-offset.glsl", kNaive + "04-shadows--offset-from-p-only.glsl"}, nullptr});
+    add({"ground_1e5", "ground-1e5.json", 0.005, 0.21,
+         {kMutants + "04-shadows--no-offset.glsl", kNaive + "04-shadows--offset-from-p-only.glsl"}, nullptr});
+    add({"contact", "contact.json", kAim, kAim, {kMutants + "04-shadows--no-offset.glsl"}, nullptr});
+    add({"contact_scaled_1em3", "contact-scaled-1e-3.json", kAim, kAim, {kMutants + "04-shadows--fixed-offset.glsl"},
+         nullptr, kAim});
+    add({"contact_scaled_1e3", "contact-scaled-1e3.json", kAim, kAim, {kMutants + "04-shadows--fixed-offset.glsl"},
+         nullptr, kAim});
+    // Translated by 1e4 the offset is 2^-19 of 1e4 = 0.02 world units, 1/15 of
+    // the smallest sphere: contact shadows and reflections move (measured 1.1%
+    // against the untranslated picture, 1.0% against a 2^-40 offset).
+    add({"contact_translated_1e4", "contact-translated-1e4.json", kAim, 0.015,
+         {kMutants + "04-shadows--fixed-offset.glsl", kMutants + "04-shadows--no-offset.glsl"}, nullptr, 0.015});
+    // Fails with solutions/ as they are (25% off: acne on the second hits inside
+    // the sphere): traceRay() bounces along an unnormalised reflect(); see
+    // ProposedFixNormalisedReflectionMatchesInsideASphere below.
+    add({"camera_inside", "camera-inside.json", kAim, kAim, {kMutants + "02-intersect--near-root-inside.glsl"},
+         noBackground});
+    // From the centre of a sphere b = f.d = 0 for every ray: sign(b) must not be 0.
+    // No bounces, so that the reflect() bug of camera_inside stays out of it.
+    add({"camera_at_centre", "camera-at-centre.json", kAim, kAim, {kNaive + "02-intersect--glsl-sign.glsl"},
+         noBackground});
+    add({"tangent_rays", "tangent-rays.json", kAim, kAim, {kNaive + "08-cook-torrance--no-nov-clamp.glsl"},
+         nullptr});
+    add({"behind_camera", "behind-camera.json", kAim, 0.005, {kNaive + "02-intersect--sign-of-b.glsl"}, nullptr});
+    add({"behind_camera_only", "behind-camera-only.json", kAim, kAim, {kNaive + "02-intersect--sign-of-b.glsl"},
+         onlyBackground});
+    add({"overlapping", "overlapping.json", kAim, kAim, {kNaive + "02-intersect--far-root-first.glsl"}, nullptr});
+    add({"no_spheres", "no-spheres.json", kAim, kAim, {kMutants + "10-display--pow-gamma.glsl"}, onlyBackground});
+    add({"no_lights", "no-lights.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"},
+         nullptr});
+    add({"roughness_0", "roughness-0.json", kAim, kAim, {kNaive + "08-cook-torrance--no-roughness-clamp.glsl"},
+         roughnessZeroIsClamped});
+    add({"roughness_1", "roughness-1.json", kAim, kAim, {kMutants + "05-ggx--missing-pi.glsl"}, nullptr});
+    add({"metallic_0_and_1", "metallic-0-and-1.json", kAim, kAim,
+         {kMutants + "08-cook-torrance--metals-diffuse.glsl"}, nullptr});
+    add({"f0_one", "f0-one.json", kAim, kAim, {kMutants + "08-cook-torrance--roughness-fresnel-direct.glsl"},
+         nullptr});
+    // The ground (radius 1000, offset 2^-19 of 2000 = 0.004) moves the
+    // reflections of the spheres' lower edges a little (measured 1.0%).
+    add({"grazing_view", "grazing-view.json", kAim, 0.015,
+         {kMutants + "07-fresnel--one-plus-f0.glsl", kMutants + "06-geometry--ibl-k.glsl"}, noNewFireflies});
+    add({"grazing_light", "grazing-light.json", kAim, 0.005, {kMutants + "06-geometry--ibl-k.glsl"},
+         noNewFireflies});
+    add({"light_on_surface", "light-on-surface.json", kAim, kAim,
+         {kMutants + "04-shadows--occluders-beyond-light.glsl"}, nullptr});
+    add({"light_between", "light-between.json", kAim, kAim,
+         {kMutants + "04-shadows--occluders-beyond-light.glsl"}, nullptr});
+    add({"facing_mirrors", "facing-mirrors.json", kAim, kAim,
+         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+    add({"ggx_peak", "ggx-peak.json", kAim, kAim,
+         {kNaive + "05-ggx--textbook-denominator.glsl", kNaive + "08-cook-torrance--no-roughness-clamp.glsl"}, nullptr});
+    return cases;
+}
+
+// Everything a rendering must satisfy: finite, within budget of the CPU
+// reference, the case's behaviour. "" when it does.
+std::string problems(const HardCase& c, const Scene& scene, const Rendering& gl, const Rendering& cpu) {
+    std::string out;
+    ImageDiff d = compareRenderings(gl, cpu);
+    if (d.nonFinite) out += std::to_string(d.nonFinite) + " NaN/Inf channels; ";
+    if (d.offFraction > c.budget)
+        out += "off the CPU reference beyond the budget " + std::to_string(100 * c.budget) + "%: " + acc::describeDiff(d) + "; ";
+    if (c.check) {
+        std::string behaviour = c.check(scene, gl);
+        if (!behaviour.empty()) out += behaviour + "; ";
+    }
+    return out;
+}
+
+class HardCaseTest : public ::testing::TestWithParam<HardCase> {};
+
+// GLSL (float32) against the CPU reference (double), reference model, with
+// the generic shader and with the one specialised to the scene.
+TEST_P(HardCaseTest, MatchesCpuReference) {
+    const HardCase& c = GetParam();
+    Scene scene = c.scene();
+    Rendering gl = acc::renderGlsl(scene);
+    Rendering cpu = ref::renderCpu(scene);
+    ImageDiff d = compareRenderings(gl, cpu);
+    std::cout << "[ measured ] " << c.name << ": " << acc::describeDiff(d) << "\n";
+    EXPECT_EQ(problems(c, scene, gl, cpu), "");
+    // The shader specialised to the scene, as `raylab render` compiles it.
+    Rendering specialised = acc::renderGlsl(scene, acc::solutionsWith(), true);
+    std::cout << "[ measured ] " << c.name << " specialised: " << acc::describeDiff(compareRenderings(specialised, cpu)) << "\n";
+    EXPECT_EQ(problems(c, scene, specialised, cpu), "") << "specialised shader";
+    if (c.invarianceBudget >= 0) {
+        // The same picture as the untransformed scene (the offset scales with it).
+        ImageDiff invariance = compareRenderings(gl, ref::renderCpu(acc::hardScene("contact.json")));
+        std::cout << "[ measured ] " << c.name << " vs the untransformed scene: " << acc::describeDiff(invariance) << "\n";
+        EXPECT_LE(invariance.offFraction, c.invarianceBudget) << acc::describeDiff(invariance);
+    }
+}
+
+// The same with every model variant: the variants share the hard cases.
+TEST_P(HardCaseTest, EveryModelVariant) {
+    const HardCase& c = GetParam();
+    double worst = 0;
+    std::string worstModel;
+    for (const acc::NamedModel& variant : acc::everyModelVariant()) {
+        Scene scene = c.scene();
+        scene.model = variant.model;
+        Rendering gl = acc::renderGlsl(scene);
+        Rendering cpu = ref::renderCpu(scene);
+        EXPECT_EQ(problems(c, scene, gl, cpu), "") << "model " << variant.name;
+        double off = compareRenderings(gl, cpu).offFraction;
+        if (off >= worst) {
+            worst = off;
+            worstModel = variant.name;
+        }
+    }
+    std::cout << "[ measured ] " << c.name << " worst variant: " << worstModel << " off " << 100 * worst << "%\n";
+}
+
+// What the ray offset itself costs: the CPU reference (offset 2^-19 of the
+// hit magnitude) against the same double-precision renderer with 2^-40, which
+// shows the scene as it is (contact shadows, reflections near contacts).
+TEST_P(HardCaseTest, OffsetErrorWithinBudget) {
+    const HardCase& c = GetParam();
+    Scene scene = c.scene();
+    ImageDiff d = compareRenderings(ref::renderCpu(scene), acc::renderDoubleWithOffset(scene, std::ldexp(1.0, -40)));
+    std::cout << "[ measured ] " << c.name << " offset 2^-19 vs 2^-40: " << acc::describeDiff(d) << "\n";
+    EXPECT_LE(d.offFraction, c.offsetBudget) << acc::describeDiff(d);
+}
+
+// The case can fail: each naive formulation it is there for breaks it.
+TEST_P(HardCaseTest, CatchesItsNaiveVersions) {
+    const HardCase& c = GetParam();
+    ASSERT_FALSE(c.naive.empty());
+    Scene scene = c.scene();
+    Rendering cpu = ref::renderCpu(scene);
+    for (const std::string& file : c.naive) {
+        std::filesystem::path path = sourceRoot() / file;
+        ASSERT_TRUE(std::filesystem::exists(path)) << path;
+        std::string name = path.filename().string();
+        std::string exercise = name.substr(0, name.find("--")) + ".glsl";  // 02-intersect--x.glsl replaces 02-intersect.glsl
+        Rendering gl = acc::renderGlsl(scene, acc::solutionsWith({{exercise, path}}));
+        std::string found = problems(c, scene, gl, cpu);
+        std::cout << "[ measured ] " << c.name << " with " << name << ": " << acc::describeDiff(compareRenderings(gl, cpu))
+                  << "\n";
+        EXPECT_NE(found, "") << name << " passes the case: the case does not test what it claims";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(HardCases, HardCaseTest, ::testing::ValuesIn(hardCases()),
+                         [](const ::testing::TestParamInfo<HardCase>& info) { return info.param.name; });
+
+// ---- the suite itself --------------------------------------------------------------------------
+
+TEST(HardCaseSuite, EveryFileOfScenesHardIsACase) {
+    std::set<std::string> used;
+    for (const HardCase& c : hardCases()) used.insert(c.file);
+    for (const auto& entry : std::filesystem::directory_iterator(scenesDir() / "hard")) {
+        if (entry.path().extension() != ".json") continue;
+        EXPECT_TRUE(used.count(entry.path().filename().string())) << entry.path() << " is not in the suite";
+    }
+}
+
+TEST(HardCaseSuite, TransformedContactFilesAreTheTransforms) {
+    // contact-scaled-1e-3.json, -1e3 and contact-translated-1e4.json are files
+    // so that `raylab render` shows them; they must stay scaledScene() and
+    // translatedScene() of contact.json (to the last bit but one).
+    Scene contact = acc::hardScene("contact.json");
+    struct Transformed {
+        std::string file;
+        Scene expected;
+    };
+    const Transformed files[] = {{"contact-scaled-1e-3.json", scaledScene(contact, 1e-3)},
+                                 {"contact-scaled-1e3.json", scaledScene(contact, 1e3)},
+                                 {"contact-translated-1e4.json", translatedScene(contact, dvec3(1e4))}};
+    auto near = [](dvec3 a, dvec3 b) { return glm::length(a - b) <= 1e-15 * std::max(1.0, glm::length(b)); };
+    for (const Transformed& t : files) {
+        Scene got = acc::hardScene(t.file);
+        SCOPED_TRACE(t.file);
+        EXPECT_TRUE(near(got.camera.position, t.expected.camera.position));
+        EXPECT_TRUE(near(got.camera.target, t.expected.camera.target));
+        ASSERT_EQ(got.lights.size(), t.expected.lights.size());
+        for (std::size_t k = 0; k < got.lights.size(); ++k) {
+            EXPECT_TRUE(near(got.lights[k].position, t.expected.lights[k].position)) << "light " << k;
+            EXPECT_NEAR(got.lights[k].intensity, t.expected.lights[k].intensity, 1e-15 * t.expected.lights[k].intensity);
+        }
+        ASSERT_EQ(got.spheres.size(), t.expected.spheres.size());
+        for (std::size_t k = 0; k < got.spheres.size(); ++k) {
+            EXPECT_TRUE(near(got.spheres[k].center, t.expected.spheres[k].center)) << "sphere " << k;
+            EXPECT_NEAR(got.spheres[k].radius, t.expected.spheres[k].radius, 1e-15 * t.expected.spheres[k].radius);
+            EXPECT_EQ(got.spheres[k].material.albedo, t.expected.spheres[k].material.albedo);
+        }
+    }
+}
+
+TEST(HardCaseSuite, EveryCaseIsInTheReadme) {
+    std::ifstream in(scenesDir() / "hard" / "README.md");
+    std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const HardCase& c : hardCases()) EXPECT_NE(readme.find("`" + c.name + "`"), std::string::npos) << c.name;
+}
+
+// ---- behaviours that need a scene of their own -------------------------------------------------
+
+TEST(HardCaseBehaviour, FacingMirrorsSumTheGeometricSeries) {
+    // The centre pixel of facing-mirrors.json (97 x 73) looks exactly along
+    // the axis of the two mirrors (radius 1.2 at z = -2.2 and +2.2): its ray
+    // hits each head-on (NoV = 1, so F_SchlickRoughness = F0 = 0.9) and
+    // bounces between them 8 times. Without lights each of the 9 hits adds
+    // throughput * ambient * albedo (ao = 1):
+    //     L = 0.1 * 0.9 * (1 + 0.9 + ... + 0.9^8) = 0.9 (1 - 0.9^9) = 0.55132...
+    Scene scene = acc::hardScene("facing-mirrors.json");
+    scene.lights.clear();
+    ASSERT_EQ(scene.render.width % 2, 1);
+    ASSERT_EQ(scene.render.height % 2, 1);
+    Rendering gl = acc::renderGlsl(scene);
+    const float* centre = gl.radiance.at(scene.render.width / 2, scene.render.height / 2);
+    double expected = 0.9 * (1.0 - std::pow(0.9, 9));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(centre[k], expected, 1e-5 * expected) << "channel " << k;
+}
+
+TEST(HardCaseBehaviour, ProposedFixNormalisedReflectionMatchesInsideASphere) {
+    // camera_inside fails with the solutions as they are: traceRay() bounces
+    // along reflect(d, n) without normalising it (tests/accuracy/proposed/
+    // says why that matters only inside a sphere). With the one-line fix the
+    // case meets the aim, with every model.
+    HardCase c;
+    for (const HardCase& h : hardCases())
+        if (h.name == "camera_inside") c = h;
+    Implementation fixed = acc::solutionsWith(
+        {{"09-reflections.glsl", sourceRoot() / "tests/accuracy/proposed/09-reflections--normalised-reflect.glsl"}});
+    std::vector<acc::NamedModel> models = acc::everyModelVariant();
+    models.insert(models.begin(), acc::NamedModel{"reference", ShadingModel{}});
+    for (const acc::NamedModel& m : models) {
+        Scene scene = c.scene();
+        scene.model = m.model;
+        Rendering gl = acc::renderGlsl(scene, fixed);
+        EXPECT_EQ(problems(c, scene, gl, ref::renderCpu(scene)), "") << m.name;
+    }
+}
+
+// ---- the offset constant on the huge grounds ------------------------------------------------
+
+TEST(RayOffset, SweepOfTheConstantOnTheHugeGrounds) {
+    // docs/numerics.md, "Ray offset": the GLSL with offsets 2^-19 ... 2^-24 of
+    // the hit magnitude against (a) the double-precision renderer with the
+    // same offset (what float32 adds: acne) and (b) with 2^-40 (the scene as
+    // it is: what the offset itself costs). No constant is good at both on
+    // ground_1e5; the assertions pin the two ends of the trade-off: 2^-19 is
+    // free of acne, 2^-23 is not (so 2^-19 is 4 binades from acne, not more).
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("raylab_offset_sweep_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    for (const char* file : {"ground-1e4.json", "ground-1e5.json"}) {
+        Scene scene = acc::hardScene(file);
+        Rendering truth = acc::renderDoubleWithOffset(scene, std::ldexp(1.0, -40));
+        for (int e = 19; e <= 24; ++e) {
+            std::ifstream in(solutionsDir() / "04-shadows.glsl");
+            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            const std::string constant = "(RAY_OFFSET_RELATIVE * magnitude)";  // the code, not the comment
+            ASSERT_NE(text.find(constant), std::string::npos);
+            text.replace(text.find(constant), constant.size(), "(exp2(-" + std::to_string(e) + ".0) * magnitude)");
+            std::filesystem::path shadows = dir / ("04-shadows--2e-" + std::to_string(e) + ".glsl");
+            std::ofstream(shadows) << text;
+            Rendering gl = acc::renderGlsl(scene, acc::solutionsWith({{"04-shadows.glsl", shadows}}));
+            ImageDiff acne = compareRenderings(gl, acc::renderDoubleWithOffset(scene, std::ldexp(1.0, -e)));
+            ImageDiff cost = compareRenderings(gl, truth);
+            std::cout << "[ measured ] " << file << " offset 2^-" << e << ": GLSL vs double, same offset "
+                      << 100 * acne.offFraction << "%; GLSL vs double, offset 2^-40 " << 100 * cost.offFraction << "%\n";
+            if (e == 19) EXPECT_LE(acne.offFraction, 0.005) << file;
+            if (e == 23) EXPECT_GT(acne.offFraction, 0.01) << file;
+        }
+    }
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace

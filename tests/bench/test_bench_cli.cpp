@@ -1,0 +1,302 @@
+// `raylab bench` (app/bench/): the Pareto front, the CSV and the plot as
+// functions, then the command end to end on a tiny size. Times are never
+// asserted: only that they are measured and written.
+#include "bench/bench.h"
+#include "bench/pareto.h"
+#include "core/paths.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace rl;
+using namespace rl::bench;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<bool> front(const std::vector<ParetoPoint>& points) { return paretoFront(points); }
+
+// Splits one CSV line into fields (double-quoted fields may hold commas).
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream s(text);
+    std::string line;
+    while (std::getline(s, line))
+        if (!line.empty()) out.push_back(line);
+    return out;
+}
+
+// The CSV as one map per row, header names as keys.
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& text) {
+    std::vector<std::string> rows = lines(text);
+    std::vector<std::map<std::string, std::string>> out;
+    if (rows.empty()) return out;
+    std::vector<std::string> header = csvFields(rows[0]);
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::vector<std::string> fields = csvFields(rows[i]);
+        EXPECT_EQ(fields.size(), header.size()) << rows[i];
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
+        out.push_back(row);
+    }
+    return out;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+Measurement measurement(const std::string& scene, const std::string& variant, double ms, double meanLsb) {
+    Measurement m;
+    m.scene = scene;
+    m.variant = variant;
+    m.sweep = "modes";
+    m.mode = "specialised";
+    m.width = 32;
+    m.height = 24;
+    m.frames = 3;
+    m.msMedian = m.msMin = m.msMax = ms;
+    m.error.meanLsb = meanLsb;
+    return m;
+}
+
+const char* const kRequiredColumns[] = {"scene",        "variant",     "width",    "height", "ms_median",
+                                        "err_mean_lsb", "err_p99_lsb", "off_frac", "relmse", "psnr"};
+
+}  // namespace
+
+// ---- the Pareto front -------------------------------------------------------------------------
+
+TEST(Pareto, DominanceNeedsNoWorseInBothAndBetterInOne) {
+    EXPECT_TRUE(dominates({1, 1}, {2, 2}));
+    EXPECT_TRUE(dominates({1, 2}, {2, 2}));   // faster, as accurate
+    EXPECT_TRUE(dominates({2, 1}, {2, 2}));   // as fast, more accurate
+    EXPECT_FALSE(dominates({2, 2}, {2, 2}));  // equal
+    EXPECT_FALSE(dominates({1, 3}, {2, 2}));  // a trade-off
+    EXPECT_FALSE(dominates({3, 1}, {2, 2}));
+}
+
+TEST(Pareto, FrontOfATradeOff) {
+    //   cost:   1    2    3    4    5
+    //   error:  9    4    6    1    1
+    // (3, 6) is beaten by (2, 4); (5, 1) by (4, 1).
+    EXPECT_EQ(front({{1, 9}, {2, 4}, {3, 6}, {4, 1}, {5, 1}}), (std::vector<bool>{true, true, false, true, false}));
+}
+
+TEST(Pareto, OrderDoesNotMatterAndDuplicatesStayTogether) {
+    EXPECT_EQ(front({{5, 1}, {3, 6}, {4, 1}, {2, 4}, {1, 9}}), (std::vector<bool>{false, false, true, true, true}));
+    EXPECT_EQ(front({{2, 2}, {2, 2}, {3, 3}}), (std::vector<bool>{true, true, false}));
+}
+
+TEST(Pareto, EdgeCases) {
+    EXPECT_TRUE(front({}).empty());
+    EXPECT_EQ(front({{7, 7}}), std::vector<bool>{true});
+    // One point best in both: the whole front.
+    EXPECT_EQ(front({{3, 3}, {1, 1}, {2, 5}}), (std::vector<bool>{false, true, false}));
+    // NaN is never on the front and never hides another point; infinity is just large.
+    double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(front({{nan, 0}, {2, 2}, {1, nan}}), (std::vector<bool>{false, true, false}));
+    EXPECT_EQ(front({{1, inf}, {inf, 1}, {2, 2}}), (std::vector<bool>{true, true, true}));
+}
+
+TEST(Pareto, MarkedPerSceneAndNeverForSkippedRows) {
+    std::vector<Measurement> rows = {measurement("a", "slow", 10, 1), measurement("a", "fast", 5, 1),
+                                     measurement("b", "slow", 10, 1), measurement("a", "skipped", 1, 0)};
+    rows[3].skipped = true;
+    markParetoFronts(rows);
+    EXPECT_FALSE(rows[0].onFront);  // beaten by "fast" in scene a
+    EXPECT_TRUE(rows[1].onFront);
+    EXPECT_TRUE(rows[2].onFront);   // alone in scene b: the other scene's "fast" does not count
+    EXPECT_FALSE(rows[3].onFront);  // skipped: not measured
+}
+
+// ---- CSV, table, plot, resampling -------------------------------------------------------------
+
+TEST(BenchOutput, CsvHasTheRequiredColumnsAndOneRowPerMeasurement) {
+    std::vector<Measurement> rows = {measurement("lecture", "generic", 20, 0.2), measurement("lecture", "spp=4", 50, 0.05),
+                                     measurement("lecture", "model:x", 0, 0)};
+    rows[2].skipped = true;
+    rows[2].note = "not in GLSL yet, \"quoted\", with a comma";
+    rows[0].error.psnr = std::numeric_limits<double>::infinity();
+    markParetoFronts(rows);
+    std::vector<std::map<std::string, std::string>> csv = readCsv(toCsv(rows));
+    ASSERT_EQ(csv.size(), 3u);
+    for (const char* column : kRequiredColumns) EXPECT_TRUE(csv[0].count(column)) << column;
+    EXPECT_EQ(csv[0]["variant"], "generic");
+    EXPECT_EQ(std::stod(csv[1]["ms_median"]), 50.0);
+    EXPECT_EQ(csv[0]["psnr"], "inf");
+    EXPECT_EQ(csv[0]["pareto"], "1");
+    EXPECT_EQ(csv[2]["skipped"], "1");
+    EXPECT_EQ(csv[2]["ms_median"], "");
+    EXPECT_NE(csv[2]["note"].find("with a comma"), std::string::npos);
+}
+
+TEST(BenchOutput, PlotIsOneSvgWithAPanelPerSceneAndTheFrontMarked) {
+    std::vector<Measurement> rows = {measurement("one", "generic", 20, 0.2), measurement("one", "specialised", 10, 0.2),
+                                     measurement("two", "generic", 30, 1.0), measurement("two", "spp=4", 90, 0.0)};
+    markParetoFronts(rows);
+    std::string svg = errorTimeSvg(rows);
+    EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    EXPECT_EQ(count(svg, "error against time per frame"), 2u);
+    EXPECT_EQ(count(svg, "<polyline"), 2u);  // one front staircase per scene
+    EXPECT_GE(count(svg, "Pareto front"), 1u);
+    EXPECT_NE(svg.find(">specialised<"), std::string::npos);  // the headline modes are labelled
+    EXPECT_EQ(errorTimeSvg({}).rfind("<svg", 0), 0u);         // no measurement: still a valid picture
+}
+
+TEST(BenchOutput, TableAndComparisonName) {
+    Measurement generic = measurement("lecture", "generic", 30, 0.1);
+    generic.mode = "generic";
+    Measurement specialised = measurement("lecture", "specialised", 15, 0.1);
+    std::vector<Measurement> rows = {generic, specialised};
+    markParetoFronts(rows);
+    std::string table = formatTable(rows);
+    EXPECT_NE(table.find("generic"), std::string::npos);
+    std::string comparison = formatComparisons(rows);
+    EXPECT_NE(comparison.find("2.00x faster"), std::string::npos) << comparison;
+}
+
+TEST(BenchOutput, NearestResamplingKeepsBlocks) {
+    Rendering small;
+    small.display = {2, 1, {10, 10, 10, 200, 200, 200}};
+    small.radiance = {2, 1, {0.1f, 0.1f, 0.1f, 0.9f, 0.9f, 0.9f}};
+    Rendering big = resampleNearest(small, 4, 2);
+    ASSERT_EQ(big.display.width, 4);
+    ASSERT_EQ(big.display.height, 2);
+    for (int y = 0; y < 2; ++y) {
+        EXPECT_EQ(big.display.at(0, y)[0], 10);
+        EXPECT_EQ(big.display.at(1, y)[0], 10);
+        EXPECT_EQ(big.display.at(2, y)[0], 200);
+        EXPECT_EQ(big.display.at(3, y)[1], 200);
+        EXPECT_FLOAT_EQ(big.radiance.at(3, y)[2], 0.9f);
+    }
+}
+
+TEST(BenchVariants, EverySweepAndItsSettings) {
+    Scene scene;
+    scene.render.maxBounces = 2;
+    scene.spheres.push_back({});
+    Options options;
+    std::vector<Variant> all = makeVariants(scene, options);
+    std::map<std::string, int> perSweep;
+    for (const Variant& v : all) ++perSweep[v.sweep];
+    for (const std::string& sweep : sweepNames()) EXPECT_GT(perSweep[sweep], 0) << sweep;
+    EXPECT_EQ(perSweep["modes"], 4);
+    auto find = [&](const std::string& name) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const Variant& v) { return v.name == name; });
+        EXPECT_NE(it, all.end()) << name;
+        return it == all.end() ? Variant{} : *it;
+    };
+    EXPECT_FALSE(find("generic").specialised);
+    EXPECT_FALSE(find("generic").picture);
+    EXPECT_TRUE(find("specialised").specialised);
+    EXPECT_TRUE(find("specialised").picture);
+    EXPECT_EQ(find("bounces=0").scene.render.maxBounces, 0);
+    EXPECT_EQ(find("spp=9").scene.render.spp, 9);
+    EXPECT_EQ(find("res=1/2").scene.render.width, (scene.render.width + 1) / 2);
+    EXPECT_TRUE(find("model:beckmann").scene.model.distribution == DistributionModel::Beckmann);
+    EXPECT_EQ(find("strategy:textbook-intersect").overrides.count("02-intersect.glsl"), 1u);
+    // The scene's own bounce limit and spp are the "specialised" row, not repeated.
+    EXPECT_EQ(std::count_if(all.begin(), all.end(), [](const Variant& v) { return v.name == "bounces=2"; }), 0);
+
+    options.sweeps = {"spp"};
+    for (const Variant& v : makeVariants(scene, options)) EXPECT_EQ(v.sweep, "spp");
+}
+
+// ---- the command end to end ---------------------------------------------------------------------
+
+TEST(BenchCli, TinyRunWritesTheCsvAndThePlot) {
+    fs::path dir = test::freshTempDir("bench_cli");
+    std::string csv = (dir / "bench.csv").string(), svg = (dir / "bench.svg").string();
+    auto r = test::runRaylab("bench --size 24x16 --warmup 0 --frames 1 --reference-spp 4 --csv " + csv + " --plot " +
+                             svg);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("specialised"), std::string::npos);
+    EXPECT_NE(r.output.find("x faster"), std::string::npos) << r.output;
+
+    std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
+    ASSERT_GE(rows.size(), 20u);  // 4 modes, bounces, spp, resolutions, 7 models, 3 strategies
+    for (const char* column : kRequiredColumns) EXPECT_TRUE(rows[0].count(column)) << column;
+    int measured = 0, onFront = 0;
+    for (auto& row : rows) {
+        EXPECT_EQ(row["scene"], "lecture");
+        if (row["skipped"] == "1") {
+            EXPECT_FALSE(row["note"].empty()) << row["variant"];  // a skipped variant says why
+            continue;
+        }
+        ++measured;
+        onFront += row["pareto"] == "1";
+        EXPECT_GT(std::stod(row["ms_median"]), 0.0) << row["variant"];
+        EXPECT_GE(std::stod(row["err_mean_lsb"]), 0.0) << row["variant"];
+        EXPECT_TRUE(std::isfinite(std::stod(row["err_p99_lsb"]))) << row["variant"];
+        EXPECT_EQ(row["non_finite"], "0") << row["variant"];
+    }
+    EXPECT_GE(measured, 12);
+    EXPECT_GE(onFront, 1);
+    // The picture does not depend on whether the shader is specialised.
+    auto find = [&](const std::string& variant) {
+        return *std::find_if(rows.begin(), rows.end(), [&](auto& row) { return row["variant"] == variant; });
+    };
+    EXPECT_EQ(find("generic")["err_mean_lsb"], find("specialised")["err_mean_lsb"]);
+    EXPECT_EQ(find("res=1/2")["width"], "12");
+
+    std::string plot = test::readText(svg);
+    EXPECT_EQ(plot.rfind("<svg", 0), 0u);
+    EXPECT_NE(plot.find("</svg>"), std::string::npos);
+    EXPECT_NE(plot.find("Pareto front"), std::string::npos);
+}
+
+TEST(BenchCli, SeveralScenesAndOneSweep) {
+    fs::path dir = test::freshTempDir("bench_cli_scenes");
+    std::string csv = (dir / "bench.csv").string();
+    auto r = test::runRaylab("bench " + (scenesDir() / "lecture.json").string() + " " +
+                             (scenesDir() / "metal-row.json").string() +
+                             " --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1 --csv " + csv);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
+    ASSERT_EQ(rows.size(), 8u);  // 4 modes x 2 scenes
+    EXPECT_EQ(rows[0]["scene"], "lecture");
+    EXPECT_EQ(rows[7]["scene"], "metal-row");
+    for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
+}
+
+TEST(BenchCli, BadOptionsAreOneClearError) {
+    auto sweep = test::runRaylab("bench --sweeps modes,frobnicate --size 8x8");
+    EXPECT_EQ(sweep.status, 1);
+    EXPECT_NE(sweep.output.find("--sweeps: unknown group 'frobnicate'"), std::string::npos) << sweep.output;
+    auto frames = test::runRaylab("bench --frames 0 --size 8x8");
+    EXPECT_EQ(frames.status, 1);
+    EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
+    auto spp = test::runRaylab("bench --reference-spp 5 --size 8x8");
+    EXPECT_EQ(spp.status, 1);
+    EXPECT_NE(spp.output.find("square number"), std::string::npos) << spp.output;
+    auto missing = test::runRaylab("bench /nonexistent/scene.json --size 8x8");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.output.find("/nonexistent/scene.json"), std::string::npos) << missing.output;
+    auto clock = test::runRaylab("bench --clock sundial --size 8x8");
+    EXPECT_EQ(clock.status, 1);
+    EXPECT_NE(clock.output.find("--clock"), std::string::npos) << clock.output;
+}

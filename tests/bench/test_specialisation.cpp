@@ -1,0 +1,490 @@
+// Shaders specialised to their scene (app/render/specialisation.cpp) and the
+// early stop of the mirror bounces (app/render/bounce_cutoff.h,
+// shaders/trace.glsl): the specialised picture matches the CPU reference
+// within the core's budget and the generic shader, the defines follow the
+// scene's structure only, and each step of the bound behind the early stop
+// holds. No timing is asserted anywhere: `raylab bench` measures speed.
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "render/bounce_cutoff.h"
+#include "render/gl_renderer.h"
+#include "render/shader_config.h"
+#include "shader/shader_library.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+using namespace rl;
+namespace fs = std::filesystem;
+
+namespace {
+
+// One headless context for the whole process, made on first use.
+void ensureContext() {
+    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
+}
+
+ShaderDefines with(ShaderDefines defines, const ShaderDefines& more) {
+    for (const auto& [name, value] : more) defines[name] = value;
+    return defines;
+}
+
+// The three programs a scene can get: `raylab render` (specialised, picture
+// only), the live window's (specialised, every view), `render --generic`.
+ShaderDefines renderDefines(const Scene& s) { return with(shaderDefinesFor(s, true), pictureOnlyDefines()); }
+ShaderDefines fullDefines(const Scene& s) { return shaderDefinesFor(s, true); }
+ShaderDefines genericDefines(const Scene& s) { return shaderDefinesFor(s, false); }
+
+Rendering renderWith(const Scene& scene, const ShaderDefines& defines, const fs::path& impl = solutionsDir()) {
+    ensureContext();
+    ShaderProgram program = buildRayTracer(Implementation{impl, {}}, defines);
+    return renderOnce(program, scene, frameFromScene(scene));
+}
+
+Scene sized(Scene s, int w = 128, int h = 96) {
+    s.render.width = w;
+    s.render.height = h;
+    return s;
+}
+
+Scene load(const fs::path& path) { return loadSceneFile(path.string()).scene; }
+
+std::vector<fs::path> jsonFilesIn(const fs::path& dir) {
+    std::vector<fs::path> out;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".json") out.push_back(entry.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+fs::path deepBounceScene() { return sourceRoot() / "tests" / "bench" / "deep-bounces.json"; }
+
+// The core's budget: at most 0.5% of pixels off by more than 1/255 in any
+// channel, mean difference under 0.2/255, no NaN or Inf.
+void expectWithinBudget(const Rendering& got, const Rendering& expected, const std::string& what) {
+    ImageDiff d = compareRenderings(got, expected);
+    SCOPED_TRACE(what + ": " + test::describe(d));
+    EXPECT_LE(d.offFraction, 0.005);
+    EXPECT_LT(d.meanLsb, 0.2);
+    EXPECT_EQ(d.nonFinite, 0);
+}
+
+double maxComponent(glm::dvec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
+double minComponent(glm::dvec3 v) { return std::min(v.x, std::min(v.y, v.z)); }
+
+// Deterministic pseudo-random numbers in [0, 1) (xorshift).
+struct Random {
+    std::uint64_t state;
+    explicit Random(std::uint64_t seed) : state(seed * 0x9E3779B97F4A7C15ull + 1) {}
+    double next() {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return double(state >> 11) * 0x1.0p-53;
+    }
+    double range(double lo, double hi) { return lo + (hi - lo) * next(); }
+    glm::dvec3 direction() {  // uniform on the sphere
+        double z = range(-1, 1), phi = range(0, 6.283185307179586);
+        double r = std::sqrt(std::max(0.0, 1 - z * z));
+        return {r * std::cos(phi), r * std::sin(phi), z};
+    }
+};
+
+// Every scene the bound tests run on: the bundled ones and the bench's deep one.
+std::vector<Scene> boundScenes() {
+    std::vector<Scene> out;
+    for (const fs::path& f : jsonFilesIn(scenesDir())) out.push_back(load(f));
+    for (const fs::path& f : jsonFilesIn(scenesDir() / "presets")) out.push_back(load(f));
+    out.push_back(load(deepBounceScene()));
+    return out;
+}
+
+}  // namespace
+
+// ---- the specialised picture against the reference and the generic shader --------------
+
+TEST(Specialisation, EveryBundledSceneMatchesTheReferenceAndTheGenericShader) {
+    std::vector<fs::path> files = jsonFilesIn(scenesDir());
+    for (const fs::path& f : jsonFilesIn(scenesDir() / "presets")) files.push_back(f);
+    files.push_back(deepBounceScene());
+    ASSERT_GE(files.size(), 6u);
+    for (const fs::path& file : files) {
+        Scene s = sized(load(file));
+        std::string name = file.filename().string();
+        Rendering reference = ref::renderCpu(s);
+        Rendering specialised = renderWith(s, renderDefines(s));
+        Rendering generic = renderWith(s, genericDefines(s));
+        expectWithinBudget(specialised, reference, name + ": specialised (render) vs CPU reference");
+        expectWithinBudget(generic, reference, name + ": generic vs CPU reference");
+        expectWithinBudget(specialised, generic, name + ": specialised (render) vs generic");
+        expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
+    }
+}
+
+// The hard cases have their own budgets against the reference
+// (tests/accuracy); specialising must not change their pictures.
+TEST(Specialisation, HardScenesRenderAsWithTheGenericShader) {
+    std::vector<fs::path> files = jsonFilesIn(scenesDir() / "hard");
+    ASSERT_GE(files.size(), 10u);
+    for (const fs::path& file : files) {
+        Scene s = load(file);
+        std::string name = file.filename().string();
+        Rendering generic = renderWith(s, genericDefines(s));
+        expectWithinBudget(renderWith(s, renderDefines(s)), generic, name + ": specialised (render) vs generic");
+        expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
+    }
+}
+
+TEST(Specialisation, SpecialisedRenderMatchesAtFourSamplesAndEveryDisplayStep) {
+    Scene base = sized(load(scenesDir() / "lecture.json"), 64, 48);
+    base.render.spp = 4;
+    for (ToneMap op : {ToneMap::Reinhard, ToneMap::Exponential, ToneMap::None})
+        for (bool srgb : {false, true}) {
+            Scene s = base;
+            s.render.tonemap = op;
+            s.render.srgb = srgb;
+            expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s),
+                               "tone map " + toneMapName(op) + (srgb ? ", sRGB" : ", gamma 2.2"));
+        }
+}
+
+// A course half done: exercises 01..k solved, the rest the shipped stubs.
+// The specialised picture (with its stub frame) is the generic one at every stage.
+TEST(Specialisation, EveryStageOfTheCourseRendersAsWithTheGenericShader) {
+    fs::path dir = test::freshTempDir("spec_stages");
+    Scene s = sized(load(scenesDir() / "lecture.json"), 64, 48);
+    for (int k = 0; k <= 10; ++k) {
+        fs::path impl = dir / ("stage" + std::to_string(k));
+        fs::create_directories(impl);
+        for (const auto& entry : fs::directory_iterator(exercisesDir())) {
+            if (entry.path().extension() != ".glsl") continue;
+            std::string name = entry.path().filename().string();
+            int number = std::stoi(name.substr(0, 2));
+            fs::copy_file(number <= k ? solutionsDir() / name : entry.path(), impl / name);
+        }
+        Rendering generic = renderWith(s, genericDefines(s), impl);
+        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s), impl), generic);
+        SCOPED_TRACE("exercises 01.." + std::to_string(k) + " solved: " + test::describe(d));
+        EXPECT_LE(d.offFraction, 0.005);
+        EXPECT_LT(d.meanLsb, 0.2);
+        EXPECT_EQ(d.nonFinite, 0);
+    }
+}
+
+// One sphere needs no shadow ray (RL_SINGLE_SPHERE): from outside it shadows
+// nothing, from inside it hides the lights outside it. Camera and one light
+// inside, one light outside, no bounces.
+TEST(Specialisation, SingleSphereShadowsWithoutShadowRaysSeenFromInside) {
+    Scene s;
+    s.camera.position = {0, 0, 0.5};
+    s.camera.target = {0, 0, -1};
+    s.render.maxBounces = 0;
+    s.spheres.push_back({{0, 0, 0}, 2.0, {}});
+    s.lights.push_back({{0.5, 0.8, -0.5}, {1, 1, 1}, 3});
+    s.lights.push_back({{0, 0, -5}, {1, 0.5, 0.2}, 40});  // outside: must be hidden everywhere inside
+    s = sized(s, 96, 72);
+    ShaderDefines defines = renderDefines(s);
+    ASSERT_TRUE(defines.count("RL_SINGLE_SPHERE"));
+    expectWithinBudget(renderWith(s, defines), ref::renderCpu(s), "inside one sphere");
+    // And from outside, lit by both lights.
+    s.camera.position = {0, 0, 6};
+    s.camera.target = {0, 0, 0};
+    s.lights[1].position = {3, 3, 4};
+    expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s), "outside one sphere");
+}
+
+// ---- which defines ------------------------------------------------------------------------
+
+TEST(Specialisation, DefinesChangeOnlyWithStructure) {
+    Scene base = load(scenesDir() / "lecture.json");
+    ShaderDefines defines = shaderDefinesFor(base, true);
+
+    // Values: every one of them leaves the program as it is.
+    std::vector<std::pair<std::string, Scene>> values;
+    auto value = [&](const std::string& what, auto change) {
+        Scene s = base;
+        change(s);
+        values.push_back({what, s});
+    };
+    value("sphere centre", [](Scene& s) { s.spheres[2].center.x += 0.3; });
+    value("sphere radius", [](Scene& s) { s.spheres[2].radius *= 1.5; });
+    value("albedo", [](Scene& s) { s.spheres[3].material.albedo = {0.3, 0.2, 0.1}; });
+    value("roughness", [](Scene& s) { s.spheres[3].material.roughness = 0.05; });
+    value("metallic of a metal", [](Scene& s) { s.spheres[1].material.metallic = 0.5; });
+    value("ao", [](Scene& s) { s.spheres[1].material.ao = 0.2; });
+    value("light position", [](Scene& s) { s.lights[0].position = {1, 2, 3}; });
+    value("light colour and intensity", [](Scene& s) { s.lights[1].color = {1, 0, 0}, s.lights[1].intensity = 400; });
+    value("ambient", [](Scene& s) { s.render.ambient = 0.2; });
+    value("background", [](Scene& s) { s.render.background = {1, 1, 1}; });
+    value("exposure", [](Scene& s) { s.render.exposure = 3; });
+    value("tone map", [](Scene& s) { s.render.tonemap = ToneMap::Exponential; });
+    value("gamma", [](Scene& s) { s.render.gamma = 1.0; });
+    value("sRGB", [](Scene& s) { s.render.srgb = true; });
+    value("samples per pixel", [](Scene& s) { s.render.spp = 9; });
+    value("size", [](Scene& s) { s.render.width = 33, s.render.height = 17; });
+    value("camera", [](Scene& s) { s.camera.position = {4, 4, 4}, s.camera.fovYDegrees = 20; });
+    for (const auto& [what, s] : values) EXPECT_EQ(shaderDefinesFor(s, true), defines) << what;
+
+    // Structure: every one of these needs another program.
+    std::vector<std::pair<std::string, Scene>> structures;
+    auto structure = [&](const std::string& what, auto change) {
+        Scene s = base;
+        change(s);
+        structures.push_back({what, s});
+    };
+    structure("one sphere more", [](Scene& s) { s.spheres.push_back(s.spheres.back()); });
+    structure("one light less", [](Scene& s) { s.lights.pop_back(); });
+    structure("bounce limit", [](Scene& s) { s.render.maxBounces = 3; });
+    structure("no bounces", [](Scene& s) { s.render.maxBounces = 0; });
+    structure("no metals", [](Scene& s) {
+        for (Sphere& sp : s.spheres) sp.material.metallic = 0;
+    });
+    structure("model", [](Scene& s) { s.model.distribution = DistributionModel::Beckmann; });
+    structure("one sphere", [](Scene& s) { s.spheres.resize(1); });
+    for (const auto& [what, s] : structures) EXPECT_NE(shaderDefinesFor(s, true), defines) << what;
+
+    // The generic shader does not depend on the scene at all (reference model).
+    for (const auto& [what, s] : values) EXPECT_EQ(shaderDefinesFor(s, false), shaderDefinesFor(base, false)) << what;
+    for (const auto& [what, s] : structures)
+        if (s.model.isReference()) EXPECT_EQ(shaderDefinesFor(s, false), shaderDefinesFor(base, false)) << what;
+}
+
+TEST(Specialisation, CountsBounceLimitAndFeatures) {
+    ShaderDefines lecture = shaderDefinesFor(load(scenesDir() / "lecture.json"), true);
+    EXPECT_EQ(lecture["RL_SPHERE_COUNT"], "6");
+    EXPECT_EQ(lecture["RL_LIGHT_COUNT"], "2");
+    EXPECT_EQ(lecture["RL_MAX_BOUNCES"], "2");
+    EXPECT_FALSE(lecture.count("RL_BOUNCE_CUTOFF"));  // two bounces: not worth its test
+    EXPECT_FALSE(lecture.count("RL_NO_METALS"));  // the gold and silver spheres
+    EXPECT_FALSE(lecture.count("RL_SINGLE_SPHERE"));
+    EXPECT_FALSE(lecture.count("RL_PICTURE_ONLY"));  // only `raylab render` adds it, for the picture
+
+    Scene dielectric = load(scenesDir() / "dielectric-row.json");
+    ShaderDefines d = shaderDefinesFor(dielectric, true);
+    EXPECT_TRUE(d.count("RL_NO_METALS"));
+    EXPECT_EQ(d["RL_MAX_BOUNCES"], "0");
+    EXPECT_FALSE(d.count("RL_BOUNCE_CUTOFF"));  // nothing to stop
+
+    Scene deep = load(deepBounceScene());
+    EXPECT_TRUE(shaderDefinesFor(deep, true).count("RL_BOUNCE_CUTOFF"));  // eight bounces
+
+    Scene variant = load(deepBounceScene());
+    variant.model.diffuse = DiffuseModel::Burley;
+    EXPECT_FALSE(shaderDefinesFor(variant, true).count("RL_BOUNCE_CUTOFF"));  // the bound is for the reference model
+    EXPECT_TRUE(shaderDefinesFor(variant, true).count("RL_FD_BURLEY"));
+    EXPECT_TRUE(shaderDefinesFor(variant, false).count("RL_FD_BURLEY"));  // the model is in the generic shader too
+
+    EXPECT_EQ(pictureOnlyDefines().count("RL_PICTURE_ONLY"), 1u);
+}
+
+// ---- the bound behind the early stop, one step at a time ----------------------------------
+
+// Step 1: no hit sends more than hitRadianceBound, whatever the view.
+TEST(BounceCutoff, NoHitIsBrighterThanTheHitBound) {
+    Random random(7);
+    for (const Scene& scene : boundScenes()) {
+        double H = hitRadianceBound(scene);
+        ASSERT_TRUE(std::isfinite(H)) << scene.sourcePath;
+        ref::CameraBasis camera = ref::cameraBasis(scene.camera);
+        double brightest = 0;
+        for (int k = 0; k < 4000; ++k) {
+            glm::dvec3 dir = glm::normalize(camera.forward + 0.8 * random.direction());
+            ref::Hit hit;
+            if (!ref::closestHit(scene, camera.position, dir, hit)) continue;
+            for (glm::dvec3 v : {-dir, random.direction()}) {
+                if (glm::dot(v, hit.n) <= 0) v = -v;
+                brightest = std::max(brightest, maxComponent(ref::shadeHit(scene, hit, v)));
+            }
+        }
+        EXPECT_LE(brightest, H) << scene.sourcePath;
+        EXPECT_GT(brightest, 0.0) << scene.sourcePath;
+    }
+}
+
+// The bound is not loose by orders: a metal sphere reflecting a light
+// straight back (n.h = 1, D at its peak) sends k times the bound, k the
+// Schlick-GGX constant, because the bound also takes G1(NoV)/NoV at its own
+// peak 1/k (grazing view), which D's peak never meets.
+TEST(BounceCutoff, HitBoundIsReachedByASpecularPeak) {
+    Scene s;
+    s.render.ambient = 0;
+    Material m;
+    m.albedo = {1, 1, 1};
+    m.roughness = 0.3;
+    m.metallic = 1;
+    s.spheres.push_back({{0, 0, 0}, 1.0, m});
+    s.lights.push_back({{0, 0, 3}, {1, 1, 1}, 10});
+    ref::Hit hit;
+    ASSERT_TRUE(ref::closestHit(s, {0, 0, 5}, {0, 0, -1}, hit));
+    double peak = maxComponent(ref::shadeHit(s, hit, {0, 0, 1}));
+    double H = hitRadianceBound(s);
+    double k = (0.3 + 1) * (0.3 + 1) / 8;
+    EXPECT_LE(peak, H);
+    EXPECT_GT(peak, 0.95 * k * H);
+}
+
+// Step 2: no ray brings back more than rayRadianceBound for the hits it may make.
+TEST(BounceCutoff, NoRayIsBrighterThanTheRayBound) {
+    Random random(11);
+    for (Scene scene : boundScenes()) {
+        ref::CameraBasis camera = ref::cameraBasis(scene.camera);
+        for (int bounces : {0, 1, 3}) {
+            scene.render.maxBounces = bounces;
+            double R = rayRadianceBound(scene, bounces + 1);
+            double brightest = 0;
+            for (int k = 0; k < 2000; ++k) {
+                glm::dvec3 dir = glm::normalize(camera.forward + 0.8 * random.direction());
+                brightest = std::max(brightest, maxComponent(ref::traceRadiance(scene, camera.position, dir)));
+            }
+            EXPECT_LE(brightest, R) << scene.sourcePath << ", " << bounces << " bounces";
+        }
+    }
+}
+
+// Step 3: the display step is concave, so its slope at a bounds every rise above a.
+TEST(BounceCutoff, DisplaySlopeBoundsEveryRiseOfTheDisplayStep) {
+    Random random(3);
+    for (ToneMap op : {ToneMap::Reinhard, ToneMap::Exponential, ToneMap::None})
+        for (int g = 0; g < 3; ++g) {
+            RenderSettings r;
+            r.tonemap = op;
+            r.exposure = 1;  // c is exposed radiance already
+            r.srgb = g == 2;
+            r.gamma = g == 0 ? 2.2 : 1.0;
+            auto display = [&](double c) { return ref::displayEncode(glm::dvec3(c), r).x; };
+            for (int k = 0; k < 20000; ++k) {
+                double a = std::pow(10.0, random.range(-6, 2));
+                double d = std::pow(10.0, random.range(-8, 1));
+                double rise = display(a + d) - display(a);
+                EXPECT_LE(rise, displaySlope(r, a) * d * (1 + 1e-9) + 1e-15)
+                    << toneMapName(op) << " gamma case " << g << ", a " << a << ", d " << d;
+            }
+            // The C++ twin of the shader's slope is the derivative (finite differences, away from kinks).
+            for (double a : {0.01, 0.2, 0.7, 3.0}) {
+                double h = 1e-6 * a;
+                double numeric = (display(a + h) - display(a - h)) / (2 * h);
+                EXPECT_NEAR(displaySlope(r, a), numeric, 1e-4 * std::max(1.0, numeric))
+                    << toneMapName(op) << " gamma case " << g << " at " << a;
+            }
+        }
+}
+
+// Steps 1-3 together, in double precision: a CPU trace that stops where the
+// shader's test (mirrored here) says so stays within the tolerance of the
+// full trace in every pixel, and does stop in most of the deep-bounce scene.
+namespace {
+
+bool cannotChangeOutput(const glm::vec4& u, const RenderSettings& r, glm::dvec3 radiance, glm::dvec3 throughput) {
+    double a = double(u.y) * minComponent(radiance);
+    return displaySlope(r, a) * maxComponent(throughput) <= kBounceCutoffTolerance * double(u.x);
+}
+
+glm::dvec3 traceWithCutoff(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir, bool& stopped) {
+    glm::vec4 u = bounceCutoffUniform(scene);
+    glm::dvec3 radiance(0.0), throughput(1.0);
+    stopped = false;
+    for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
+        if (bounce > 0 && cannotChangeOutput(u, scene.render, radiance, throughput)) {
+            stopped = true;
+            break;
+        }
+        ref::Hit hit;
+        if (!ref::closestHit(scene, origin, dir, hit)) {
+            radiance += throughput * scene.render.background;
+            break;
+        }
+        radiance += throughput * ref::shadeHit(scene, hit, -dir);
+        const Material& m = scene.spheres[size_t(hit.sphere)].material;
+        double NoV = std::clamp(glm::dot(hit.n, -dir), 1e-4, 1.0);
+        throughput *= ref::F_SchlickRoughness(ref::baseReflectance(m), NoV, m.roughness);
+        origin = ref::offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+        dir = glm::reflect(dir, hit.n);  // as ref::traceRadiance does
+    }
+    return radiance;
+}
+
+}  // namespace
+
+TEST(BounceCutoff, StoppedTraceStaysWithinTheToleranceOfTheFullTrace) {
+    for (int spp : {1, 4}) {
+        Scene scene = sized(load(deepBounceScene()), 64, 48);
+        scene.render.spp = spp;
+        ref::CameraBasis camera = ref::cameraBasis(scene.camera);
+        int n = int(std::lround(std::sqrt(double(spp))));
+        long stoppedSamples = 0, samples = 0;
+        double worst = 0;
+        for (int j = 0; j < scene.render.height; ++j)
+            for (int i = 0; i < scene.render.width; ++i) {
+                glm::dvec3 cut(0.0);
+                for (int s = 0; s < spp; ++s) {
+                    glm::dvec2 offset = ref::sampleOffset(s, n);
+                    glm::dvec3 dir = ref::cameraRayDirection(
+                        glm::dvec2(i, j) + offset, glm::dvec2(scene.render.width, scene.render.height),
+                        camera.fovYRadians, camera.right, camera.up, camera.forward);
+                    bool stopped = false;
+                    cut += traceWithCutoff(scene, camera.position, dir, stopped);
+                    stoppedSamples += stopped;
+                    ++samples;
+                }
+                cut /= double(spp);
+                glm::dvec3 full = ref::pixelRadiance(scene, camera, i, j);
+                glm::dvec3 change = ref::displayEncode(full, scene.render) - ref::displayEncode(cut, scene.render);
+                worst = std::max(worst, std::max(std::abs(change.x), std::max(std::abs(change.y), std::abs(change.z))));
+            }
+        EXPECT_LE(worst, kBounceCutoffTolerance) << spp << " spp";
+        EXPECT_GT(double(stoppedSamples) / double(samples), 0.5) << spp << " spp: the stop should fire in this scene";
+    }
+}
+
+// Where the bound does not exist, the shader must never stop early.
+TEST(BounceCutoff, UnboundedScenesNeverStop) {
+    Scene lecture = load(scenesDir() / "lecture.json");
+    EXPECT_GT(bounceCutoffUniform(lecture).x, 0.0f);
+
+    Scene touching = lecture;  // a light on a sphere's surface: no finite bound
+    touching.lights[0].position = touching.spheres[2].center + glm::dvec3(0, touching.spheres[2].radius, 0);
+    EXPECT_FALSE(std::isfinite(hitRadianceBound(touching)));
+    EXPECT_EQ(bounceCutoffUniform(touching).x, 0.0f);
+
+    Scene convex = lecture;  // gamma < 1: the display step is not concave
+    convex.render.gamma = 0.5;
+    EXPECT_EQ(bounceCutoffUniform(convex).x, 0.0f);
+
+    Scene variant = lecture;  // the bound is derived for the reference model only
+    variant.model.blinnPhong = true;
+    EXPECT_FALSE(std::isfinite(hitRadianceBound(variant)));
+    EXPECT_EQ(bounceCutoffUniform(variant).x, 0.0f);
+
+    // With x = 0 only a zero throughput (nothing more can be added) stops.
+    glm::vec4 u = bounceCutoffUniform(touching);
+    EXPECT_FALSE(cannotChangeOutput(u, touching.render, glm::dvec3(5.0), glm::dvec3(1e-30)));
+    EXPECT_TRUE(cannotChangeOutput(u, touching.render, glm::dvec3(5.0), glm::dvec3(0.0)));
+}
+
+// The GPU side: in the deep-bounce scene the specialised shader stops early
+// in most pixels and still matches the reference, and the generic shader
+// (which traces every bounce) to within the tolerance, i.e. one 8-bit step.
+TEST(BounceCutoff, SpecialisedShaderStopsWithinOneStepOfTheFullTrace) {
+    for (int spp : {1, 4}) {
+        Scene s = sized(load(deepBounceScene()), 96, 72);
+        s.render.spp = spp;
+        Rendering specialised = renderWith(s, renderDefines(s));
+        expectWithinBudget(specialised, ref::renderCpu(s), std::to_string(spp) + " spp: specialised vs reference");
+        ImageDiff d = compareRenderings(specialised, renderWith(s, genericDefines(s)));
+        SCOPED_TRACE(std::to_string(spp) + " spp, specialised vs generic: " + test::describe(d));
+        EXPECT_LE(d.offFraction, 0.001);  // float noise between two programs aside, at most one step
+        EXPECT_LE(d.maxLsb, 2);
+        EXPECT_LT(d.meanLsb, 0.05);
+    }
+}

@@ -1,0 +1,515 @@
+// `raylab grade` end to end, through the binary: a class built at test time
+// (grading/class_fixture.h) graded with llvmpipe, every student's marks and
+// reason, resume and --force, determinism, shards and merge, the HTML report
+// in headless Chromium, and Gradescope's container layout.
+#include "grading/class_fixture.h"
+#include "grading/grade_run.h"
+#include "support/test_support.h"
+
+#include "core/image.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using namespace rl::test;
+
+namespace {
+
+// Seconds per exercise in these tests: short, so that the endless loop costs
+// little, yet several times what a check takes with a cold shader cache on
+// a loaded 2-core machine (about 1 s), so that no honest check times out.
+constexpr int kTimeout = 8;
+
+std::string gradeArgs(const fs::path& submissions, const fs::path& out, const std::string& extra = "") {
+    return "grade " + submissions.string() + " -o " + out.string() + " --jobs 2 --timeout " +
+           std::to_string(kTimeout) + " " + extra;
+}
+
+json readJson(const fs::path& path) { return json::parse(readText(path)); }
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+// One exercise of a student's record (OUT/<id>/grade.json) with its points
+// from results.json.
+struct Graded {
+    std::string status;  // PASS, FAIL, ..., REFUSED
+    std::string message;
+    std::string feedback;  // results.json's output for the exercise
+    double points = 0, maxPoints = 0;
+    double seconds = 0;
+    json record;
+};
+
+struct Student {
+    std::map<std::string, Graded> exercises;
+    double score = 0;
+    double seconds = 0;
+    std::vector<std::string> notes;
+};
+
+Student load(const fs::path& out, const std::string& id) {
+    Student s;
+    json record = readJson(out / id / "grade.json");
+    json results = readJson(out / id / "results.json");
+    s.score = results.at("score").get<double>();
+    s.seconds = record.at("seconds").get<double>();
+    s.notes = record.at("notes").get<std::vector<std::string>>();
+    for (std::size_t k = 0; k < record.at("exercises").size(); ++k) {
+        const json& r = record["exercises"][k];
+        const json& t = results["tests"][k];
+        Graded g;
+        g.status = r.value("refused", false) ? "REFUSED" : r.at("status").get<std::string>();
+        g.message = r.at("message").get<std::string>();
+        g.seconds = r.at("seconds").get<double>();
+        g.feedback = t.at("output").get<std::string>();
+        g.points = t.at("score").get<double>();
+        g.maxPoints = t.at("max_score").get<double>();
+        g.record = r;
+        s.exercises[r.at("exercise").get<std::string>()] = g;
+    }
+    return s;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+const std::vector<std::string> kAll = {"01-camera", "02-intersect", "03-lambert",       "04-shadows",     "05-ggx",
+                                       "06-geometry", "07-fresnel", "08-cook-torrance", "09-reflections", "10-display"};
+
+// The student has full marks on every exercise but `except`.
+void expectOthersFull(const Student& s, const std::string& id, const std::set<std::string>& except) {
+    for (const auto& [exercise, g] : s.exercises) {
+        if (except.count(exercise)) continue;
+        EXPECT_EQ(g.status, "PASS") << id << " " << exercise << ": " << g.message;
+        EXPECT_DOUBLE_EQ(g.points, g.maxPoints) << id << " " << exercise;
+    }
+}
+
+const std::vector<std::string> kMutants = {"03-lambert--missing-pi", "07-fresnel--one-plus-f0",
+                                           "09-reflections--reflect-swapped", "10-display--pow-gamma"};
+
+// The whole class: every case of the grading policy.
+fs::path buildClass(const fs::path& root) {
+    fs::path sub = root / "submissions";
+    fs::create_directories(sub);
+    writeFolder(sub / "full", solutionFiles());
+    writeFolder(sub / "zero", stubFiles());
+    for (const std::string& m : kMutants) {
+        std::string exercise = m.substr(0, m.find("--"));
+        writeFolder(sub / ("mutant-" + m), solutionFiles({{exercise + ".glsl", mutantText(m)}}));
+    }
+    writeFolder(sub / "compile-error", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
+    writeFolder(sub / "endless", solutionFiles({{"10-display.glsl", endlessDisplay()}}));
+    writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
+    writeFolder(sub / "include-escape",
+                solutionFiles({{"05-ggx.glsl", "#include \"../../full/05-ggx.glsl\"\n"}}));
+    auto linked = solutionFiles();
+    linked.erase("05-ggx.glsl");
+    writeFolder(sub / "symlink", linked);
+    fs::create_symlink("../full/05-ggx.glsl", sub / "symlink" / "05-ggx.glsl");
+    fs::create_directories(sub / "empty");
+    std::string latin1 = solutionFiles()["03-lambert.glsl"];
+    latin1.insert(latin1.find('\n') + 1, "// r\xe9sum\xe9 in Latin-1\n");
+    writeFolder(sub / "non-utf8", solutionFiles({{"03-lambert.glsl", latin1}}));
+    std::string big = solutionFiles()["05-ggx.glsl"] + "// " + std::string(300 * 1024, 'x') + "\n";
+    writeFolder(sub / "oversize", solutionFiles({{"05-ggx.glsl", big}}));
+    auto partial = solutionFiles();
+    for (const char* name : {"04-shadows.glsl", "05-ggx.glsl", "06-geometry.glsl", "07-fresnel.glsl",
+                             "08-cook-torrance.glsl", "09-reflections.glsl", "10-display.glsl"})
+        partial.erase(name);
+    partial["README.md"] = "my notes\n";
+    writeFolder(sub / "partial", partial);
+
+    std::vector<ZipEntry> zipped;
+    for (const auto& [name, text] : solutionFiles()) zipped.push_back({"exercises/" + name, text});
+    writeZip(sub / "zipped.zip", zipped);
+    writeText(sub / "corrupt.zip", "PK\x03\x04 this is not a zip archive");
+    auto slip = zipped;
+    slip.push_back({"../evil.glsl", "// outside\n"});
+    writeZip(sub / "zip-slip.zip", slip);
+    auto linkZip = zipped;
+    linkZip.erase(std::remove_if(linkZip.begin(), linkZip.end(),
+                                 [](const ZipEntry& e) { return e.name == "exercises/05-ggx.glsl"; }),
+                  linkZip.end());
+    linkZip.push_back({"exercises/05-ggx.glsl", "../../full/05-ggx.glsl", true});
+    writeZip(sub / "zip-symlink.zip", linkZip);
+    auto bomb = zipped;
+    bomb.push_back({"exercises/padding.glsl", std::string(8u << 20, ' ')});  // 8 MiB of spaces: ratio ~1000:1
+    writeZip(sub / "zip-bomb.zip", bomb);
+    writeText(sub / "roster.txt", "not a student\n");
+    return sub;
+}
+
+}  // namespace
+
+TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
+    fs::path root = freshTempDir("grade_class");
+    fs::path sub = buildClass(root), out = root / "out";
+    CommandResult run = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(run.status, 0) << run.output;
+
+    // grades.csv: a header, then every student exactly once, sorted, the total last.
+    std::vector<std::string> csv = lines(readText(out / "grades.csv"));
+    ASSERT_FALSE(csv.empty());
+    EXPECT_EQ(csv[0], "Student,01-camera,02-intersect,03-lambert,04-shadows,05-ggx,06-geometry,07-fresnel,"
+                      "08-cook-torrance,09-reflections,10-display,Total");
+    std::vector<std::string> ids;
+    for (std::size_t k = 1; k < csv.size(); ++k) ids.push_back(csv[k].substr(0, csv[k].find(',')));
+    std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
+    for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
+    for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
+                           "zip-symlink", "zipped"})
+        expected.push_back(id);
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
+    EXPECT_TRUE(contains(run.output, "roster.txt")) << "the stray file is reported as ignored";
+    std::string index = readText(out / "index.html");
+    for (const std::string& id : expected) EXPECT_TRUE(contains(index, ">" + id + "</a>")) << id;
+
+    Student full = load(out, "full");
+    EXPECT_DOUBLE_EQ(full.score, 100);
+    expectOthersFull(full, "full", {});
+    // The budget is 10 s per complete submission on 2 cores (measured in
+    // docs/grading.md); this bound only catches a grader gone much slower
+    // (serialised, waiting on something), not a busy test machine.
+    EXPECT_LT(full.seconds, 30);
+
+    Student zero = load(out, "zero");
+    EXPECT_DOUBLE_EQ(zero.score, 0);
+    for (const auto& [exercise, g] : zero.exercises) EXPECT_EQ(g.status, "NOT STARTED") << exercise;
+
+    for (const std::string& m : kMutants) {
+        std::string id = "mutant-" + m, exercise = m.substr(0, m.find("--"));
+        Student s = load(out, id);
+        const Graded& g = s.exercises.at(exercise);
+        EXPECT_EQ(g.status, "FAIL") << id;
+        EXPECT_GT(g.points, 0) << id << ": a typical mistake earns partial credit";
+        EXPECT_LT(g.points, g.maxPoints) << id;
+        EXPECT_TRUE(contains(g.feedback, mutantCaughtBy(m))) << id << " should say \"" << mutantCaughtBy(m)
+                                                             << "\":\n" << g.feedback;
+        expectOthersFull(s, id, {exercise});
+    }
+
+    Student compile = load(out, "compile-error");
+    EXPECT_EQ(compile.exercises.at("05-ggx").status, "COMPILE ERROR");
+    EXPECT_TRUE(contains(compile.exercises.at("05-ggx").message, "05-ggx.glsl:3:"))
+        << compile.exercises.at("05-ggx").message;
+    EXPECT_FALSE(contains(compile.exercises.at("05-ggx").feedback, out.string())) << "no instructor paths";
+    EXPECT_DOUBLE_EQ(compile.score, 90);
+    expectOthersFull(compile, "compile-error", {"05-ggx"});
+
+    Student endless = load(out, "endless");
+    const Graded& loop = endless.exercises.at("10-display");
+    EXPECT_EQ(loop.status, "TIMEOUT") << loop.message;
+    EXPECT_DOUBLE_EQ(loop.points, 0);
+    EXPECT_LT(loop.seconds, kTimeout + 2) << "the endless loop costs its timeout, no more";
+    EXPECT_LT(endless.seconds, kTimeout + full.seconds + 10);
+    expectOthersFull(endless, "endless", {"10-display"});
+
+    Student nan = load(out, "nan");
+    const Graded& lambert = nan.exercises.at("03-lambert");
+    EXPECT_EQ(lambert.status, "FAIL");
+    EXPECT_TRUE(contains(lower(lambert.feedback), "nan")) << lambert.feedback;
+    for (const json& image : lambert.record.at("images")) EXPECT_GT(image.at("non_finite").get<long>(), 0);
+    EXPECT_LE(lambert.points, lambert.maxPoints / 2) << "NaN renders earn no image credit";
+    expectOthersFull(nan, "nan", {"03-lambert"});
+
+    Student escape = load(out, "include-escape");
+    EXPECT_EQ(escape.exercises.at("05-ggx").status, "COMPILE ERROR");
+    EXPECT_TRUE(contains(escape.exercises.at("05-ggx").message, "refused")) << escape.exercises.at("05-ggx").message;
+    EXPECT_DOUBLE_EQ(escape.score, 90);
+
+    Student link = load(out, "symlink");
+    EXPECT_EQ(link.exercises.at("05-ggx").status, "REFUSED");
+    EXPECT_TRUE(contains(link.exercises.at("05-ggx").message, "symbolic link"));
+    EXPECT_DOUBLE_EQ(link.score, 90);
+    EXPECT_FALSE(fs::exists(out / "symlink" / "submission" / "05-ggx.glsl")) << "the link is never copied";
+
+    Student empty = load(out, "empty");
+    EXPECT_DOUBLE_EQ(empty.score, 0);
+    ASSERT_FALSE(empty.notes.empty());
+    EXPECT_TRUE(contains(empty.notes[0], "empty"));
+    for (const auto& [exercise, g] : empty.exercises) {
+        EXPECT_EQ(g.status, "NOT STARTED");
+        EXPECT_TRUE(contains(g.message, "empty")) << g.message;
+    }
+
+    Student latin1 = load(out, "non-utf8");
+    EXPECT_EQ(latin1.exercises.at("03-lambert").status, "REFUSED");
+    EXPECT_TRUE(contains(latin1.exercises.at("03-lambert").message, "03-lambert.glsl:2: file is not UTF-8"))
+        << latin1.exercises.at("03-lambert").message;
+    EXPECT_DOUBLE_EQ(latin1.score, 92);
+
+    Student big = load(out, "oversize");
+    EXPECT_EQ(big.exercises.at("05-ggx").status, "REFUSED");
+    EXPECT_TRUE(contains(big.exercises.at("05-ggx").message, "over the 256 KiB limit"))
+        << big.exercises.at("05-ggx").message;
+    EXPECT_DOUBLE_EQ(big.score, 90);
+
+    Student partial = load(out, "partial");
+    EXPECT_DOUBLE_EQ(partial.score, 26);
+    EXPECT_EQ(partial.exercises.at("05-ggx").status, "NOT STARTED");
+    EXPECT_EQ(partial.exercises.at("05-ggx").message, "05-ggx.glsl is missing");
+    EXPECT_TRUE(contains(partial.notes.empty() ? "" : partial.notes.back(), "README.md")) << "extra files: ignored";
+
+    Student zipped = load(out, "zipped");
+    EXPECT_DOUBLE_EQ(zipped.score, 100);
+    EXPECT_TRUE(contains(zipped.notes.empty() ? "" : zipped.notes[0], "exercises/"));
+
+    for (const auto& [id, reason] : std::map<std::string, std::string>{{"corrupt", "not a valid zip archive"},
+                                                                      {"zip-slip", "climbs out"},
+                                                                      {"zip-bomb", "compression ratio"}}) {
+        Student s = load(out, id);
+        EXPECT_DOUBLE_EQ(s.score, 0) << id;
+        for (const auto& [exercise, g] : s.exercises) {
+            EXPECT_EQ(g.status, "REFUSED") << id;
+            EXPECT_TRUE(contains(g.message, reason)) << id << ": " << g.message;
+        }
+    }
+    EXPECT_FALSE(fs::exists(root / "evil.glsl"));
+    EXPECT_FALSE(fs::exists(out / "evil.glsl"));
+    Student zipLink = load(out, "zip-symlink");
+    EXPECT_EQ(zipLink.exercises.at("05-ggx").status, "REFUSED");
+    EXPECT_TRUE(contains(zipLink.exercises.at("05-ggx").message, "symbolic link"));
+    EXPECT_DOUBLE_EQ(zipLink.score, 90);
+
+    json summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary.at("students").get<int>(), int(expected.size()));
+    EXPECT_EQ(summary.at("timeouts").get<int>(), 1);
+    EXPECT_EQ(summary.at("compile_errors").get<int>(), 2);
+    EXPECT_EQ(summary.at("full_marks").get<int>(), 2);
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
+    fs::path root = freshTempDir("grade_resume");
+    fs::path sub = root / "submissions", out = root / "out";
+    writeFolder(sub / "full", solutionFiles());
+    writeFolder(sub / "fresnel", solutionFiles({{"07-fresnel.glsl", mutantText("07-fresnel--power-on-voh")}}));
+    writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
+    writeFolder(sub / "display", solutionFiles({{"10-display.glsl", mutantText("10-display--gamma-before-tonemap")}}));
+    writeText(sub / "corrupt.zip", "not a zip");
+    fs::create_directories(sub / "empty");
+
+    CommandResult first = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(first.status, 0) << first.output;
+    const std::string csv = readText(out / "grades.csv");
+    auto stamp = fs::last_write_time(out / "full" / "grade.json");
+
+    CommandResult again = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(again.status, 0) << again.output;
+    EXPECT_TRUE(contains(again.output, "graded 0, skipped 6")) << again.output;
+    EXPECT_EQ(fs::last_write_time(out / "full" / "grade.json"), stamp) << "a graded student is not graded again";
+    EXPECT_EQ(readText(out / "grades.csv"), csv);
+
+    // An interrupted run leaves no record for the student it was grading: only that one is graded again.
+    fs::remove(out / "nan" / "grade.json");
+    CommandResult resumed = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    EXPECT_TRUE(contains(resumed.output, "graded 1, skipped 5")) << resumed.output;
+    EXPECT_EQ(readText(out / "grades.csv"), csv);
+
+    CommandResult forced = runRaylab(gradeArgs(sub, out, "--force"));
+    ASSERT_EQ(forced.status, 0) << forced.output;
+    EXPECT_TRUE(contains(forced.output, "graded 6, skipped 0")) << forced.output;
+    EXPECT_NE(fs::last_write_time(out / "full" / "grade.json"), stamp);
+    EXPECT_EQ(readText(out / "grades.csv"), csv) << "same inputs, same grades.csv";
+
+    // A fresh output folder, one job at a time: the same bytes again.
+    CommandResult serial = runRaylab("grade " + sub.string() + " -o " + (root / "out2").string() +
+                                     " --jobs 1 --timeout " + std::to_string(kTimeout));
+    ASSERT_EQ(serial.status, 0) << serial.output;
+    EXPECT_EQ(readText(root / "out2" / "grades.csv"), csv);
+
+    // A resubmission is noticed: only the student whose files changed is graded again.
+    writeFolder(sub / "fresnel", solutionFiles());
+    CommandResult changed = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(changed.status, 0) << changed.output;
+    EXPECT_TRUE(contains(changed.output, "graded 1, skipped 5")) << changed.output;
+    EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,100.00\n"))
+        << readText(out / "grades.csv");
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+TEST(GradeRun, ShardsMergeToTheUnshardedGrades) {
+    fs::path root = freshTempDir("grade_shards");
+    fs::path sub = root / "submissions";
+    std::vector<std::string> ids = {"ada", "bob", "cy", "dee", "eve", "fay"};
+    writeFolder(sub / "ada", solutionFiles());
+    writeFolder(sub / "bob", stubFiles());
+    writeFolder(sub / "cy", solutionFiles({{"10-display.glsl", mutantText("10-display--pow-gamma")}}));
+    writeFolder(sub / "dee", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
+    writeFolder(sub / "eve", solutionFiles({{"06-geometry.glsl", mutantText("06-geometry--ibl-k")}}));
+    std::vector<ZipEntry> zipped;
+    for (const auto& [name, text] : solutionFiles({{"04-shadows.glsl", mutantText("04-shadows--no-offset")}}))
+        zipped.push_back({name, text});
+    writeZip(sub / "fay.zip", zipped);
+    std::set<int> slices;
+    for (const std::string& id : ids) slices.insert(rl::shardOf(id, 2));
+    ASSERT_EQ(slices.size(), 2u) << "both shards get students";
+
+    CommandResult whole = runRaylab(gradeArgs(sub, root / "whole"));
+    ASSERT_EQ(whole.status, 0) << whole.output;
+    for (const char* shard : {"1/2", "2/2"}) {
+        std::string dir = std::string("shard") + shard[0];
+        CommandResult part = runRaylab(gradeArgs(sub, root / dir, std::string("--shard ") + shard));
+        ASSERT_EQ(part.status, 0) << part.output;
+    }
+    EXPECT_LT(lines(readText(root / "shard1" / "grades.csv")).size(), ids.size() + 1);
+
+    CommandResult lonely = runRaylab("grade merge " + (root / "shard1").string() + " -o " + (root / "bad").string());
+    EXPECT_NE(lonely.status, 0);
+    EXPECT_TRUE(contains(lonely.output, "shard 2/2 is missing")) << lonely.output;
+
+    CommandResult merged = runRaylab("grade merge " + (root / "shard1").string() + " " + (root / "shard2").string() +
+                                     " -o " + (root / "merged").string());
+    ASSERT_EQ(merged.status, 0) << merged.output;
+    EXPECT_EQ(readText(root / "merged" / "grades.csv"), readText(root / "whole" / "grades.csv"));
+    for (const std::string& id : ids) EXPECT_TRUE(fs::exists(root / "merged" / id / "index.html")) << id;
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
+    fs::path root = freshTempDir("grade_html");
+    fs::path sub = root / "submissions", out = root / "out";
+    writeFolder(sub / "full", solutionFiles());
+    writeFolder(sub / "fresnel", solutionFiles({{"07-fresnel.glsl", mutantText("07-fresnel--one-plus-f0")}}));
+    writeFolder(sub / "broken", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
+    writeFolder(sub / "a b&<c>", stubFiles());  // an id that needs escaping in HTML and in URLs
+    writeText(sub / "corrupt.zip", "not a zip");
+    CommandResult run = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(run.status, 0) << run.output;
+
+    std::string index = readText(out / "index.html");
+    for (const char* id : {"full", "fresnel", "broken", "corrupt"}) EXPECT_TRUE(contains(index, id)) << id;
+    EXPECT_TRUE(contains(index, "a b&amp;&lt;c&gt;"));
+    EXPECT_TRUE(contains(index, "href=\"a%20b%26%3Cc%3E/index.html\""));
+    EXPECT_TRUE(fs::exists(out / "a b&<c>" / "index.html"));
+    // Opens from the file system: nothing from the network.
+    std::regex remote(R"((src|href)\s*=\s*"(https?:)?//)");
+    for (const fs::path& page : {out / "index.html", out / "fresnel" / "index.html"})
+        EXPECT_FALSE(std::regex_search(readText(page), remote)) << page;
+
+    // Every image the student's page shows exists: their render, the reference, the heat map.
+    std::string page = readText(out / "fresnel" / "index.html");
+    std::regex img("<img src=\"([^\"]+)\"");
+    int images = 0;
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), img); it != std::sregex_iterator(); ++it, ++images)
+        EXPECT_TRUE(fs::is_regular_file(out / "fresnel" / (*it)[1].str())) << (*it)[1].str();
+    EXPECT_EQ(images, 10 * 5 * 3) << "every check scene of every exercise: render, reference, difference";
+    EXPECT_TRUE(contains(readText(out / "broken" / "index.html"), "05-ggx.glsl:3:")) << "the compile log, file:line";
+
+    for (const auto& [name, file] : std::map<std::string, fs::path>{{"index", out / "index.html"},
+                                                                    {"student", out / "fresnel" / "index.html"}}) {
+        fs::path shot = root / (name + ".png");
+        fs::path profile = root / ("chromium-" + name);
+        std::string command = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                              "--disable-background-networking --disable-component-update --disable-sync "
+                              "--user-data-dir=" + profile.string() + " --screenshot=" + shot.string() +
+                              " --window-size=1200,900 'file://" + file.string() + "' > /dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+        ASSERT_TRUE(fs::exists(shot)) << command;
+        EXPECT_GT(fs::file_size(shot), 1000u);
+        rl::DisplayImage picture = rl::readPng(shot.string());
+        EXPECT_EQ(picture.width, 1200);
+        std::set<int> colours;
+        for (std::size_t k = 0; k + 2 < picture.rgb.size() && colours.size() < 8; k += 3 * 97)
+            colours.insert(picture.rgb[k] << 16 | picture.rgb[k + 1] << 8 | picture.rgb[k + 2]);
+        EXPECT_GE(colours.size(), 4u) << name << ": the screenshot shows a page, not a blank";
+    }
+
+    // Sorting: the same page with two clicks on the Total header, as Chromium leaves the DOM.
+    std::string clicked = index;
+    clicked.replace(clicked.rfind("</body>"), 7,
+                    "<script>var th = document.querySelectorAll('#grades th');"
+                    "th[th.length - 3].click(); th[th.length - 3].click();</script></body>");
+    writeText(out / "sorted.html", clicked);
+    std::string dom = root / "sorted-dom.html";
+    std::string dump = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                       "--disable-background-networking --disable-component-update --disable-sync --user-data-dir=" +
+                       (root / "chromium-dom").string() + " --dump-dom 'file://" + (out / "sorted.html").string() +
+                       "' > " + dom + " 2>/dev/null";
+    EXPECT_EQ(std::system(dump.c_str()), 0) << dump;
+    std::string sorted = readText(dom);
+    EXPECT_TRUE(contains(sorted, "aria-sort=\"descending\"")) << sorted.substr(0, 2000);
+    std::regex firstRow("<tbody>\\s*<tr[^>]*><td class=\"l id\"><a href=\"[^\"]*\">([^<]*)</a>");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(sorted, m, firstRow)) << sorted.substr(0, 2000);
+    EXPECT_EQ(m[1].str(), "full") << "the highest total first";
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+TEST(GradeRun, GradescopeLayoutWritesResultsJson) {
+    fs::path root = freshTempDir("grade_gradescope");
+    auto three = solutionFiles();
+    for (auto it = three.begin(); it != three.end();)
+        it = it->first < "04" ? std::next(it) : three.erase(it);
+    writeFolder(root / "submission" / "exercises", three);
+    CommandResult run = runRaylab("grade --gradescope --timeout " + std::to_string(kTimeout),
+                                  "RAYLAB_GRADESCOPE_ROOT=" + root.string());
+    ASSERT_EQ(run.status, 0) << run.output;
+    json results = readJson(root / "results" / "results.json");
+    EXPECT_DOUBLE_EQ(results.at("score").get<double>(), 26);
+    ASSERT_EQ(results.at("tests").size(), 10u);
+    const json& first = results["tests"][0];
+    for (const char* key : {"name", "score", "max_score", "status", "output", "visibility"})
+        EXPECT_TRUE(first.contains(key)) << key;
+    EXPECT_EQ(first.at("status"), "passed");
+    EXPECT_EQ(results["tests"][4].at("status"), "failed");
+    EXPECT_TRUE(results.contains("execution_time"));
+
+    fs::path nothing = freshTempDir("grade_gradescope_empty");
+    CommandResult none = runRaylab("grade --gradescope --gradescope-root " + nothing.string());
+    EXPECT_EQ(none.status, 0) << none.output;
+    json empty = readJson(nothing / "results" / "results.json");
+    EXPECT_DOUBLE_EQ(empty.at("score").get<double>(), 0);
+    EXPECT_TRUE(contains(empty.at("output").get<std::string>(), "submission")) << empty.dump();
+    if (!HasFailure()) {
+        fs::remove_all(root);
+        fs::remove_all(nothing);
+    }
+}
+
+TEST(GradeCli, BadArgumentsGiveOneLineAndNonZeroExit) {
+    fs::path root = freshTempDir("grade_cli");
+    CommandResult noArgs = runRaylab("grade");
+    EXPECT_NE(noArgs.status, 0);
+    EXPECT_TRUE(contains(noArgs.output, "SUBMISSIONS")) << noArgs.output;
+    CommandResult missing = runRaylab("grade " + (root / "nope").string() + " -o " + (root / "out").string());
+    EXPECT_NE(missing.status, 0);
+    EXPECT_TRUE(contains(missing.output, "nope: not a folder of submissions")) << missing.output;
+    fs::create_directories(root / "sub");
+    CommandResult shard = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() + " --shard 3/2");
+    EXPECT_NE(shard.status, 0);
+    EXPECT_TRUE(contains(shard.output, "--shard")) << shard.output;
+    writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"11-teapot\", \"weight\": 5}]}");
+    CommandResult rubric = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() +
+                                     " --rubric " + (root / "rubric.json").string());
+    EXPECT_NE(rubric.status, 0);
+    EXPECT_TRUE(contains(rubric.output, "rubric.json: exercises[0]: unknown exercise")) << rubric.output;
+    fs::create_directories(root / "sub" / "alice");
+    CommandResult inside = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "sub" / "out").string());
+    EXPECT_NE(inside.status, 0);
+    EXPECT_TRUE(contains(inside.output, "must lie outside")) << inside.output;
+    EXPECT_TRUE(fs::exists(root / "sub" / "alice")) << "a submission is never cleared";
+    for (const CommandResult* r : {&noArgs, &missing, &shard, &rubric, &inside})
+        EXPECT_EQ(std::count(r->output.begin(), r->output.end(), '\n'), 1) << r->output;
+    if (!HasFailure()) fs::remove_all(root);
+}
