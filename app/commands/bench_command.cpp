@@ -1,6 +1,6 @@
 // raylab bench [SCENE...] [--csv FILE] [--plot FILE] [--size WxH] [--warmup N] [--frames N]
 //              [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
-// GPU time per frame against error for every variant and setting
+// Time per frame against error for every variant and setting
 // (app/bench/bench.h), as a table, a CSV and an SVG plot with the Pareto front.
 #include "commands/commands.h"
 
@@ -71,7 +71,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
 
 void addBenchCommand(CLI::App& app) {
     auto options = std::make_shared<BenchCommandOptions>();
-    CLI::App* cmd = app.add_subcommand("bench", "Measure GPU time per frame against error for shader variants and settings");
+    CLI::App* cmd = app.add_subcommand("bench", "Measure time per frame against error for shader variants and settings");
     cmd->add_option("scenes", options->scenes, "Scene files (.json); scenes/lecture.json when omitted");
     cmd->add_option("--csv", options->csv, "Write one CSV row per measurement to FILE");
     cmd->add_option("--plot", options->plot, "Write error against time, Pareto front marked, as SVG to FILE");

@@ -283,6 +283,28 @@ TEST(BenchCli, SeveralScenesAndOneSweep) {
     for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
 }
 
+// A variant that does not build (here: every one, the implementation has a
+// syntax error) is a skipped row with the compiler's first line, never a crash.
+TEST(BenchCli, VariantsThatDoNotBuildAreSkippedWithTheReason) {
+    fs::path dir = test::freshTempDir("bench_cli_broken");
+    fs::path impl = dir / "impl";
+    fs::create_directories(impl);
+    for (const auto& entry : fs::directory_iterator(solutionsDir()))
+        fs::copy_file(entry.path(), impl / entry.path().filename());
+    test::writeText(impl / "07-fresnel.glsl", test::readText(solutionsDir() / "07-fresnel.glsl") + "\nthis is not GLSL\n");
+    std::string csv = (dir / "bench.csv").string();
+    auto r = test::runRaylab("bench --sweeps modes,strategies --size 8x6 --warmup 0 --frames 1 --reference-spp 1 --impl " +
+                             impl.string() + " --csv " + csv);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
+    ASSERT_EQ(rows.size(), 7u);
+    for (auto& row : rows) {
+        EXPECT_EQ(row["skipped"], "1") << row["variant"];
+        EXPECT_NE(row["note"].find("does not build"), std::string::npos) << row["note"];
+        EXPECT_NE(row["note"].find("07-fresnel.glsl"), std::string::npos) << row["note"];
+    }
+}
+
 TEST(BenchCli, BadOptionsAreOneClearError) {
     auto sweep = test::runRaylab("bench --sweeps modes,frobnicate --size 8x8");
     EXPECT_EQ(sweep.status, 1);
