@@ -20,11 +20,12 @@ vec3 radianceAlong(vec3 origin, vec3 dir) {
     g_bounceCounter = 0;
 #ifdef RL_PICTURE_ONLY
     // A program for the picture (app/render/specialisation.cpp) trusts a
-    // traceRay whose helpers are started: a traceRay stub behind a written
-    // F_SchlickRoughness shows black in the stub frame, where the full program
-    // falls back to the first hit per ray. That fallback is code the compiler
-    // cannot drop (it depends on traceRay's result), and llvmpipe runs it
-    // under a mask for every pixel.
+    // traceRay whose helpers are started. The host compiles it only when
+    // 09-reflections.glsl is no longer the shipped stub (render_command.cpp);
+    // a traceRay edited but still returning NOT_STARTED shows black in the
+    // stub frame, where the full program falls back to the first hit per ray.
+    // That fallback is code the compiler cannot drop (it depends on
+    // traceRay's result), and llvmpipe runs it under a mask for every pixel.
     if (!reflectionsReady()) return traceFirstHitOnly(origin, dir);
     vec3 L = traceRay(origin, dir);
     return isStub(L) ? vec3(0.0) : L;

@@ -126,22 +126,6 @@ std::vector<CheckScene> makeCheckScenes() {
 
 namespace {
 
-// ---- stubs --------------------------------------------------------------------------------
-
-std::string withoutSpaces(const std::string& text) {
-    std::string out;
-    for (char c : text)
-        if (!std::isspace(static_cast<unsigned char>(c))) out += c;
-    return out;
-}
-
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // ---- probes --------------------------------------------------------------------------------
 
 std::string fmt(double x) {
@@ -381,9 +365,7 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
         report.hint = "copy the stub from exercises/" + exercise.file() + " and start with " + exercise.handout();
         return report;
     }
-    fs::path stub = exercisesDir() / exercise.file();
-    if (fs::is_regular_file(file, ec) && fs::file_size(file, ec) <= 1 << 20 &&
-        withoutSpaces(readAll(file)) == withoutSpaces(readAll(stub))) {
+    if (isUnchangedStub(file, exercise)) {
         report.status = CheckStatus::NotStarted;
         report.message = "the file is the unchanged stub";
         report.hint = "start with the handout: " + exercise.handout();

@@ -1,6 +1,11 @@
 #include "checks/exercise_registry.h"
 
 #include "core/error.h"
+#include "core/paths.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
 
 namespace rl {
 
@@ -29,6 +34,28 @@ const ExerciseInfo& findExercise(const std::string& key) {
     std::string valid;
     for (const ExerciseInfo& e : allExercises()) valid += (valid.empty() ? "" : ", ") + std::to_string(e.number);
     throw Error("--exercise: no exercise '" + key + "' (expected one of " + valid + ", or a name like 05-ggx)");
+}
+
+namespace {
+
+std::string withoutSpaces(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string out;
+    for (char c : text.str())
+        if (!std::isspace(static_cast<unsigned char>(c))) out += c;
+    return out;
+}
+
+}  // namespace
+
+bool isUnchangedStub(const std::filesystem::path& file, const ExerciseInfo& exercise) {
+    std::error_code ec;
+    constexpr std::uintmax_t kLargerThanAnyStub = 1 << 20;  // a bigger file is no stub; don't read it
+    if (!std::filesystem::is_regular_file(file, ec) || std::filesystem::file_size(file, ec) > kLargerThanAnyStub)
+        return false;
+    return withoutSpaces(file) == withoutSpaces(exercisesDir() / exercise.file());
 }
 
 }  // namespace rl

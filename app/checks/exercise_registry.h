@@ -2,6 +2,7 @@
 // teaching order; each builds on the ones before it.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,5 +19,9 @@ struct ExerciseInfo {
 const std::vector<ExerciseInfo>& allExercises();
 // By number (1..10) or id ("05-ggx"); throws rl::Error listing the valid ones.
 const ExerciseInfo& findExercise(const std::string& numberOrId);
+
+// True when `file` is the stub shipped in exercises/ for this exercise,
+// ignoring white space (what `raylab check` reports as NOT STARTED).
+bool isUnchangedStub(const std::filesystem::path& file, const ExerciseInfo& exercise);
 
 }  // namespace rl
