@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <type_traits>
+#include <vector>
 
 namespace rl {
 namespace {
@@ -122,6 +124,32 @@ void renderSection(Scene& scene, ViewRequests& out) {
     out.sceneEdited |= editColour("background", r.background);
 }
 
+// The model variants (docs/model-variants.md). A change of model is the one
+// panel edit that recompiles: each variant is compiled in only when used.
+void modelSection(Scene& scene, ViewRequests& out) {
+    if (!ImGui::CollapsingHeader("Model (recompiles)")) return;
+    ShadingModel& m = scene.model;
+    auto choose = [&](const char* label, auto& value, std::initializer_list<const char*> names) {
+        int index = int(value);
+        std::vector<const char*> list(names);
+        if (ImGui::Combo(label, &index, list.data(), int(list.size()))) {
+            value = std::remove_reference_t<decltype(value)>(index);
+            out.sceneEdited = true;
+        }
+    };
+    ImGui::BeginDisabled(m.blinnPhong);
+    choose("D", m.distribution, {"GGX", "Beckmann"});
+    choose("G", m.geometry, {"Schlick-GGX", "Smith GGX", "Smith GGX correlated"});
+    choose("F", m.fresnel, {"Schlick", "exact dielectric", "exact conductor"});
+    choose("diffuse", m.diffuse, {"Lambert", "Burley"});
+    ImGui::EndDisabled();
+    out.sceneEdited |= ImGui::Checkbox("Blinn-Phong (course comparison)", &m.blinnPhong);
+    if (!m.isReference() && ImGui::Button("back to the reference model")) {
+        m = ShadingModel{};
+        out.sceneEdited = true;
+    }
+}
+
 void materialsSection(Scene& scene, ViewRequests& out) {
     if (!ImGui::CollapsingHeader("Materials")) return;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
@@ -231,6 +259,7 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         compareSection(state, info, out);
         displaySection(scene, out);
         renderSection(scene, out);
+        modelSection(scene, out);
         materialsSection(scene, out);
         lightsSection(scene, out);
         presetsSection(scene, fromFile, info, out);

@@ -313,10 +313,9 @@ void ViewApp::drawUi(ViewRequests& requests) {
 }
 
 void ViewApp::handleRequests(const ViewRequests& r) {
-    if (r.sceneEdited) {
-        picture_->setScene(scene_.scene());  // uniforms only: the program stays
-        dirty_ = true;
-    }
+    // Values re-upload uniforms only; a new model (the one structural edit
+    // of the panel) also compiles that model's program.
+    if (r.sceneEdited) sceneChanged(false);
     if (r.redraw) dirty_ = true;
     if (r.openPreset >= 0) openPreset(r.openPreset);
     if (r.save) saveScene();
