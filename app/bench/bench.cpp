@@ -39,7 +39,7 @@ bool wanted(const Options& o, const std::string& sweep) { return o.sweeps.empty(
 
 // The numerical strategies: a naive version of one solution function, taken
 // from the mutants the checker must catch (tests/mutants/) or the naive
-// versions the hard-case tests compare against (tests/accuracy/naive/).
+// versions the hard-case tests compare against (tests/mutants/).
 struct Strategy {
     const char* name;
     const char* exerciseFile;
@@ -47,7 +47,7 @@ struct Strategy {
 };
 const Strategy kStrategies[] = {
     {"strategy:textbook-intersect", "02-intersect.glsl", "tests/mutants/02-intersect--textbook-quadratic.glsl"},
-    {"strategy:naive-D", "05-ggx.glsl", "tests/accuracy/naive/05-ggx--textbook-denominator.glsl"},
+    {"strategy:naive-D", "05-ggx.glsl", "tests/mutants/05-ggx--textbook-denominator.glsl"},
     {"strategy:fixed-offset", "04-shadows.glsl", "tests/mutants/04-shadows--fixed-offset.glsl"},
 };
 

@@ -197,6 +197,10 @@ std::vector<ProbeSpec> intersectProbes() {
         add(center + float(rng.range(0, 0.8)) * r * rng.unitVector(), rng.unitVector(), center, r,
             "origin inside the sphere");
     }
+    for (int k = 0; k < 6; ++k) {  // from the very centre b = 0: GLSL's sign(0) is 0
+        vec3 center(float(rng.range(-2, 2)), float(rng.range(-2, 2)), float(rng.range(-2, 2)));
+        add(center, rng.unitVector(), center, float(rng.range(0.5, 3)), "origin at the centre");
+    }
     for (int k = 0; k < 10; ++k) {  // behind the origin: a miss
         vec3 dir = rng.unitVector();
         add(vec3(0), dir, -float(rng.range(3, 10)) * dir + 0.1f * rng.unitVector(), float(rng.range(0.3, 1)),
@@ -250,7 +254,33 @@ std::vector<ProbeSpec> intersectProbes() {
              return value(R::intersectSphere(o, d, ce, r));
          }},
     };
+    // The roots of the right quadratic, nearest first (either may be negative).
+    auto roots = [](const ProbeCase& c, double& t0, double& t1) {
+        dvec3 o = get(c, 0), d = get(c, 4), ce = get(c, 8);
+        double r = f(c, 11), b = glm::dot(o - ce, d);
+        double disc = r * r - glm::length2(o - ce - b * d);
+        if (disc < 0) return false;
+        t0 = -b - std::sqrt(disc);
+        t1 = -b + std::sqrt(disc);
+        return true;
+    };
+    p.mistakes.push_back({"spheres behind the camera appear and those in front vanish (the roots have the wrong sign)",
+                          "the quadratic's roots come from -b: q = -b - sign(b) sqrt(discriminant)",
+                          [=](const ProbeCase& c) {
+                              double t0, t1;
+                              if (!roots(c, t0, t1)) return value(R::kNoHit);
+                              if (-t1 > 0) return value(-t1);  // the negated roots, nearest positive first
+                              return value(-t0 > 0 ? -t0 : R::kNoHit);
+                          }});
+    p.mistakes.push_back({"the back of each sphere is seen through its front (the far root comes first)",
+                          "take the NEAR root when it is positive; the far one only from inside",
+                          [=](const ProbeCase& c) {
+                              double t0, t1;
+                              if (!roots(c, t0, t1)) return value(R::kNoHit);
+                              return value(t1 > 0 ? t1 : t0 > 0 ? t0 : R::kNoHit);
+                          }});
     p.groupHints = {
+        {"origin at the centre", "from the centre b = 0, and GLSL's sign(0.0) is 0, so q = 0: use b >= 0 ? 1 : -1"},
         {"far sphere (distance 1e3 to 1e4)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
                                               "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
         {"origin inside the sphere", "from inside, the near root is behind the origin: take the far one"},
@@ -401,6 +431,13 @@ std::vector<ProbeSpec> shadowProbes() {
         {"shadow acne: rays start exactly on the surface", "push the origin along n: p + n * RAY_OFFSET_RELATIVE * magnitude",
          [](const ProbeCase& c) { return value(get(c, 0)); }},
     };
+    o.mistakes.push_back({"the offset follows |p| alone, not the sphere: acne on big spheres near the origin",
+                          "use hit.magnitude, which includes the centre and radius: p + n * RAY_OFFSET_RELATIVE * magnitude",
+                          [](const ProbeCase& c) {
+                              dvec3 p = get(c, 0);
+                              double size = std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z)));
+                              return value(R::offsetRayOrigin(p, get(c, 4), size));
+                          }});
     for (double epsilon : {1e-2, 1e-3, 1e-4, 1e-5})  // the usual fixed epsilons
         o.mistakes.push_back({"a fixed offset of " + fmt(epsilon) + ": too large for a tiny scene (light leaks), too small "
                               "for a huge one (acne)",
@@ -661,6 +698,13 @@ std::vector<ProbeCase> brdfCases(std::uint64_t seed) {
     for (int k = 0; k < 6; ++k) cases.push_back(brdfCase(rng, "roughness 0 (clamped)", 0.0, rng.uniform(), rng.range(0.3, 1), rng.range(0.3, 1)));
     for (int k = 0; k < 6; ++k) cases.push_back(brdfCase(rng, "grazing view", rng.range(0.3, 1), 0.0, 0.02, rng.range(0.3, 1)));
     for (int k = 0; k < 4; ++k) cases.push_back(brdfCase(rng, "light below the horizon", 0.5, 0.0, 0.7, -rng.range(0.1, 0.9)));
+    for (int k = 0; k < 4; ++k) {  // n.v exactly 0 (axis vectors, so float32 agrees): a tangent view
+        ProbeCase c = brdfCase(rng, "view exactly at the horizon (n.v = 0)", rng.range(0.2, 1), k % 2, 0.5, 0.5);
+        put(c, 8, vec3(0, 0, 1));
+        put(c, 12, vec3(1, 0, 0));
+        put(c, 16, glm::normalize(vec3(-0.3f, 0.2f, 0.8f)));
+        cases.push_back(c);
+    }
     return cases;
 }
 
@@ -729,7 +773,9 @@ std::vector<ProbeSpec> cookTorranceProbes() {
         {"highlights 4 times too bright", "the denominator is 4 NoL NoV", [=](const ProbeCase& c) { return specWith(c, false, 1); }},
     };
     spec.groupHints = {{"light below the horizon", "return vec3(0) when NoL = 0 (no division by zero)"},
-                       {"grazing view", "clamp NoV to [1e-4, 1]"}};
+                       {"grazing view", "clamp NoV to [1e-4, 1]"},
+                       {"view exactly at the horizon (n.v = 0)",
+                        "NoV = clamp(n.v, 1e-4, 1): with 0 as the lower bound the specular term divides by zero"}};
 
     ProbeSpec diff = brdfSpec(ProbeFunction::Diffuse, "diffuseBRDF", 812);
     diff.expected = [](const ProbeCase& c) { return value(R::diffuseBRDF(get(c, 8), get(c, 12), get(c, 16), materialAt(c))); };

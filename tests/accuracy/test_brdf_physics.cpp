@@ -122,7 +122,7 @@ TEST(GgxPeak, Float32WithinOnePercentOfDouble) {
 TEST(GgxPeak, TextbookDenominatorMissesIt) {
     // (n.h)^2 (alpha^2 - 1) + 1 cancels near n.h = 1: float32 keeps 1 - (n.h)^2
     // to 6e-8 where alpha^2 is 4e-6, a few % of the denominator.
-    double worst = worstPeakError(acc::BrdfProbe::D, ShadingModel{}, withNaive("tests/accuracy/naive/05-ggx--textbook-denominator.glsl"));
+    double worst = worstPeakError(acc::BrdfProbe::D, ShadingModel{}, withNaive("tests/mutants/05-ggx--textbook-denominator.glsl"));
     std::cout << "[ measured ] textbook denominator at the peak: worst relative error " << worst << "\n";
     EXPECT_GT(worst, 0.01);
 }

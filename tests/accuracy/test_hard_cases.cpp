@@ -3,7 +3,7 @@
 // with the reference model and with every model variant, within the case's
 // budget; free of NaN and Inf; the case's own expected behaviour; and, so that
 // each case is known to be able to fail, the naive formulations it exists to
-// catch (tests/mutants/, tests/accuracy/naive/) must break it.
+// catch (tests/mutants/) must break it.
 //
 // Budgets are shares of pixels off by more than 1/255 in any channel
 // (ImageDiff::offFraction). The aim is 0.25%; where a case states more, its
@@ -131,7 +131,7 @@ std::string noNewFireflies(const Scene& scene, const Rendering& gl) {
 // ---- the suite -------------------------------------------------------------------------------
 
 const std::string kMutants = "tests/mutants/";
-const std::string kNaive = "tests/accuracy/naive/";
+const std::string kNaive = "tests/mutants/";  // the naive versions are mutants too
 
 std::vector<HardCase> hardCases() {
     std::vector<HardCase> cases;

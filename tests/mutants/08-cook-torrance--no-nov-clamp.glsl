@@ -1,12 +1,14 @@
-// naive version of: 08-cook-torrance (solutions/08-cook-torrance.glsl)
-// mistake: alpha = roughness^2 without the clamp to 0.045: D = 0/0 at the peak of a mirror, 0 elsewhere
-// caught by: scenes/hard/roughness-0.json
+// mutant of: 08-cook-torrance
+// mistake: NoV = clamp(n.v, 0, 1): 0/0 where the view is exactly tangent (NoV = 0)
+// caught by: the check's message or hint contains "divides by zero"
+// also breaks the hard case: scenes/hard/tangent-rays.json
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: docs/exercises/08-cook-torrance.md
 
 // GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
 // alpha = r^2. The lower clamp keeps D finite for mirror-like surfaces.
 float ggxAlpha(float roughness) {
-    return roughness * roughness;
+    float r = clamp(roughness, 0.045, 1.0);
+    return r * r;
 }
 
 // Reflectance at normal incidence: 4% for dielectrics, the albedo for metals.
@@ -19,7 +21,7 @@ vec3 baseReflectance(Material m) {
 vec3 specularBRDF(vec3 n, vec3 v, vec3 l, Material m) {
     float NoL = clamp(dot(n, l), 0.0, 1.0);
     if (NoL == 0.0) return vec3(0.0);
-    float NoV = clamp(dot(n, v), 1e-4, 1.0);  // 1e-4: keeps 1/NoV finite at grazing view
+    float NoV = clamp(dot(n, v), 0.0, 1.0);
     vec3 h = normalize(l + v);
     float D = D_GGX(n, h, ggxAlpha(m.roughness));
     float G = G_SchlickGGX(NoV, NoL, m.roughness);

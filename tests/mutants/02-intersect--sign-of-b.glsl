@@ -1,6 +1,7 @@
-// naive version of: 02-intersect (solutions/02-intersect.glsl)
-// mistake: GLSL sign(b), which is 0 at b = 0: from the centre of a sphere (b = 0 for every ray) q = 0 and the sphere is missed
-// caught by: scenes/hard/camera-at-centre.json
+// mutant of: 02-intersect
+// mistake: b = f.d taken for the -b of the quadratic (f = origin - centre): both roots change sign, so spheres behind the camera appear in front and those in front vanish
+// caught by: the check's message or hint contains "roots have the wrong sign"
+// also breaks the hard case: scenes/hard/behind-camera.json, behind-camera-only.json
 // Exercise 02: ray/sphere intersection. Handout: docs/exercises/02-intersect.md
 
 // Distance t > 0 along the unit direction `dir` to the nearest point where
@@ -17,7 +18,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
     float discriminant = radius * radius - dot(perpendicular, perpendicular);
     if (discriminant < 0.0) return NO_HIT;
     float c = dot(f, f) - radius * radius;
-    float q = -b - sign(b) * sqrt(discriminant);
+    float q = b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
     if (q == 0.0) return NO_HIT;  // origin on the surface, ray tangent: nothing ahead
     float t0 = c / q;
     float t1 = q;

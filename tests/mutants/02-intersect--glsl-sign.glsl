@@ -1,6 +1,7 @@
-// naive version of: 02-intersect (solutions/02-intersect.glsl)
-// mistake: the far root preferred to the near one: the back of each sphere is seen through its front
-// caught by: scenes/hard/overlapping.json
+// mutant of: 02-intersect
+// mistake: GLSL sign(b), which is 0 at b = 0: from the centre of a sphere (b = 0 for every ray) q = 0 and the sphere is missed
+// caught by: the check's message or hint contains "sign(0.0) is 0"
+// also breaks the hard case: scenes/hard/camera-at-centre.json
 // Exercise 02: ray/sphere intersection. Handout: docs/exercises/02-intersect.md
 
 // Distance t > 0 along the unit direction `dir` to the nearest point where
@@ -17,7 +18,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
     float discriminant = radius * radius - dot(perpendicular, perpendicular);
     if (discriminant < 0.0) return NO_HIT;
     float c = dot(f, f) - radius * radius;
-    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
+    float q = -b - sign(b) * sqrt(discriminant);
     if (q == 0.0) return NO_HIT;  // origin on the surface, ray tangent: nothing ahead
     float t0 = c / q;
     float t1 = q;
@@ -26,7 +27,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
         t0 = t1;
         t1 = swap;
     }
-    if (t1 > 0.0) return t1;
-    if (t0 > 0.0) return t0;
+    if (t0 > 0.0) return t0;  // the near root, in front of the origin
+    if (t1 > 0.0) return t1;  // origin inside the sphere: the far root
     return NO_HIT;            // sphere behind the origin
 }

@@ -1,6 +1,7 @@
-// naive version of: 02-intersect (solutions/02-intersect.glsl)
-// mistake: b = f.d taken for the -b of the quadratic (f = origin - centre): both roots change sign, so spheres behind the camera appear in front and those in front vanish
-// caught by: scenes/hard/behind-camera.json, behind-camera-only.json
+// mutant of: 02-intersect
+// mistake: the far root preferred to the near one: the back of each sphere is seen through its front
+// caught by: the check's message or hint contains "far root comes first"
+// also breaks the hard case: scenes/hard/overlapping.json
 // Exercise 02: ray/sphere intersection. Handout: docs/exercises/02-intersect.md
 
 // Distance t > 0 along the unit direction `dir` to the nearest point where
@@ -17,7 +18,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
     float discriminant = radius * radius - dot(perpendicular, perpendicular);
     if (discriminant < 0.0) return NO_HIT;
     float c = dot(f, f) - radius * radius;
-    float q = b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
+    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
     if (q == 0.0) return NO_HIT;  // origin on the surface, ray tangent: nothing ahead
     float t0 = c / q;
     float t1 = q;
@@ -26,7 +27,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius) {
         t0 = t1;
         t1 = swap;
     }
-    if (t0 > 0.0) return t0;  // the near root, in front of the origin
-    if (t1 > 0.0) return t1;  // origin inside the sphere: the far root
+    if (t1 > 0.0) return t1;
+    if (t0 > 0.0) return t0;
     return NO_HIT;            // sphere behind the origin
 }

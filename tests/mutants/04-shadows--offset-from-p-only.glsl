@@ -1,6 +1,7 @@
-// naive version of: 04-shadows (solutions/04-shadows.glsl)
+// mutant of: 04-shadows
 // mistake: an offset relative to |p| alone: near the origin it vanishes, while the hit point on a big sphere far from the origin carries the rounding error of its centre (acne)
-// caught by: scenes/hard/ground-1e4.json, ground-1e5.json
+// caught by: the check's message or hint contains "follows |p| alone"
+// also breaks the hard case: scenes/hard/ground-1e4.json, ground-1e5.json
 // Exercise 04: shadow rays. Handout: docs/exercises/04-shadows.md
 
 // Start of a secondary ray from hit point p: pushed along the normal n by an

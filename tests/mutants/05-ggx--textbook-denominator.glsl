@@ -1,6 +1,7 @@
-// naive version of: 05-ggx (solutions/05-ggx.glsl)
+// mutant of: 05-ggx
 // mistake: the textbook denominator (n.h)^2 (alpha^2 - 1) + 1, which cancels near the peak in float32
-// caught by: the GGX peak probe (tests/accuracy/test_brdf_physics.cpp) and scenes/hard/ggx-peak.json
+// caught by: the check's message or hint contains "cancels in float32"
+// also breaks the hard case: the GGX peak probe (tests/accuracy/test_brdf_physics.cpp) and scenes/hard/ggx-peak.json
 // Exercise 05: the GGX normal distribution. Handout: docs/exercises/05-ggx.md
 
 // GGX / Trowbridge-Reitz normal distribution function.
