@@ -1,5 +1,7 @@
 #include "accuracy/accuracy_support.h"
 
+#include <cctype>
+
 #include "checks/probe_runner.h"
 #include "core/error.h"
 #include "core/paths.h"
@@ -170,6 +172,19 @@ std::vector<NamedModel> everyModelVariant() {
     models[7].model.fresnel = FresnelModel::Conductor;
     models[7].model.diffuse = DiffuseModel::Burley;
     return models;
+}
+
+std::vector<NamedModel> referenceAndVariants() {
+    std::vector<NamedModel> models = everyModelVariant();
+    models.insert(models.begin(), NamedModel{"reference", ShadingModel{}});
+    return models;
+}
+
+std::string modelTestName(const NamedModel& m) {
+    std::string name = m.name;
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+    return name;
 }
 
 Scene hardScene(const std::string& file) {

@@ -42,7 +42,11 @@ struct NamedModel {
     ShadingModel model;
 };
 std::vector<NamedModel> everyModelVariant();
+// The reference model ("reference") first, then everyModelVariant().
+std::vector<NamedModel> referenceAndVariants();
 inline void PrintTo(const NamedModel& m, std::ostream* out) { *out << m.name; }  // gtest parameter names
+// A gtest parameter name for a model: its name with every non-alphanumeric as '_'.
+std::string modelTestName(const NamedModel& m);
 
 // A scene from scenes/hard/ (throws rl::Error when missing or invalid).
 Scene hardScene(const std::string& file);

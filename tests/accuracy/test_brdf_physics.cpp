@@ -27,18 +27,7 @@ using namespace rl;
 using glm::dvec3;
 using glm::vec3;
 
-std::vector<acc::NamedModel> referenceAndVariants() {
-    std::vector<acc::NamedModel> models = acc::everyModelVariant();
-    models.insert(models.begin(), acc::NamedModel{"reference", ShadingModel{}});
-    return models;
-}
-
-std::string testName(const ::testing::TestParamInfo<acc::NamedModel>& info) {
-    std::string name = info.param.name;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    return name;
-}
+std::string testName(const ::testing::TestParamInfo<acc::NamedModel>& info) { return acc::modelTestName(info.param); }
 
 Implementation withNaive(const std::string& file) {
     std::filesystem::path path = sourceRoot() / file;
@@ -108,7 +97,7 @@ TEST(GgxPeak, Float32WithinOnePercentOfDouble) {
     // The budget: at the roughness clamp (r = 0.045, alpha^2 = 4.1e-6)
     // the peak 1/(pi alpha^2) = 7.8e4 must be finite and within 1% of double,
     // for D alone and for the whole specular lobe D G F / (4 NoL NoV).
-    for (const acc::NamedModel& m : referenceAndVariants()) {
+    for (const acc::NamedModel& m : acc::referenceAndVariants()) {
         if (m.model.distribution == DistributionModel::Beckmann && m.name != "beckmann") continue;
         for (acc::BrdfProbe probe : {acc::BrdfProbe::D, acc::BrdfProbe::Specular}) {
             double worst = worstPeakError(probe, m.model, acc::solutionsWith());
@@ -272,7 +261,7 @@ TEST_P(EnergyTest, DielectricAlbedoMatchesTheCpu) {
     std::cout << "[ measured ] " << GetParam().name << ": largest white-dielectric albedo " << worst << "\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, EnergyTest, ::testing::ValuesIn(referenceAndVariants()), testName);
+INSTANTIATE_TEST_SUITE_P(Models, EnergyTest, ::testing::ValuesIn(acc::referenceAndVariants()), testName);
 
 TEST(Energy, MissingPiInDBreaksTheBound) {
     std::vector<AlbedoPoint> points = {{1.0, 0.3, dvec3(1.0), false}, {0.6, 0.6, dvec3(1.0), false}};
@@ -333,7 +322,7 @@ TEST_P(ReciprocityTest, SwappingLightAndViewChangesNothing) {
     EXPECT_LT(worst, 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, ReciprocityTest, ::testing::ValuesIn(referenceAndVariants()), testName);
+INSTANTIATE_TEST_SUITE_P(Models, ReciprocityTest, ::testing::ValuesIn(acc::referenceAndVariants()), testName);
 
 TEST(Reciprocity, FresnelOfTheViewBreaksIt) {
     // The roughness-aware Fresnel of NoV in the direct light depends on v alone.
@@ -382,7 +371,7 @@ TEST(Fresnel, F0AtNormalIncidenceAndOneAtGrazing) {
     // conductor with (n, k) from F0 and the edge tint (Gulbrandsen's mapping
     // reproduces F0 at normal incidence for any tint). 1e-5: float32 rounding
     // of the inversions, and the 1e-6 clamp of 1 - F0 at F0 = 1.
-    for (const acc::NamedModel& m : referenceAndVariants()) {
+    for (const acc::NamedModel& m : acc::referenceAndVariants()) {
         if (m.model.blinnPhong) continue;  // no Fresnel angle dependence
         auto [normalError, grazingError] = fresnelEndpointErrors(m.model, acc::solutionsWith());
         EXPECT_LT(normalError, 1e-5) << m.name;

@@ -369,9 +369,7 @@ TEST(HardCaseBehaviour, InsideASphereEveryModelMeetsTheAim) {
     HardCase c;
     for (const HardCase& h : hardCases())
         if (h.name == "camera_inside") c = h;
-    std::vector<acc::NamedModel> models = acc::everyModelVariant();
-    models.insert(models.begin(), acc::NamedModel{"reference", ShadingModel{}});
-    for (const acc::NamedModel& m : models) {
+    for (const acc::NamedModel& m : acc::referenceAndVariants()) {
         Scene scene = c.scene();
         scene.model = m.model;
         EXPECT_EQ(problems(c, scene, acc::renderGlsl(scene), ref::renderCpu(scene)), "") << m.name;

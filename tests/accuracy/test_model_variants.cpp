@@ -222,20 +222,9 @@ TEST_P(ModelVariantProbe, Float32MatchesDouble) {
     }
 }
 
-std::vector<acc::NamedModel> referenceAndVariants() {
-    std::vector<acc::NamedModel> models = acc::everyModelVariant();
-    models.insert(models.begin(), acc::NamedModel{"reference", ShadingModel{}});
-    return models;
-}
+std::string testName(const ::testing::TestParamInfo<acc::NamedModel>& info) { return acc::modelTestName(info.param); }
 
-std::string testName(const ::testing::TestParamInfo<acc::NamedModel>& info) {
-    std::string name = info.param.name;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Models, ModelVariantProbe, ::testing::ValuesIn(referenceAndVariants()), testName);
+INSTANTIATE_TEST_SUITE_P(Models, ModelVariantProbe, ::testing::ValuesIn(acc::referenceAndVariants()), testName);
 
 TEST(ModelVariants, ExactFresnelIsOneAtEveryAngleForF0One) {
     // F0 = 1 (albedo 1, metallic 1) is where the exact Fresnel terms invert
