@@ -162,36 +162,37 @@ ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<f
     out.summary.name = spec.name;
     out.summary.total = int(spec.cases.size());
     std::vector<ProbeValue> got(spec.cases.size()), want(spec.cases.size());
-    std::vector<bool> ok(spec.cases.size());
     std::map<std::string, std::pair<int, int>> groups;  // group -> (failed, total)
-    int shown = 0;
+    std::vector<std::size_t> failures;
     for (std::size_t k = 0; k < spec.cases.size(); ++k) {
         got[k] = {raw[k][0], raw[k][1], raw[k][2]};
-        if (raw[k][0] != -1.0e30f) out.allStub = false;
+        if (raw[k][0] != kNotStarted) out.allStub = false;
         want[k] = spec.expected(spec.cases[k]);
-        ok[k] = within(got[k], want[k], spec.outputs, spec.tolerance(spec.cases[k]));
+        bool ok = within(got[k], want[k], spec.outputs, spec.tolerance(spec.cases[k]));
         auto& g = groups[spec.cases[k].group];
         ++g.second;
-        if (ok[k]) {
+        if (ok) {
             ++out.summary.passed;
-            continue;
+        } else {
+            ++g.first;
+            failures.push_back(k);
         }
-        ++g.first;
-        std::string row = "    " + spec.describe(spec.cases[k]) + "  [" + spec.cases[k].group + "]\n      expected " +
-                          valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs) + "\n";
-        if (out.firstFailure.empty())
-            out.firstFailure = spec.name + ": " + std::to_string(0) + " of " + std::to_string(spec.cases.size()) +
-                               " cases wrong; first: " + spec.describe(spec.cases[k]) + ": expected " +
-                               valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs);
-        if (shown++ < 5) out.table += row;
     }
-    int failed = out.summary.total - out.summary.passed;
+    const int failed = int(failures.size());
     if (failed == 0 || out.allStub) return out;
-    // Fix the count in the first line now that it is known.
-    auto pos = out.firstFailure.find(": 0 of ");
-    out.firstFailure.replace(pos, 7, ": " + std::to_string(failed) + " of ");
+    auto result = [&](std::size_t k) {
+        return "expected " + valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs);
+    };
+    const std::size_t first = failures.front();
+    out.firstFailure = spec.name + ": " + std::to_string(failed) + " of " + std::to_string(out.summary.total) +
+                       " cases wrong; first: " + spec.describe(spec.cases[first]) + ": " + result(first);
+    const int shown = std::min(failed, 5);
     out.table = "  " + spec.signature + ": " + std::to_string(failed) + " of " + std::to_string(out.summary.total) +
-                " cases wrong (first " + std::to_string(std::min(failed, 5)) + "):\n" + out.table;
+                " cases wrong (first " + std::to_string(shown) + "):\n";
+    for (int i = 0; i < shown; ++i) {
+        std::size_t k = failures[std::size_t(i)];
+        out.table += "    " + spec.describe(spec.cases[k]) + "  [" + spec.cases[k].group + "]\n      " + result(k) + "\n";
+    }
     // A known mistake: the student's numbers match the mistaken formula on
     // (nearly) every case where that formula differs from the right one.
     for (const KnownMistake& m : spec.mistakes) {

@@ -21,6 +21,9 @@ enum class ProbeFunction : int {
 
 constexpr int kProbeInputFloats = 24;  // six RGBA texels per case
 
+// What every exercise stub returns (NOT_STARTED in shaders/common.glsl).
+constexpr float kNotStarted = -1.0e30f;
+
 struct ProbeCase {
     std::array<float, kProbeInputFloats> in{};
     std::string group;  // what kind of input: "random", "grazing view", "far sphere (1e4)", ...
