@@ -75,7 +75,8 @@ void runRender(const RenderOptions& o) {
         ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
         // The picture-only program trusts traceRay once its helpers are written;
         // with exercise 09 still the shipped stub it keeps the first-hit fallback.
-        bool traceStub = isUnchangedStub(impl.fileFor(findExercise("9").file()), findExercise("9"));
+        const ExerciseInfo& reflections = findExercise("9");
+        bool traceStub = isUnchangedStub(impl.fileFor(reflections.file()), reflections);
         if (!o.generic && !traceStub && (view == View::Final || view == View::Bounce))
             for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
         ShaderProgram program = buildRayTracer(impl, defines);
