@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev libgtest-dev
   libglfw3-dev libimgui-dev
   libzip-dev
+  python3-jsonschema
 )
 window_packages=(xvfb xauth xdotool chromium fonts-dejavu-core imagemagick)
 

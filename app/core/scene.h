@@ -1,4 +1,4 @@
-// Scene: the data model of ../shared/spec/reference-model.md, in double
+// Scene: the data model of docs/model.md, in double
 // precision. The JSON loader (scene_io.cpp) fills it and validates it; the
 // renderer, the CPU reference and every check read it.
 #pragma once

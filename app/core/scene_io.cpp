@@ -269,6 +269,8 @@ LoadedScene parseScene(const std::string& text, const std::string& origin) {
     out.scene.sourcePath = origin;
     Reader top(j, "", origin, out.warnings);
     Scene& s = out.scene;
+    // "$schema" points editors at scenes/scene.schema.json; the program has no use for it.
+    if (top.has("$schema") && !top.raw("$schema").is_string()) top.fail("$schema must be a string (the schema's path)");
     if (top.has("camera")) s.camera = readCamera(top.raw("camera"), origin, out.warnings);
     if (top.has("render")) s.render = readRender(top.raw("render"), origin, out.warnings);
     if (top.has("model")) s.model = readModel(top.raw("model"), origin, out.warnings);

@@ -1,4 +1,4 @@
-// Scene files: JSON as in ../shared/spec/reference-model.md, read with
+// Scene files: JSON as in docs/scene-format.md, read with
 // nlohmann-json and validated field by field. Every problem is one line
 // naming the file (and line:column for syntax errors, the field path for bad
 // values); unknown keys are warnings, not errors.

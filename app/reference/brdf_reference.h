@@ -1,4 +1,4 @@
-// brdf_reference.h: the reference model of ../shared/spec/reference-model.md,
+// brdf_reference.h: the reference model of docs/model.md,
 // term by term, in double precision. It is written independently of the GLSL
 // (no shared code), so that the shader and the exercise probes can be checked
 // against it. Every function here is pure and thread-safe.

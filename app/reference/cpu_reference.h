@@ -1,5 +1,5 @@
 // cpu_reference.h: the double-precision CPU renderer of the reference model
-// (../shared/spec/reference-model.md): visibility, direct light, the mirror
+// (docs/model.md): visibility, direct light, the mirror
 // bounces and the display step, built on the terms of brdf_reference.h.
 // It shares no code with the GLSL; every check compares the shader against it.
 //

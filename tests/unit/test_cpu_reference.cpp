@@ -1,6 +1,6 @@
 // Tests of the double-precision CPU reference (app/reference/). Each expected
 // value is worked out by hand in the comment above it, from the spec
-// (../shared/spec/reference-model.md), or from a closed form of the physics;
+// (docs/model.md), or from a closed form of the physics;
 // none is copied from a run of the code under test.
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
