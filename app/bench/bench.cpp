@@ -1,6 +1,7 @@
 #include "bench/bench.h"
 
 #include "bench/pareto.h"
+#include "bench/textbook.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -113,6 +114,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
     const RenderSettings& r = scene.render;
 
     if (wanted(options, "modes")) {
+        add("textbook", "modes", false, scene, false)->textbook = true;
         add("generic", "modes", false, scene, false);
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
@@ -220,7 +222,7 @@ Measurement describe(const Variant& v) {
     Measurement m;
     m.variant = v.name;
     m.sweep = v.sweep;
-    m.mode = modeName(v.specialised, v.picture);
+    m.mode = v.textbook ? "textbook" : modeName(v.specialised, v.picture);
     m.width = v.scene.render.width;
     m.height = v.scene.render.height;
     m.spp = v.scene.render.spp;
@@ -255,11 +257,16 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
         if (v.skipReason.empty()) {
             try {
                 auto start = std::chrono::steady_clock::now();
-                ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
-                if (v.picture)
-                    for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
-                for (const std::string& name : v.withoutDefines) defines.erase(name);
-                programs[i] = buildRayTracer(Implementation{implDir, v.overrides}, defines);
+                if (v.textbook) {
+                    programs[i] = buildTextbook();
+                    setTextbookUniforms(programs[i], v.scene);
+                } else {
+                    ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
+                    if (v.picture)
+                        for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+                    for (const std::string& name : v.withoutDefines) defines.erase(name);
+                    programs[i] = buildRayTracer(Implementation{implDir, v.overrides}, defines);
+                }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
                 renderer.setScene(v.scene);
@@ -401,19 +408,25 @@ double ModeComparison::speedup() const {
     return generic->msMedian / specialised->msMedian;
 }
 
+double ModeComparison::overTextbook() const {
+    if (!textbook || !specialised || specialised->msMedian <= 0) return 0;
+    return textbook->msMedian / specialised->msMedian;
+}
+
 std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements) {
     std::vector<ModeComparison> out;
     for (const Measurement& m : measurements) {
         if (m.sweep != "modes" || m.skipped) continue;
         auto it = std::find_if(out.begin(), out.end(), [&](const ModeComparison& c) { return c.scene == m.scene; });
         if (it == out.end()) {
-            out.push_back({m.scene, nullptr, nullptr, nullptr, nullptr});
+            out.push_back({m.scene, nullptr, nullptr, nullptr, nullptr, nullptr});
             it = out.end() - 1;
         }
         if (m.mode == "generic") it->generic = &m;
         else if (m.mode == "specialised") it->specialised = &m;
         else if (m.mode == "generic-picture") it->genericPicture = &m;
         else if (m.mode == "specialised-full") it->specialisedFull = &m;
+        else if (m.mode == "textbook") it->textbook = &m;
     }
     out.erase(std::remove_if(out.begin(), out.end(),
                              [](const ModeComparison& c) { return !c.generic || !c.specialised; }),
@@ -479,6 +492,14 @@ std::string formatComparisons(const std::vector<Measurement>& measurements) {
                       c.specialised->error.p99Lsb, c.generic->error.p99Lsb, 100 * c.specialised->error.offFraction,
                       100 * c.generic->error.offFraction);
         s << line;
+        if (c.textbook) {
+            std::snprintf(line, sizeof line,
+                          "  against the textbook shader (the yardstick): specialised %.2fx, generic %.2fx "
+                          "(textbook %.2f ms, error mean %.3f LSB, off %.3f%%)\n",
+                          c.overTextbook(), c.textbook->msMedian / c.generic->msMedian, c.textbook->msMedian,
+                          c.textbook->error.meanLsb, 100 * c.textbook->error.offFraction);
+            s << line;
+        }
         if (c.genericPicture && c.specialisedFull) {
             double g = c.generic->msMedian;
             std::snprintf(line, sizeof line,

@@ -28,6 +28,7 @@ struct Variant {
     std::string sweep;       // the group it belongs to: "modes", "bounces", "spp", "resolution", "models", "strategies"
     bool specialised = true; // shaderDefinesFor(scene, specialised)
     bool picture = true;     // plus pictureOnlyDefines(): what `raylab render` adds for the picture
+    bool textbook = false;   // the yardstick instead (bench/textbook.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
     // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
@@ -81,6 +82,7 @@ const std::vector<std::string>& sweepNames();
 //   generic-picture   the same plus pictureOnlyDefines()
 //   specialised-full  shaderDefinesFor(scene, true): every view, as a live window compiles it
 //   specialised       shaderDefinesFor(scene, true) plus pictureOnlyDefines(): `raylab render`
+// and the yardstick, "textbook" (bench/textbook.h), which has none of them.
 std::string modeName(bool specialised, bool picture);
 
 // The variants of one scene (already at the bench size), in table order.
@@ -107,7 +109,9 @@ struct ModeComparison {
     const Measurement* specialised = nullptr;
     const Measurement* genericPicture = nullptr;
     const Measurement* specialisedFull = nullptr;
+    const Measurement* textbook = nullptr;  // the yardstick, when the run has it
     double speedup() const;  // generic ms / specialised ms
+    double overTextbook() const;  // textbook ms / specialised ms (0 without the yardstick)
 };
 std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements);
 

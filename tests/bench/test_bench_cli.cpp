@@ -204,7 +204,7 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
     std::map<std::string, int> perSweep;
     for (const Variant& v : all) ++perSweep[v.sweep];
     for (const std::string& sweep : sweepNames()) EXPECT_GT(perSweep[sweep], 0) << sweep;
-    EXPECT_EQ(perSweep["modes"], 4);
+    EXPECT_EQ(perSweep["modes"], 5);  // the textbook yardstick and raylab's four modes
     auto find = [&](const std::string& name) {
         auto it = std::find_if(all.begin(), all.end(), [&](const Variant& v) { return v.name == name; });
         EXPECT_NE(it, all.end()) << name;
@@ -214,6 +214,8 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
     EXPECT_FALSE(find("generic").picture);
     EXPECT_TRUE(find("specialised").specialised);
     EXPECT_TRUE(find("specialised").picture);
+    EXPECT_TRUE(find("textbook").textbook);
+    EXPECT_FALSE(find("specialised").textbook);
     EXPECT_EQ(find("bounces=0").scene.render.maxBounces, 0);
     EXPECT_EQ(find("spp=9").scene.render.spp, 9);
     EXPECT_EQ(find("res=1/2").scene.render.width, (scene.render.width + 1) / 2);
@@ -261,6 +263,8 @@ TEST(BenchCli, TinyRunWritesTheCsvAndThePlot) {
         return *std::find_if(rows.begin(), rows.end(), [&](auto& row) { return row["variant"] == variant; });
     };
     EXPECT_EQ(find("generic")["err_mean_lsb"], find("specialised")["err_mean_lsb"]);
+    EXPECT_EQ(find("textbook")["mode"], "textbook");
+    EXPECT_NE(r.output.find("against the textbook shader"), std::string::npos) << r.output;
     EXPECT_EQ(find("res=1/2")["width"], "12");
 
     std::string plot = test::readText(svg);
@@ -277,10 +281,35 @@ TEST(BenchCli, SeveralScenesAndOneSweep) {
                              " --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1 --csv " + csv);
     ASSERT_EQ(r.status, 0) << r.output;
     std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
-    ASSERT_EQ(rows.size(), 8u);  // 4 modes x 2 scenes
+    ASSERT_EQ(rows.size(), 10u);  // (textbook + 4 modes) x 2 scenes
     EXPECT_EQ(rows[0]["scene"], "lecture");
-    EXPECT_EQ(rows[7]["scene"], "metal-row");
+    EXPECT_EQ(rows[9]["scene"], "metal-row");
     for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
+}
+
+// The yardstick is a faithful implementation of the model: on every bundled
+// course scene its picture is as close to the CPU reference as raylab's own
+// (1/255 is one display step; the textbook's fixed relative offset may move a
+// few contact-shadow pixels, hence the small allowance on the share off).
+TEST(BenchCli, TheTextbookYardstickRendersTheModel) {
+    fs::path dir = test::freshTempDir("bench_textbook");
+    std::string csv = (dir / "bench.csv").string(), scenes;
+    for (const char* name : {"lecture", "metal-row", "dielectric-row", "metal-row-reflections", "dielectric-row-reflections"})
+        scenes += " " + (scenesDir() / (std::string(name) + ".json")).string();
+    auto r = test::runRaylab("bench" + scenes + " --sweeps modes --size 64x48 --warmup 0 --frames 1 --reference-spp 1 --csv " + csv);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::map<std::string, std::map<std::string, std::string>> textbook, specialised;
+    for (auto& row : readCsv(test::readText(csv))) {
+        if (row["variant"] == "textbook") textbook[row["scene"]] = row;
+        if (row["variant"] == "specialised") specialised[row["scene"]] = row;
+    }
+    ASSERT_EQ(textbook.size(), 5u) << r.output;
+    for (auto& [scene, row] : textbook) {
+        EXPECT_EQ(row["skipped"], "0") << scene << ": " << row["note"];
+        EXPECT_EQ(row["non_finite"], "0") << scene;
+        EXPECT_LE(std::stod(row["err_mean_lsb"]), std::stod(specialised[scene]["err_mean_lsb"]) + 0.05) << scene;
+        EXPECT_LE(std::stod(row["off_frac"]), std::stod(specialised[scene]["off_frac"]) + 0.005) << scene;
+    }
 }
 
 // A variant that does not build (here: every one, the implementation has a
@@ -297,8 +326,12 @@ TEST(BenchCli, VariantsThatDoNotBuildAreSkippedWithTheReason) {
                              impl.string() + " --csv " + csv);
     ASSERT_EQ(r.status, 0) << r.output;
     std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
-    ASSERT_EQ(rows.size(), 7u);
+    ASSERT_EQ(rows.size(), 8u);
     for (auto& row : rows) {
+        if (row["variant"] == "textbook") {  // the yardstick reads no exercise file
+            EXPECT_EQ(row["skipped"], "0") << row["note"];
+            continue;
+        }
         EXPECT_EQ(row["skipped"], "1") << row["variant"];
         EXPECT_NE(row["note"].find("does not build"), std::string::npos) << row["note"];
         EXPECT_NE(row["note"].find("07-fresnel.glsl"), std::string::npos) << row["note"];

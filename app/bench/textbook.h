@@ -1,0 +1,18 @@
+// The bench's yardstick: shaders/yardstick/textbook.frag, the model written
+// the plain way with none of raylab's layers. Every speed claim in
+// docs/performance.md is a ratio against it, measured in the same run.
+#pragma once
+
+#include "core/scene.h"
+#include "shader/program.h"
+
+namespace rl::bench {
+
+// Compiles the textbook program (throws ShaderError / rl::Error like any program).
+ShaderProgram buildTextbook();
+
+// Its tb_ uniforms for `scene` (camera frame in double, then float32). They
+// live in the program object: set them once after building, before drawing.
+void setTextbookUniforms(const ShaderProgram& program, const Scene& scene);
+
+}  // namespace rl::bench
