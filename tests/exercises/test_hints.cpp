@@ -7,14 +7,21 @@
 //     written as 3.14);
 //   - a group hint ("fails mostly on X") only when X holds at least half of
 //     the failures and fails far more often than the other inputs;
-//   - failures spread over every kind of input are said to be so.
+//   - failures spread over every kind of input are said to be so;
+//   - every mistake a handout lists is known to the checker by name and has
+//     a mutant in tests/mutants/.
 #include "checks/checker.h"
 #include "checks/probe_cases.h"
+#include "core/paths.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <regex>
+#include <sstream>
 
 using namespace rl;
 
@@ -145,4 +152,55 @@ TEST(Hints, OneConstantFactorOnEveryCaseIsNamedWithItsNumber) {
     // Any other factor: the number, and no invented cause.
     ProbeOutcome k = evaluateProbe(fd, resultsOf(fd, [&](const ProbeCase& c) { return scaled(fd.expected(c), 1.25); }));
     EXPECT_TRUE(contains(k.hint, "every value is 1.25 times the right one: a constant factor is off")) << k.hint;
+}
+
+TEST(Hints, EveryMistakeAHandoutListsIsKnownByNameAndHasAMutant) {
+    namespace fs = std::filesystem;
+    // The mutants' "caught by" texts, per exercise.
+    std::map<std::string, std::vector<std::string>> caughtBy;
+    const std::regex header(R"re(// mutant of: (\d\d)-[\s\S]*?// caught by: .* contains "(.*)")re");
+    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "mutants")) {
+        std::string text = test::readText(e.path());
+        std::smatch m;
+        if (std::regex_search(text, m, header)) caughtBy[m[1]].push_back(m[2]);
+    }
+    int rows = 0;
+    for (const auto& e : fs::directory_iterator(sourceRoot() / "docs" / "exercises")) {
+        std::string name = e.path().filename().string();
+        if (e.path().extension() != ".md" || !std::isdigit(static_cast<unsigned char>(name[0]))) continue;
+        int exercise = std::stoi(name.substr(0, 2));
+        std::vector<ProbeSpec> specs = probesForExercise(exercise);
+        // The first table of "Mistakes the checker recognises": | what you see | the checker's hint |
+        std::istringstream lines(test::readText(e.path()));
+        std::string line;
+        bool inSection = false, inTable = false;
+        while (std::getline(lines, line)) {
+            if (line.rfind("## ", 0) == 0) inSection = line == "## Mistakes the checker recognises";
+            if (!inSection) continue;
+            if (line == "| what you see | the checker's hint |") {
+                inTable = true;
+                continue;
+            }
+            if (inTable && line.rfind("|---", 0) == 0) continue;
+            if (inTable && line.rfind("| ", 0) != 0) break;  // the end of the first table
+            if (!inTable) continue;
+            std::string row = std::regex_replace(line, std::regex(R"(\\\|)"), "!");  // \| inside a cell
+            std::smatch cells;
+            ASSERT_TRUE(std::regex_match(row, cells, std::regex(R"(\| (.*) \| (.*) \|)"))) << name << ": " << line;
+            std::string symptom = std::regex_replace(cells[1].str(), std::regex("!"), "|");
+            std::string hint = std::regex_replace(cells[2].str(), std::regex("!"), "|");
+            ++rows;
+            // Known by name: a KnownMistake with this symptom or this hint,
+            // or the constant-factor rule (pi written as 3.14).
+            bool known = symptom.rfind("every value is ", 0) == 0 && contains(hint, "pi written as 3.14");
+            for (const ProbeSpec& spec : specs)
+                for (const KnownMistake& m : spec.mistakes) known = known || m.symptom == symptom || m.hint == hint;
+            EXPECT_TRUE(known) << name << ": the checker does not know \"" << symptom << "\"";
+            bool mutant = false;
+            for (const std::string& text : caughtBy[name.substr(0, 2)])
+                mutant = mutant || contains(symptom + " " + hint, text);
+            EXPECT_TRUE(mutant) << name << ": no mutant in tests/mutants/ is caught as \"" << symptom << "\"";
+        }
+    }
+    EXPECT_GE(rows, 40);
 }
