@@ -416,6 +416,10 @@ std::vector<ProbeSpec> lambertProbes() {
     e.expected = [](const ProbeCase& c) {
         return value(R::pointLightIrradiance(get(c, 0), get(c, 4), get(c, 8), get(c, 12)));
     };
+    // C I / d2 * NoL: a subtraction, a dot product, an inverse square root
+    // and two products, a dozen ulps; 1e-4 relative (kRel). The absolute part
+    // follows |C I| for components near zero (grazing light). No constant but
+    // the 1e-12 threshold, probed on both sides above.
     e.tolerance = [](const ProbeCase& c) {
         return std::make_pair(kAbs * std::max(1.0, glm::length(get(c, 12))), kRel);
     };
@@ -1048,7 +1052,9 @@ std::vector<ProbeSpec> displayProbes() {
             tm.cases.push_back(c);
         }
     tm.expected = [](const ProbeCase& c) { return value(R::toneMap(get(c, 0), ToneMap(int(f(c, 3))))); };
-    tm.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };  // values in [0, 1]; exp() is a few ulps
+    // Values in [0, 1]; exp() is a few ulps, a division 2.5: 1e-5 absolute is
+    // ~100 ulps of 1. No constant to slip but 1.
+    tm.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };
     tm.describe = [](const ProbeCase& c) { return "c=" + fmt(get(c, 0)) + " op=" + fmt(f(c, 3)); };
 
     ProbeSpec gm{ProbeFunction::Gamma, "encodeGamma", "encodeGamma(c, gamma)", 3};
@@ -1099,6 +1105,7 @@ std::vector<ProbeSpec> displayProbes() {
         return s;
     };
     dp.expected = [=](const ProbeCase& c) { return value(R::displayEncode(get(c, 0), settingsOf(c))); };
+    // The two steps above chained on values in [0, 1]: 1e-5 absolute, as there.
     dp.tolerance = [](const ProbeCase&) { return std::make_pair(1e-5, 0.0); };
     dp.describe = [](const ProbeCase& c) {
         return "radiance=" + fmt(get(c, 0)) + " exposure=" + fmt(f(c, 3)) + " op=" + fmt(f(c, 4)) + " gamma=" + fmt(f(c, 5));
