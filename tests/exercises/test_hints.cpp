@@ -54,7 +54,6 @@ ProbeValue scaled(ProbeValue v, double k) { return {k * v[0], k * v[1], k * v[2]
 TEST(Hints, RightAnswersPassWithoutAHint) {
     for (int exercise = 1; exercise <= 10; ++exercise)
         for (const ProbeSpec& spec : probesForExercise(exercise)) {
-            if (spec.function == ProbeFunction::OffsetOrigin) continue;  // float32 rounding of p + offset: checked on the GPU
             ProbeOutcome o = evaluateProbe(spec, resultsOf(spec, spec.expected));
             EXPECT_EQ(o.summary.passed, o.summary.total) << spec.name << ": " << o.firstFailure;
             EXPECT_TRUE(o.hint.empty()) << spec.name << ": " << o.hint;
