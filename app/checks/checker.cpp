@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -149,13 +150,47 @@ bool within(const ProbeValue& got, const ProbeValue& want, int outputs, std::pai
     return true;
 }
 
-struct ProbeOutcome {
-    ProbeSummary summary;
-    bool allStub = true;
-    std::string firstFailure;  // one line
-    std::string table;
-    std::string hint;
-};
+// Every value is the right one times the same factor k (fitted as the
+// median ratio, then checked on every case within the tolerance): a constant
+// slipped. Empty when no single factor explains all the numbers.
+std::optional<double> commonFactor(const ProbeSpec& spec, const std::vector<ProbeValue>& got,
+                                   const std::vector<ProbeValue>& want) {
+    std::vector<double> ratios;
+    for (std::size_t k = 0; k < got.size(); ++k)
+        for (int i = 0; i < spec.outputs; ++i)
+            if (want[k][i] != 0 && std::isfinite(got[k][i]) && std::fabs(got[k][i] - want[k][i]) > 0)
+                ratios.push_back(got[k][i] / want[k][i]);
+    if (ratios.empty()) return std::nullopt;
+    std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(ratios.size() / 2), ratios.end());
+    double factor = ratios[ratios.size() / 2];
+    if (!std::isfinite(factor) || factor <= 0) return std::nullopt;
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        ProbeValue scaled = {factor * want[k][0], factor * want[k][1], factor * want[k][2]};
+        if (!within(got[k], scaled, spec.outputs, spec.tolerance(spec.cases[k]))) return std::nullopt;
+    }
+    return factor;
+}
+
+// The constant slips a factor k points at (k = student / right).
+std::string constantSlip(double factor) {
+    constexpr double pi = 3.14159265358979323846;
+    const std::pair<double, const char*> slips[] = {
+        {pi / 3.14, "pi written as 3.14"},          {3.14 / pi, "pi written as 3.14"},
+        {pi / 3.1416, "pi written as 3.1416"},      {3.1416 / pi, "pi written as 3.1416"},
+        {pi / 3.14159, "pi written as 3.14159"},    {3.14159 / pi, "pi written as 3.14159"},
+        {pi / (22.0 / 7.0), "pi written as 22/7"},  {(22.0 / 7.0) / pi, "pi written as 22/7"},
+        {0.318 * pi, "1/pi written as 0.318"},      {0.3183 * pi, "1/pi written as 0.3183"},
+    };
+    // The factor is fitted from float32 results: good to ~1e-7, and the
+    // nearest two slips above (3.1416 and 3.14159) are 3e-6 apart.
+    for (const auto& [k, name] : slips)
+        if (std::fabs(factor / k - 1) < 1e-6) return std::string(name) + ": use PI from shaders/common.glsl";
+    return "";
+}
+
+std::string countText(int failed, int total) { return std::to_string(failed) + " of " + std::to_string(total); }
+
+}  // namespace
 
 ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<float, 4>>& raw) {
     ProbeOutcome out;
@@ -178,67 +213,91 @@ ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<f
             failures.push_back(k);
         }
     }
-    const int failed = int(failures.size());
+    const int failed = int(failures.size()), total = out.summary.total;
     if (failed == 0 || out.allStub) return out;
     auto result = [&](std::size_t k) {
         return "expected " + valueText(want[k], spec.outputs) + ", got " + valueText(got[k], spec.outputs);
     };
     const std::size_t first = failures.front();
-    out.firstFailure = spec.name + ": " + std::to_string(failed) + " of " + std::to_string(out.summary.total) +
-                       " cases wrong; first: " + spec.describe(spec.cases[first]) + ": " + result(first);
+    out.firstFailure = spec.name + ": " + countText(failed, total) + " cases wrong; first: " +
+                       spec.describe(spec.cases[first]) + ": " + result(first);
     const int shown = std::min(failed, 5);
-    out.table = "  " + spec.signature + ": " + std::to_string(failed) + " of " + std::to_string(out.summary.total) +
-                " cases wrong (first " + std::to_string(shown) + "):\n";
+    out.table = "  " + spec.signature + ": " + countText(failed, total) + " cases wrong (first " +
+                std::to_string(shown) + "):\n";
     for (int i = 0; i < shown; ++i) {
         std::size_t k = failures[std::size_t(i)];
         out.table += "    " + spec.describe(spec.cases[k]) + "  [" + spec.cases[k].group + "]\n      " + result(k) + "\n";
     }
-    // A known mistake: the student's numbers match the mistaken formula on
-    // (nearly) every case where that formula differs from the right one.
+    // A hint names a cause only when the numbers support it.
+    // 1. A known mistake: the student's numbers match the mistaken formula on
+    //    EVERY case (also where it agrees with the right answer), and the
+    //    formula differs from the right answer somewhere.
     for (const KnownMistake& m : spec.mistakes) {
-        int differing = 0, matching = 0;
-        for (std::size_t k = 0; k < spec.cases.size(); ++k) {
+        bool matchesAll = true, differs = false;
+        for (std::size_t k = 0; k < spec.cases.size() && matchesAll; ++k) {
             ProbeValue wrong = m.compute(spec.cases[k]);
             auto tol = spec.tolerance(spec.cases[k]);
-            if (within(wrong, want[k], spec.outputs, tol)) continue;
-            ++differing;
-            if (within(got[k], wrong, spec.outputs, tol)) ++matching;
+            differs = differs || !within(wrong, want[k], spec.outputs, tol);
+            matchesAll = within(got[k], wrong, spec.outputs, tol);
         }
-        if (differing > 0 && matching >= std::max(1, int(0.8 * differing))) {
+        if (matchesAll && differs) {
             out.hint = "looks like: " + m.symptom + ". " + m.hint;
             return out;
         }
     }
-    // Failures concentrated in one kind of input (ties: the group with a hint).
-    auto hintFor = [&](const std::string& group) -> const std::string* {
-        for (const auto& [g, hint] : spec.groupHints)
-            if (g == group) return &hint;
-        return nullptr;
-    };
-    std::string worst;
-    int worstFailed = 0;
-    bool everyGroupFails = true;
-    for (const auto& [group, counts] : groups) {
-        everyGroupFails = everyGroupFails && counts.first > 0;
-        bool better = counts.first > worstFailed || (counts.first == worstFailed && counts.first > 0 &&
-                                                      hintFor(group) && !hintFor(worst));
-        if (better) {
-            worstFailed = counts.first;
-            worst = group;
+    // 2. Every value off by the same factor: a constant slipped.
+    if (std::optional<double> factor = commonFactor(spec, got, want)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.7g", *factor);
+        std::string slip = constantSlip(*factor);
+        out.hint = "every value is " + std::string(text) + " times the right one: " +
+                   (slip.empty() ? std::string("a constant factor is off") : slip);
+        return out;
+    }
+    // 3. A group hint, when that group's failures stand out: it holds at least
+    //    half of the failures, and the other inputs fail at most a quarter as
+    //    often as its own cases.
+    const std::pair<std::string, std::string>* best = nullptr;
+    double bestRate = 0;
+    for (const auto& groupHint : spec.groupHints) {
+        auto it = groups.find(groupHint.first);
+        if (it == groups.end()) continue;
+        auto [groupFailed, groupTotal] = it->second;
+        double rate = double(groupFailed) / groupTotal;
+        int restTotal = total - groupTotal;
+        double restRate = restTotal ? double(failed - groupFailed) / restTotal : 0.0;
+        bool standsOut = 2 * groupFailed >= failed && restRate <= rate / 4;
+        if (standsOut && rate > bestRate) {
+            best = &groupHint;
+            bestRate = rate;
         }
     }
-    if (const std::string* hint = hintFor(worst); hint && 2 * worstFailed >= failed) {
-        out.hint = "fails mostly on " + worst + ": " + *hint;
+    if (best) {
+        out.hint = "fails mostly on " + best->first + ": " + best->second;
         return out;
     }
-    if (everyGroupFails && groups.size() > 1) {
-        out.hint = "fails on every kind of input: compare your formula with the handout, term by term";
+    // 4. No cause the numbers support: say where it fails, with the counts.
+    bool everyGroupFails = std::all_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.first > 0; });
+    if (everyGroupFails) {
+        out.hint = "fails on every kind of input (" + countText(failed, total) +
+                   " cases): compare your formula with the handout, term by term";
         return out;
     }
-    out.hint = "fails mostly on " + worst + " (" + std::to_string(groups[worst].first) + " of " +
-               std::to_string(groups[worst].second) + " such cases)";
+    std::vector<std::pair<std::string, std::pair<int, int>>> failing;
+    for (const auto& g : groups)
+        if (g.second.first > 0) failing.push_back(g);
+    std::sort(failing.begin(), failing.end(), [](const auto& a, const auto& b) {
+        return a.second.first * b.second.second > b.second.first * a.second.second;  // highest failure rate first
+    });
+    std::string where;
+    for (const auto& [group, counts] : failing)
+        where += (where.empty() ? "" : ", ") + group + " (" + countText(counts.first, counts.second) + ")";
+    out.hint = "fails on " + where + "; every other kind of input passes: compare your formula with the handout "
+               "on these inputs";
     return out;
 }
+
+namespace {
 
 // ---- one exercise, inside the child --------------------------------------------------------
 
@@ -317,7 +376,8 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         s.nonFinite = diff.nonFinite;
         // The core's budget (issue 2): <= 0.5% of pixels off by more than
         // 1/255, mean difference < 0.2/255, no NaN or Inf.
-        s.passed = diff.offFraction <= 0.005 && diff.meanLsb < 0.2 && diff.nonFinite == 0;
+        const bool pixelsOk = diff.offFraction <= 0.005, meanOk = diff.meanLsb < 0.2, finite = diff.nonFinite == 0;
+        s.passed = pixelsOk && meanOk && finite;
         if (!s.passed || options.writeAllImages) {
             std::error_code ec;
             fs::create_directories(outDir, ec);
@@ -329,10 +389,14 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
             writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
         }
         if (!s.passed) {
-            char line[256];
-            std::snprintf(line, sizeof line, "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%), mean %.2f/255%s\n",
-                          c.name.c_str(), 100 * diff.offFraction, diff.meanLsb,
-                          diff.nonFinite ? (", " + std::to_string(diff.nonFinite) + " NaN/Inf values").c_str() : "");
+            // Each budget with its number and whether this image is over it.
+            char line[320];
+            std::snprintf(line, sizeof line,
+                          "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%: %s), mean error %.2f/255 "
+                          "(budget 0.2/255: %s)%s\n",
+                          c.name.c_str(), 100 * diff.offFraction, pixelsOk ? "within" : "OVER", diff.meanLsb,
+                          meanOk ? "within" : "OVER",
+                          finite ? "" : (", " + std::to_string(diff.nonFinite) + " NaN/Inf values (budget 0: OVER)").c_str());
             table += line;
             table += "    expected " + s.expectedPng + "\n    got      " + s.gotPng + "\n    diff     " + s.diffPng + "\n";
             if (report.message.empty()) {

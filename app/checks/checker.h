@@ -10,6 +10,7 @@
 #pragma once
 
 #include "checks/exercise_registry.h"
+#include "checks/probe_cases.h"
 #include "core/image.h"
 #include "core/scene.h"
 
@@ -80,6 +81,20 @@ std::vector<CheckScene> makeCheckScenes();
 // Checks one exercise (in a child process when options.isolate).
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes);
+
+// The verdict on one probe, from the GPU's results (RGB of one texel per
+// case): the counts, the first failure, the table and a hint that names a
+// cause only when the student's numbers support it (a known mistake matched
+// on every case, one constant factor on every case, or a group whose
+// failures stand out); otherwise it says where it fails, with the counts.
+struct ProbeOutcome {
+    ProbeSummary summary;
+    bool allStub = true;
+    std::string firstFailure;  // one line
+    std::string table;
+    std::string hint;
+};
+ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<float, 4>>& raw);
 
 // The one-line verdict printed by `raylab check` for a report, plus its hint
 // and details on the following lines (indented).

@@ -1,7 +1,9 @@
 // The checker can fail: solutions pass, stubs are NOT STARTED, every mutant
 // in tests/mutants/ is caught by its exercise with a message that names the
-// mistake's symptom, compile errors name the student's file and line, and a
-// shader that never ends costs its exercise, not the run.
+// mistake's symptom (and never a cause its header rules out), every correct
+// alternative in tests/alternatives/ passes, compile errors name the
+// student's file and line, and a shader that never ends costs its exercise,
+// not the run.
 #include "core/paths.h"
 #include "support/test_support.h"
 
@@ -78,9 +80,45 @@ TEST_P(Mutants, AreCaughtWithTheirSymptom) {
     EXPECT_NE(r.output.find(" FAIL "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(expect[1].str()), std::string::npos) << "expected the symptom '" << expect[1] << "' in:\n"
                                                                   << r.output;
+    // A hint must not name a cause the numbers do not support: the header
+    // may list what this mutant must never be told.
+    const std::regex never(R"re(// never says: "(.*)")re");
+    for (std::sregex_iterator it(text.begin(), text.end(), never), end; it != end; ++it)
+        EXPECT_EQ(r.output.find((*it)[1].str()), std::string::npos) << "told '" << (*it)[1] << "' in:\n" << r.output;
 }
 
 INSTANTIATE_TEST_SUITE_P(TestsMutants, Mutants, ::testing::ValuesIn(mutantFiles()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param.substr(0, info.param.size() - 5);
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+// Correct solutions written differently (tests/alternatives/): the checker
+// must not reject a right answer for its form.
+std::vector<std::string> alternativeFiles() {
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "alternatives"))
+        if (e.path().extension() == ".glsl") files.push_back(e.path().filename().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+class Alternatives : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Alternatives, Pass) {
+    fs::path file = sourceRoot() / "tests" / "alternatives" / GetParam();
+    std::smatch exercise;
+    std::string text = test::readText(file);
+    ASSERT_TRUE(std::regex_search(text, exercise, std::regex(R"(// alternative of: (\d\d)-)"))) << "header missing";
+    auto r = test::runRaylab("check --exercise " + exercise[1].str() + " --file " + file.string() + " --output " +
+                             test::freshTempDir("alternative").string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(" PASS "), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(TestsAlternatives, Alternatives, ::testing::ValuesIn(alternativeFiles()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              std::string name = info.param.substr(0, info.param.size() - 5);
                              for (char& c : name)
