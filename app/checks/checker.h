@@ -17,6 +17,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,14 @@ std::vector<CheckScene> makeCheckScenes();
 // Checks one exercise (in a child process when options.isolate).
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes);
+
+// The last step of `raylab check`: every exercise file of the folder (with
+// options.fileOverride) compiled together into the ray tracer, as `raylab
+// render` compiles them, in a child process like the exercises. Two files
+// that each pass alone can still clash (both define a helper `pow5`).
+// Status Pass or CompileError (TimedOut, Crashed); id "all files". nullopt,
+// without compiling, when a file of the ten is missing (each is NOT STARTED).
+std::optional<ExerciseReport> checkTogether(const CheckOptions& options);
 
 // The one-line verdict printed by `raylab check` for a report, plus its hint
 // and details on the following lines (indented).
