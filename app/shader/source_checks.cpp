@@ -243,7 +243,27 @@ void explainDriverDiagnostics(std::vector<ShaderDiagnostic>& diagnostics, const 
     constexpr std::size_t kExplained = 64;
     for (std::size_t k = 0; k < diagnostics.size() && k < kExplained; ++k) {
         ShaderDiagnostic& d = diagnostics[k];
-        if (d.severity != "error" || d.where.file.empty()) continue;
+        if (d.severity != "error") continue;
+        if (d.where.file.empty()) {
+            // A link error has no line: a function an exercise file declares
+            // and no file defines is the usual one.
+            bool moved = false;
+            for (const std::string& name : quotedIdentifiers(d.message)) {
+                for (const SourceFile& f : source.sources) {
+                    if (!f.exercise || moved) continue;
+                    for (const GlslFunction& fn : scanOf(f).functions) {
+                        if (fn.name != name || fn.hasBody) continue;
+                        d = at(f, fn.line,
+                               name + " is declared here but no file defines it (the driver says: " + d.message + ")");
+                        moved = true;
+                        break;
+                    }
+                }
+                if (moved) break;
+            }
+            if (!moved) d.message += " [the driver names no line: a problem between the files]";
+            continue;
+        }
         const SourceFile* file = source.source(d.where.file);
         if (!file) continue;
         if (d.where.endOfFile) {

@@ -217,3 +217,16 @@ TEST(ShaderErrors, AHelperDefinedInTwoExerciseFilesNamesBoth) {
                                        ": the exercise files are compiled together, so rename one of them"))
         << r.output;
 }
+
+TEST(ShaderErrors, AFunctionDeclaredButDefinedNowhereIsNamedWhereItIsDeclared) {
+    // The linker names no line ("unresolved reference to function `helper'").
+    std::string f = solution("07-fresnel.glsl");
+    auto pos = f.find("(m2 * m2 * m);");
+    ASSERT_NE(pos, std::string::npos);
+    f.replace(pos, 14, "helper(m);");
+    auto r = renderWith("undefined_helper", "07-fresnel.glsl", "float helper(float x);\n" + f);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.output, "07-fresnel.glsl:1: error: helper is declared here but no file defines it"))
+        << r.output;
+    EXPECT_FALSE(contains(r.output, "<shader>")) << r.output;
+}
