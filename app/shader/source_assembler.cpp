@@ -314,9 +314,11 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
             } catch (const Error& e) {
                 throw Error(where + quoted + ": " + e.what());
             }
-            std::error_code missing;
-            if (!fs::is_regular_file(target, missing))
-                throw Error(where + quoted + ": " + displayPath(target) + ": file not found");
+            std::error_code ec;
+            const fs::file_status status = fs::status(target, ec);
+            if (!fs::exists(status)) throw Error(where + quoted + ": " + displayPath(target) + ": file not found");
+            if (!fs::is_regular_file(status))  // a FIFO would block, a device never end
+                throw Error(where + quoted + ": " + displayPath(target) + ": is not a regular file");
             // Keep a blank line in place of the directive so line k stays line k.
             out.append("", {shown, k});
             const int includer = f.source;  // `f` and `src` are not valid after start()

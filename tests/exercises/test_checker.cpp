@@ -140,6 +140,19 @@ TEST(Checker, FilesThatPassAloneButClashTogetherFailTheCheck) {
     EXPECT_EQ(r.output.find("all files"), std::string::npos) << r.output;
 }
 
+TEST(Checker, ALineOfThirtyThousandSpacesIsJustWhiteSpace) {
+    // Issue 11: std::regex in the include expander overflowed the stack on
+    // such a line, and `raylab grade` (which runs this checker) scored the
+    // otherwise correct exercise 0.
+    fs::path file = test::freshTempDir("spaces") / "05-ggx.glsl";
+    test::writeText(file, test::readText(solutionsDir() / "05-ggx.glsl") + std::string(30000, ' ') + "\n" +
+                              std::string(30000, '\t') + "\n");
+    auto r = test::runRaylab("check --exercise 5 --file " + file.string() + " --output " +
+                             test::freshTempDir("spaces_out").string());
+    EXPECT_EQ(r.status, 0) << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find("05-ggx            PASS"), std::string::npos) << r.output.substr(0, 2000);
+}
+
 TEST(Checker, AShaderThatNeverEndsCostsItsExerciseOnly) {
     fs::path dir = copyOf(solutionsDir(), "endless");
     std::string text = test::readText(dir / "10-display.glsl");

@@ -230,6 +230,14 @@ TEST_F(AssemblerTest, OnlyRegularFilesAreReadAndTheByteOrderMarkIsDropped) {
         EXPECT_TRUE(contains(e.what(), "fifo.glsl: is not a regular file")) << e.what();
     }
     EXPECT_THROW(readSourceFile("/dev/zero"), Error);  // never read to the end
+    write("lib/main.frag", "#include \"fifo.glsl\"\n");
+    try {
+        assembler().assemble("", root / "lib/main.frag");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_TRUE(contains(e.what(), "main.frag:1: #include \"fifo.glsl\": ")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "fifo.glsl: is not a regular file")) << e.what();
+    }
     write("lib/nul.glsl", std::string("float a;\n\0x", 11));
     try {
         readSourceFile(root / "lib/nul.glsl");
