@@ -3,6 +3,7 @@
 #include "shader/glsl_scan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <string>
 
