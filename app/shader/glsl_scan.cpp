@@ -242,6 +242,16 @@ GlslScan scanGlsl(std::string_view text) {
                 ++i;
         } else {
             ++i;
+            if (static_cast<unsigned char>(c) >= 0x80) {  // a UTF-8 sequence: one token
+                while (i < n && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
+                if (!scan.nonAsciiLine) {
+                    scan.nonAsciiLine = line;
+                    unsigned char lead = static_cast<unsigned char>(c);
+                    unsigned cp = lead >= 0xF0 ? lead & 0x07u : lead >= 0xE0 ? lead & 0x0Fu : lead & 0x1Fu;
+                    for (std::size_t k = start + 1; k < i; ++k) cp = (cp << 6) | (static_cast<unsigned char>(text[k]) & 0x3Fu);
+                    scan.nonAsciiCodePoint = cp;
+                }
+            }
         }
         token.text = text.substr(start, i - start);
         scan.lastCodeLine = line;

@@ -39,6 +39,10 @@ struct GlslScan {
     int unclosedParenLine = 0;  // line of the outermost '(' still open at the end; 0 when none
     int openStatementLine = 0;  // line where an unterminated top-level declaration starts; 0 when none
     int lastCodeLine = 0;       // last line with a token
+    // The first character outside the ASCII set outside comments (GLSL source
+    // is ASCII there; a minus sign or quote pasted from a PDF is not):
+    int nonAsciiLine = 0;       // its line; 0 when none
+    unsigned nonAsciiCodePoint = 0;
 };
 
 GlslScan scanGlsl(std::string_view text);

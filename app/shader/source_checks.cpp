@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -101,6 +102,17 @@ std::vector<ShaderDiagnostic> checkExerciseSources(const AssembledSource& source
         if (structurallyOpen(scans[i])) skip[std::size_t(f.owner)] = true;
     }
     auto skipped = [&](std::size_t i) { return !source.sources[i].exercise || skip[std::size_t(source.sources[i].owner)]; };
+
+    // Outside comments GLSL is ASCII; drivers differ on the rest (Mesa
+    // silently dropped the code after a U+FEFF in the middle of a file).
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!source.sources[i].exercise || !scans[i].nonAsciiLine) continue;
+        char code[16];
+        std::snprintf(code, sizeof code, "U+%04X", scans[i].nonAsciiCodePoint);
+        errors.push_back(at(source.sources[i], scans[i].nonAsciiLine,
+                            std::string("character ") + code +
+                                " outside a comment: GLSL code is ASCII (was it pasted from a document?)"));
+    }
 
     // main() belongs to the framework.
     for (std::size_t i = 0; i < count; ++i) {

@@ -136,6 +136,14 @@ TEST(ShaderErrors, MissingOrMisdeclaredFunctionsAreNamedBeforeCompiling) {
 TEST(ShaderErrors, AByteOrderMarkIsDroppedAndLineDirectivesAreRefused) {
     auto r = renderWith("bom", "05-ggx.glsl", "\xEF\xBB\xBF" + solution("05-ggx.glsl"));
     EXPECT_EQ(r.status, 0) << r.output;
+    // Not at the start: a character outside ASCII (Mesa dropped the code after it).
+    r = renderWith("bom_inside", "01-camera.glsl", solution("01-camera.glsl") + "\n\xEF\xBB\xBF\n");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.output, "01-camera.glsl:" + std::to_string(lineCount(solution("01-camera.glsl")) + 2) +
+                                       ": error: character U+FEFF outside a comment: GLSL code is ASCII"))
+        << r.output;
+    r = renderWith("minus", "05-ggx.glsl", "// \xE2\x88\x92 in a comment is fine\n" + solution("05-ggx.glsl"));
+    EXPECT_EQ(r.status, 0) << r.output;
     r = renderWith("line", "05-ggx.glsl", "#line 1000\n" + solution("05-ggx.glsl"));
     EXPECT_EQ(r.status, 1);
     EXPECT_TRUE(contains(r.output, "05-ggx.glsl:1: error: #line is not allowed in exercise files")) << r.output;
