@@ -469,6 +469,52 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
     return report;
 }
 
+std::optional<ExerciseReport> checkTogether(const CheckOptions& options) {
+    Implementation impl{options.implDir, {}};
+    for (const auto& [number, file] : options.fileOverride)
+        impl.overrides[findExercise(std::to_string(number)).file()] = file;
+    std::error_code ec;
+    for (const ExerciseInfo& e : allExercises())
+        if (!fs::is_regular_file(impl.fileFor(e.file()), ec)) return std::nullopt;
+    ExerciseReport report;
+    report.id = "all files";
+    auto work = [&]() {
+        json j = {{"error", ""}};
+        try {
+            auto context = createHeadlessContext(parseBackend(options.backend));
+            buildRayTracer(impl);
+        } catch (const Error& e) {  // ShaderError, a refused file or include
+            j["error"] = e.what();
+        }
+        return j.dump();
+    };
+    auto verdict = [&](const std::string& error) {
+        report.status = error.empty() ? CheckStatus::Pass : CheckStatus::CompileError;
+        report.message = error.substr(0, error.find('\n'));
+        report.details = error;
+        if (!error.empty())
+            report.hint = "raylab render compiles the ten files into one shader, as this step does";
+    };
+    if (!options.isolate) {
+        verdict(json::parse(work()).value("error", ""));
+        return report;
+    }
+    IsolationLimits limits;
+    limits.timeoutSeconds = options.timeoutSeconds;
+    IsolatedResult result = runIsolated(work, limits);
+    report.seconds = result.seconds;
+    if (result.outcome == IsolatedResult::Outcome::Finished) {
+        try {
+            verdict(json::parse(result.output).value("error", ""));
+            return report;
+        } catch (const json::exception&) {
+        }
+    }
+    report.status = result.outcome == IsolatedResult::Outcome::TimedOut ? CheckStatus::TimedOut : CheckStatus::Crashed;
+    report.message = "compiling the ten files together " + (result.reason.empty() ? "failed" : result.reason);
+    return report;
+}
+
 std::string formatReport(const ExerciseReport& r, bool verbose) {
     char head[64];
     std::snprintf(head, sizeof head, "%-17s %-13s ", r.id.c_str(), statusName(r.status).c_str());

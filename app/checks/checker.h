@@ -18,6 +18,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,14 @@ struct ProbeOutcome {
     std::string hint;
 };
 ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<float, 4>>& raw);
+
+// The last step of `raylab check`: every exercise file of the folder (with
+// options.fileOverride) compiled together into the ray tracer, as `raylab
+// render` compiles them, in a child process like the exercises. Two files
+// that each pass alone can still clash (both define a helper `pow5`).
+// Status Pass or CompileError (TimedOut, Crashed); id "all files". nullopt,
+// without compiling, when a file of the ten is missing (each is NOT STARTED).
+std::optional<ExerciseReport> checkTogether(const CheckOptions& options);
 
 // The one-line verdict printed by `raylab check` for a report, plus its hint
 // and details on the following lines (indented).

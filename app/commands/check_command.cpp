@@ -1,7 +1,9 @@
 // raylab check [--impl DIR] [--exercise N]... [--json FILE] [--output DIR] [--timeout S] [--verbose]
 // One line per exercise: PASS, FAIL, NOT STARTED, COMPILE ERROR, TIMEOUT or
-// CRASH, with the first failure and a hint. Exit 0 only when every selected
-// exercise passes.
+// CRASH, with the first failure and a hint; then, when the ten files of the
+// folder do not compile together as `render` compiles them, one "all files"
+// line with the error. Exit 0 only when every selected exercise passes and
+// the files compile together.
 #include "commands/commands.h"
 
 #include "checks/checker.h"
@@ -10,7 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -58,14 +62,31 @@ int runCheck(const CheckCommandOptions& o) {
         if (report.status == CheckStatus::Pass) ++passed;
         all.push_back(toJson(report));
     }
+    // Then the ten files together, as render compiles them: when some
+    // exercise got as far as PASS or FAIL and none failed to build (its error
+    // would only repeat); not for --file, which checks one file, not a folder.
+    auto statusIs = [&](CheckStatus s) {
+        return std::any_of(all.begin(), all.end(),
+                           [&](const nlohmann::json& j) { return j.value("status", "") == statusName(s); });
+    };
+    bool started = statusIs(CheckStatus::Pass) || statusIs(CheckStatus::Fail);
+    bool builds = !statusIs(CheckStatus::CompileError) && !statusIs(CheckStatus::TimedOut) &&
+                  !statusIs(CheckStatus::Crashed);
+    std::optional<ExerciseReport> together;
+    if (o.file.empty() && started && builds) together = checkTogether(options);
+    bool togetherOk = !together || together->status == CheckStatus::Pass;
+    if (!togetherOk) std::cout << formatReport(*together, o.verbose) << std::flush;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << passed << " of " << selected.size() << " exercises pass (" << int(seconds + 0.5) << " s)\n";
+    std::cout << passed << " of " << selected.size() << " exercises pass"
+              << (togetherOk ? "" : "; the files do not compile together") << " (" << int(seconds + 0.5) << " s)\n";
     if (!o.json.empty()) {
         std::ofstream out(o.json);
         if (!out) throw Error(o.json + ": cannot write the JSON report");
-        out << nlohmann::json{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}}.dump(2) << "\n";
+        nlohmann::json report{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}};
+        if (together) report["together"] = toJson(*together);
+        out << report.dump(2) << "\n";
     }
-    return passed == int(selected.size()) ? 0 : 1;
+    return passed == int(selected.size()) && togetherOk ? 0 : 1;
 }
 
 }  // namespace

@@ -1,23 +1,61 @@
 #include "shader/program.h"
 
 #include "shader/driver_log.h"
+#include "shader/source_checks.h"
 
 #include <utility>
 
 namespace rl {
 
+namespace {
+// How much of a driver message and of a source line a message shows: enough
+// for any real message or line of code, while a 200,000-character
+// identifier cannot flood the terminal.
+constexpr std::size_t kMaxShownMessage = 400;
+constexpr std::size_t kMaxShownSourceLine = 160;
+// Errors printed for one failed build; the count of the rest follows. The
+// first error is nearly always the cause: 200 undeclared identifiers printed
+// 57 KB before this cap.
+constexpr std::size_t kMaxShownErrors = 10;
+
+std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n') c = ' ';
+    return text;
+}
+}  // namespace
+
 std::string ShaderDiagnostic::format() const {
-    std::string out = where.file.empty() ? std::string("<shader>") : where.file + ":" + std::to_string(where.line);
-    out += ": " + severity + ": " + message;
-    if (!sourceLine.empty()) out += "\n    " + sourceLine;
+    std::string out;
+    if (where.file.empty()) out = "<shader>: " + severity + ": ";
+    else if (where.line <= 0) out = where.file + ": ";  // about the whole file: "D_GGX is missing (...)"
+    else out = where.file + ":" + std::to_string(where.line) + ": " + severity + ": ";
+    out += printable(oneLine(message), kMaxShownMessage);
+    if (!sourceLine.empty()) out += "\n    " + printable(sourceLine, kMaxShownSourceLine);
     return out;
 }
 
 namespace {
 std::string joinDiagnostics(const std::string& stage, const std::vector<ShaderDiagnostic>& list) {
     std::string out;
-    for (const auto& d : list)
-        if (d.severity == "error") out += (out.empty() ? "" : "\n") + d.format();
+    std::size_t shown = 0, more = 0;
+    const ShaderDiagnostic* previous = nullptr;
+    for (const auto& d : list) {
+        if (d.severity != "error") continue;
+        if (previous && previous->where.file == d.where.file && previous->where.line == d.where.line &&
+            previous->message == d.message)
+            continue;  // the same error twice (drivers repeat them per use)
+        previous = &d;
+        if (shown == kMaxShownErrors) {
+            ++more;
+            continue;
+        }
+        out += (out.empty() ? "" : "\n") + d.format();
+        ++shown;
+    }
+    if (more)
+        out += "\n... and " + std::to_string(more) + " more error" + (more == 1 ? "" : "s") +
+               " (fix the first one: the others often follow from it)";
     return out.empty() ? stage + " failed with no message from the driver" : out;
 }
 }  // namespace
@@ -39,6 +77,7 @@ std::vector<ShaderDiagnostic> mapDriverLog(const std::string& log, const Assembl
         }
         out.push_back(std::move(d));
     }
+    explainDriverDiagnostics(out, source);
     return out;
 }
 
@@ -67,6 +106,13 @@ GLuint compile(GLenum stage, const AssembledSource& source, std::vector<ShaderDi
 }  // namespace
 
 ShaderProgram::ShaderProgram(const AssembledSource& vertex, const AssembledSource& fragment) {
+    // What the host can tell before the driver: the exercises' contract,
+    // names defined in two exercise files (shader/source_checks.h).
+    for (const AssembledSource* source : {&vertex, &fragment}) {
+        auto errors = checkExerciseSources(*source);
+        if (!errors.empty())
+            throw ShaderError(source == &vertex ? "vertex shader" : "fragment shader", std::move(errors));
+    }
     GLuint vs = compile(GL_VERTEX_SHADER, vertex, warnings_);
     GLuint fs = 0;
     try {

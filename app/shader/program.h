@@ -1,5 +1,7 @@
-// A linked GLSL program built from assembled sources. Compile and link
-// errors become rl::ShaderError whose message is, per driver message,
+// A linked GLSL program built from assembled sources. The host's checks of
+// the exercise files (shader/source_checks.h) and the driver's compile and
+// link errors become rl::ShaderError whose message is, per error (at most
+// 10, then a count of the rest),
 //     path/to/file.glsl:LINE: error: message
 //         the source line
 // in the files the author wrote, whatever the driver's log format.
@@ -32,7 +34,8 @@ private:
     std::vector<ShaderDiagnostic> diagnostics_;
 };
 
-// Maps a driver's info log for `source` back to the author's files.
+// Maps a driver's info log for `source` back to the author's files, and
+// moves errors the driver placed after the mistake into the exercise file.
 std::vector<ShaderDiagnostic> mapDriverLog(const std::string& log, const AssembledSource& source);
 
 class ShaderProgram {

@@ -34,7 +34,8 @@ std::string shaderPrelude(const ShaderDefines& defines) {
 }
 
 AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines) {
-    SourceAssembler assembler(makeIncludeResolver(impl));
+    // Every file outside shaders/ is an exercise file: its errors are the author's.
+    SourceAssembler assembler(makeIncludeResolver(impl), [](const fs::path& file) { return isInside(file, shadersDir()); });
     return assembler.assemble(shaderPrelude(defines), shadersDir() / entry);
 }
 

@@ -4,9 +4,15 @@
 #include "core/paths.h"
 
 #include <algorithm>
-#include <fstream>
-#include <regex>
-#include <sstream>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string_view>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -14,16 +20,57 @@ namespace rl {
 
 std::optional<SourceLocation> AssembledSource::locate(int combinedLine) const {
     if (combinedLine < 1 || combinedLine > int(lines.size())) return std::nullopt;
-    return lines[combinedLine - 1];
+    return lines[std::size_t(combinedLine) - 1];
 }
 
 std::string AssembledSource::lineText(int combinedLine) const {
-    if (combinedLine < 1) return {};
-    std::istringstream in(text);
-    std::string line;
-    for (int k = 1; std::getline(in, line); ++k)
-        if (k == combinedLine) return line;
-    return {};
+    if (combinedLine < 1 || combinedLine > int(lineStarts.size())) return {};
+    std::size_t start = lineStarts[std::size_t(combinedLine) - 1];
+    std::size_t end = text.find('\n', start);
+    return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+const SourceFile* AssembledSource::source(const std::string& shown) const {
+    for (const SourceFile& f : sources)
+        if (f.shown == shown) return &f;
+    return nullptr;
+}
+
+void AssembledSource::append(const std::string& line, SourceLocation where) {
+    lineStarts.push_back(text.size());
+    text += line;
+    text += '\n';
+    lines.push_back(std::move(where));
+}
+
+std::string printable(const std::string& text, std::size_t limit) {
+    std::string out;
+    bool cut = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (out.size() >= limit) {
+            cut = true;
+            break;
+        }
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += ' ';
+        } else if (c < 0x20 || c == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", c);
+            out += hex;
+        } else {
+            out += char(c);
+        }
+    }
+    if (cut) {
+        // cut on a UTF-8 character boundary
+        while (!out.empty() && (static_cast<unsigned char>(out.back()) & 0xC0) == 0x80) out.pop_back();
+        if (!out.empty() && static_cast<unsigned char>(out.back()) >= 0xC0) out.pop_back();
+        out += "...";
+    }
+    return out;
 }
 
 std::string displayPath(const fs::path& path) {
@@ -64,82 +111,235 @@ bool isValidUtf8(const std::string& s, std::size_t& badOffset) {
 
 std::string readSourceFile(const fs::path& path) {
     const std::string shown = displayPath(path);
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw Error(shown + ": file not found");
-    if (fs::is_directory(path, ec)) throw Error(shown + ": is a directory, expected a GLSL file");
-    auto size = fs::file_size(path, ec);
-    if (!ec && size > kMaxShaderFileBytes)
-        throw Error(shown + ": file is " + std::to_string(size / 1024) + " KiB, over the " +
-                    std::to_string(kMaxShaderFileBytes / 1024) + " KiB limit for a shader file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(shown + ": cannot be read");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    std::string text = buffer.str();
+    // Opened without blocking (a FIFO would wait for a writer), then checked
+    // on the open descriptor: only a regular file is read, and never more
+    // than the limit (a device like /dev/zero has no end).
+    int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        int err = errno;
+        if (err == ENOENT || err == ENOTDIR) throw Error(shown + ": file not found");
+        throw Error(shown + ": cannot be read: " + std::strerror(err));
+    }
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat info {};
+    if (::fstat(fd, &info) != 0) throw Error(shown + ": cannot be read: " + std::strerror(errno));
+    if (S_ISDIR(info.st_mode)) throw Error(shown + ": is a directory, expected a GLSL file");
+    if (!S_ISREG(info.st_mode)) throw Error(shown + ": is not a regular file, expected a GLSL file");
+    std::string text;
+    text.resize(kMaxShaderFileBytes + 1);
+    std::size_t got = 0;
+    while (got < text.size()) {
+        ssize_t r = ::read(fd, text.data() + got, text.size() - got);
+        if (r < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+        if (r < 0) throw Error(shown + ": cannot be read: " + std::strerror(errno));
+        if (r == 0) break;
+        got += std::size_t(r);
+    }
+    if (got > kMaxShaderFileBytes)
+        throw Error(shown + ": file is over the " + std::to_string(kMaxShaderFileBytes / 1024) +
+                    " KiB limit for a shader file");
+    text.resize(got);
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // a byte-order mark: editors on Windows write one
     std::size_t bad = 0;
     if (!isValidUtf8(text, bad)) {
-        int line = 1 + int(std::count(text.begin(), text.begin() + bad, '\n'));
+        int line = 1 + int(std::count(text.begin(), text.begin() + long(bad), '\n'));
         throw Error(shown + ":" + std::to_string(line) + ": file is not UTF-8 text (byte " + std::to_string(bad) +
                     ")");
     }
-    if (text.find('\0') != std::string::npos) throw Error(shown + ": file contains NUL bytes, not GLSL text");
+    if (auto nul = text.find('\0'); nul != std::string::npos) {
+        int line = 1 + int(std::count(text.begin(), text.begin() + long(nul), '\n'));
+        throw Error(shown + ":" + std::to_string(line) + ": file contains a NUL byte, not GLSL text");
+    }
     return text;
 }
 
-AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::path& root) const {
-    AssembledSource out;
-    std::istringstream in(prelude);
-    std::string line;
-    for (int k = 1; std::getline(in, line); ++k) {
-        out.text += line + "\n";
-        out.lines.push_back({"<prelude>", k});
+namespace {
+
+// A preprocessor directive: '#' first on the line (after white space), then
+// its name. Returns false for any other line.
+bool directive(std::string_view line, std::string_view& name, std::string_view& rest) {
+    std::size_t k = line.find_first_not_of(" \t");
+    if (k == std::string_view::npos || line[k] != '#') return false;
+    k = line.find_first_not_of(" \t", k + 1);
+    if (k == std::string_view::npos) {
+        name = rest = {};
+        return true;
     }
-    std::vector<std::string> seen;
-    appendFile(root, out, seen);
-    return out;
+    std::size_t e = k;
+    while (e < line.size() && (std::isalnum(static_cast<unsigned char>(line[e])) || line[e] == '_')) ++e;
+    name = line.substr(k, e - k);
+    rest = line.substr(e);
+    return true;
 }
 
-void SourceAssembler::appendFile(const fs::path& file, AssembledSource& out,
-                                 std::vector<std::string>& seen) const {
-    std::error_code ec;
-    const std::string key = fs::weakly_canonical(file, ec).string();
-    if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;  // included once
-    seen.push_back(key);
-    out.files.push_back(file);
+// `"name"` or `<name>`, then nothing but white space or a // comment.
+// Returns false when the directive does not have that shape.
+bool includeName(std::string_view rest, std::string& name) {
+    std::size_t k = rest.find_first_not_of(" \t");
+    if (k == std::string_view::npos || (rest[k] != '"' && rest[k] != '<')) return false;
+    char close = rest[k] == '"' ? '"' : '>';
+    std::size_t e = rest.find(close, k + 1);
+    if (e == std::string_view::npos) return false;
+    name = std::string(rest.substr(k + 1, e - k - 1));
+    std::size_t after = rest.find_first_not_of(" \t", e + 1);
+    return after == std::string_view::npos || rest.substr(after, 2) == "//";
+}
 
-    const std::string shown = displayPath(file);
-    const std::string text = readSourceFile(file);
-    // #include "name" alone on its line; other directives pass through.
-    static const std::regex includeLine(R"(^\s*#\s*include\s*(["<])([^">]*)[">]\s*(//.*)?$)");
-    std::istringstream in(text);
-    std::string line;
-    for (int k = 1; std::getline(in, line); ++k) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        std::smatch m;
-        if (std::regex_match(line, m, includeLine)) {
-            const std::string where = shown + ":" + std::to_string(k) + ": ";
-            fs::path target;
-            try {
-                target = resolver_(m[2].str(), file);
-            } catch (const Error& e) {
-                throw Error(where + "#include \"" + m[2].str() + "\": " + e.what());
+// Moves the block-comment state over one line; `opened` gets the line of a
+// comment that starts here.
+void followComments(std::string_view line, bool& inComment, int lineNumber, int& opened) {
+    std::size_t k = 0;
+    while (k < line.size()) {
+        if (inComment) {
+            std::size_t e = line.find("*/", k);
+            if (e == std::string_view::npos) return;
+            inComment = false;
+            k = e + 2;
+        } else {
+            std::size_t slash = line.find('/', k);
+            if (slash == std::string_view::npos || slash + 1 >= line.size()) return;
+            if (line[slash + 1] == '/') return;
+            if (line[slash + 1] == '*') {
+                inComment = true;
+                opened = lineNumber;
+                k = slash + 2;
+            } else {
+                k = slash + 1;
             }
-            std::error_code missing;
-            if (!fs::is_regular_file(target, missing))
-                throw Error(where + "#include \"" + m[2].str() + "\": " + displayPath(target) + ": file not found");
-            // Keep a blank line in place of the directive so line k stays line k.
-            out.text += "\n";
-            out.lines.push_back({shown, k});
-            appendFile(target, out, seen);
+        }
+    }
+}
+
+struct Frame {
+    int source = 0;          // index in AssembledSource::sources
+    std::size_t pos = 0;     // next byte to read
+    int line = 0;            // lines read so far
+    bool inComment = false;  // inside /* */ at the end of the last line
+    int commentLine = 0;     // where that comment opened
+    std::vector<int> conditionals;  // lines of the #if, #ifdef, #ifndef still open
+};
+
+}  // namespace
+
+AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::path& root) const {
+    AssembledSource out;
+    {
+        std::size_t pos = 0;
+        for (int k = 1; pos < prelude.size(); ++k) {
+            std::size_t end = prelude.find('\n', pos);
+            if (end == std::string::npos) end = prelude.size();
+            out.append(prelude.substr(pos, end - pos), {"<prelude>", k});
+            pos = end + 1;
+        }
+    }
+    std::vector<std::string> seen;
+    std::vector<Frame> stack;
+    // Reads `file` and starts it, unless it was included before.
+    auto start = [&](const fs::path& file, const std::string& includedAs, int includer) {
+        std::error_code ec;
+        const std::string key = fs::weakly_canonical(file, ec).string();
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;  // included once
+        seen.push_back(key);
+        out.files.push_back(file);
+        SourceFile source;
+        source.path = file;
+        source.shown = displayPath(file);
+        source.text = readSourceFile(file);
+        source.includedAs = includedAs;
+        source.exercise = isFramework_ && !isFramework_(file);
+        if (source.exercise) {
+            bool fromFramework = includer < 0 || !out.sources[std::size_t(includer)].exercise;
+            source.owner = fromFramework ? int(out.sources.size()) : out.sources[std::size_t(includer)].owner;
+        }
+        out.sources.push_back(std::move(source));
+        Frame frame;
+        frame.source = int(out.sources.size()) - 1;
+        stack.push_back(std::move(frame));
+    };
+    start(root, "", -1);
+    int endMarkers = 0;
+    while (!stack.empty()) {
+        Frame& f = stack.back();
+        const SourceFile& src = out.sources[std::size_t(f.source)];
+        const std::string& shown = src.shown;
+        if (f.pos >= src.text.size()) {
+            if (src.exercise) {
+                if (f.inComment)
+                    throw Error(shown + ":" + std::to_string(f.commentLine) +
+                                ": error: this comment is not closed by the end of the file (a '*/' is missing)");
+                if (!f.conditionals.empty())
+                    throw Error(shown + ":" + std::to_string(f.conditionals.back()) +
+                                ": error: this #if has no #endif before the end of the file");
+                if (src.owner == f.source) {
+                    // Close the file's scope: harmless after a complete file, a syntax
+                    // error inside a body, a declaration or parentheses left open.
+                    out.append("void rl_endOfFile" + std::to_string(++endMarkers) + "() {}",
+                               {shown, std::max(f.line, 1), true});
+                }
+            }
+            stack.pop_back();
             continue;
         }
-        static const std::regex versionLine(R"(^\s*#\s*version\b)");
-        if (std::regex_search(line, versionLine))
-            throw Error(shown + ":" + std::to_string(k) +
-                        ": #version is set by raylab (330 core); remove this line");
-        out.text += line + "\n";
-        out.lines.push_back({shown, k});
+        std::size_t end = src.text.find('\n', f.pos);
+        if (end == std::string::npos) end = src.text.size();
+        std::string line = src.text.substr(f.pos, end - f.pos);
+        f.pos = end + 1;
+        const int k = ++f.line;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        const bool startsInComment = f.inComment;
+        followComments(line, f.inComment, k, f.commentLine);
+        std::string_view name, rest;
+        if (startsInComment || !directive(line, name, rest)) {
+            out.append(line, {shown, k});
+            continue;
+        }
+        const std::string where = shown + ":" + std::to_string(k) + ": ";
+        if (name == "include") {
+            std::string included;
+            if (!includeName(rest, included))
+                throw Error(where + "#include needs one file name in quotes: #include \"file.glsl\"");
+            if (included.size() > kMaxIncludeName)
+                throw Error(where + "#include name is " + std::to_string(included.size()) +
+                            " characters long, over the limit of " + std::to_string(kMaxIncludeName));
+            const std::string quoted = "#include \"" + printable(included) + "\"";
+            if (stack.size() >= std::size_t(kMaxIncludeDepth))
+                throw Error(where + quoted + ": includes nested more than " + std::to_string(kMaxIncludeDepth) +
+                            " deep");
+            fs::path target;
+            try {
+                target = resolver_(included, src.path);
+            } catch (const Error& e) {
+                throw Error(where + quoted + ": " + e.what());
+            }
+            std::error_code ec;
+            const fs::file_status status = fs::status(target, ec);
+            if (!fs::exists(status)) throw Error(where + quoted + ": " + displayPath(target) + ": file not found");
+            if (!fs::is_regular_file(status))  // a FIFO would block, a device never end
+                throw Error(where + quoted + ": " + displayPath(target) + ": is not a regular file");
+            // Keep a blank line in place of the directive so line k stays line k.
+            out.append("", {shown, k});
+            const int includer = f.source;  // `f` and `src` are not valid after start()
+            start(target, included, includer);
+            continue;
+        }
+        if (name == "version") throw Error(where + "#version is set by raylab (330 core); remove this line");
+        if (src.exercise) {
+            if (name == "line")
+                throw Error(where + "error: #line is not allowed in exercise files: raylab maps every error to "
+                                    "your file and line itself; remove this line");
+            if (name == "if" || name == "ifdef" || name == "ifndef") f.conditionals.push_back(k);
+            if (name == "endif") {
+                if (f.conditionals.empty())
+                    throw Error(where + "error: #endif without an #if in this file");
+                f.conditionals.pop_back();
+            }
+        }
+        out.append(line, {shown, k});
     }
+    return out;
 }
 
 }  // namespace rl

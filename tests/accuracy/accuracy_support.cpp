@@ -252,8 +252,7 @@ const ShaderProgram& brdfProbeProgram(const ShadingModel& model, const Implement
     std::istringstream in(readSourceFile(probeFile));
     std::string line;
     for (int k = 1; std::getline(in, line); ++k) {
-        fragment.text += line + "\n";
-        fragment.lines.push_back({displayPath(probeFile), k});
+        fragment.append(line, {displayPath(probeFile), k});
     }
     fragment.files.push_back(probeFile);
     AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});

@@ -144,6 +144,53 @@ TEST(Checker, CompileErrorNamesTheStudentFileAndTheOthersAreStillChecked) {
     EXPECT_EQ(countOf(r.output, " PASS "), 9) << r.output;
 }
 
+TEST(Checker, FilesThatPassAloneButClashTogetherFailTheCheck) {
+    // Issue 9: `pow5` in 07 and in 09 passes each exercise alone (the others
+    // come from solutions/) and breaks `raylab render`, which compiles the ten
+    // files together. The check compiles them together too, and says so once.
+    fs::path dir = copyOf(solutionsDir(), "together");
+    std::string pow5 = "float pow5(float x) {\n    return x * x * x * x * x;\n}\n";
+    std::string fresnel = test::readText(dir / "07-fresnel.glsl");
+    std::string reflections = test::readText(dir / "09-reflections.glsl");
+    test::writeText(dir / "07-fresnel.glsl", fresnel + pow5);
+    test::writeText(dir / "09-reflections.glsl", reflections + pow5);
+    auto r = test::runRaylab("check --impl " + dir.string() + " --exercise 7 --exercise 9 --output " +
+                             test::freshTempDir("together_out").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("07-fresnel        PASS"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("09-reflections    PASS"), std::string::npos) << r.output;
+    std::string line07 = std::to_string(countOf(fresnel, "\n") + 1);
+    std::string line09 = std::to_string(countOf(reflections, "\n") + 1);
+    EXPECT_NE(r.output.find("all files         COMPILE ERROR "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("09-reflections.glsl:" + line09 + ": error: pow5(float) is also defined in "),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("07-fresnel.glsl:" + line07 + ": the exercise files are compiled together"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("2 of 2 exercises pass; the files do not compile together"), std::string::npos)
+        << r.output;
+    // Renamed in one file: nothing more to say.
+    test::writeText(dir / "09-reflections.glsl", reflections + "float pow5s(float x) {\n    return x * x * x * x * x;\n}\n");
+    r = test::runRaylab("check --impl " + dir.string() + " --exercise 7 --exercise 9 --output " +
+                        test::freshTempDir("together_out2").string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("all files"), std::string::npos) << r.output;
+}
+
+TEST(Checker, ALineOfThirtyThousandSpacesIsJustWhiteSpace) {
+    // Issue 11: std::regex in the include expander overflowed the stack on
+    // such a line, and `raylab grade` (which runs this checker) scored the
+    // otherwise correct exercise 0.
+    fs::path file = test::freshTempDir("spaces") / "05-ggx.glsl";
+    test::writeText(file, test::readText(solutionsDir() / "05-ggx.glsl") + std::string(30000, ' ') + "\n" +
+                              std::string(30000, '\t') + "\n");
+    auto r = test::runRaylab("check --exercise 5 --file " + file.string() + " --output " +
+                             test::freshTempDir("spaces_out").string());
+    EXPECT_EQ(r.status, 0) << r.output.substr(0, 2000);
+    EXPECT_NE(r.output.find("05-ggx            PASS"), std::string::npos) << r.output.substr(0, 2000);
+}
+
 TEST(Checker, AShaderThatNeverEndsCostsItsExerciseOnly) {
     fs::path dir = copyOf(solutionsDir(), "endless");
     std::string text = test::readText(dir / "10-display.glsl");

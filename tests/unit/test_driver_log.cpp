@@ -167,3 +167,31 @@ TEST(DriverLog, SeverityIsNormalisedToLowerCase) {
     expectMessage(m[0], 7, 0, "error", "C9999: *** exception during compilation ***");
     expectMessage(m[1], 0, 0, "warning", "deprecated");
 }
+
+// ---- Hostile input (issue 11) ----------------------------------------------------
+
+TEST(DriverLog, MesaCandidatesAreOneMessage) {
+    // Mesa repeats the location for every candidate of an overloaded call,
+    // indented: one message with the first few candidates, not 26 lines.
+    std::string log = "0:9(14): error: no matching function for call to `dot(float, vec3)'; candidates are:\n";
+    for (const char* c : {"float dot(float, float)", "float dot(vec2, vec2)", "float dot(vec3, vec3)",
+                          "float dot(vec4, vec4)", "double dot(double, double)", "double dot(dvec2, dvec2)"})
+        log += std::string("0:9(14): error:    ") + c + "\n";
+    log += "0:9(14): error: type mismatch\n";
+    auto m = parseDriverLog(log);
+    ASSERT_EQ(m.size(), 2u);
+    expectMessage(m[0], 9, 14, "error",
+                  "no matching function for call to `dot(float, vec3)'; candidates are: float dot(float, float); "
+                  "float dot(vec2, vec2); float dot(vec3, vec3); float dot(vec4, vec4); and 2 more");
+    expectMessage(m[1], 9, 14, "error", "type mismatch");
+}
+
+TEST(DriverLog, HugeLinesAreReadWithoutRecursion) {
+    // A student's 200,000-character identifier comes back quoted in the log;
+    // std::regex recursed once per character on such a line and crashed.
+    std::string name(200000, 'a');
+    auto m = parseDriverLog("0:3(5): error: `" + name + "' undeclared\n" + std::string(300000, ' ') + "x\n");
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(m[0].line, 3);
+    EXPECT_LE(m[0].text.size(), 5000u);  // cut: a message quotes, it does not copy
+}
