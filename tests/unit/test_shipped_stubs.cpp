@@ -78,10 +78,11 @@ TEST(ShippedStubs, NormalFormDropsSpaceAndBomOnly) {
 TEST(ShippedStubs, TheLiveExercisesFolderIsNeverConsulted) {
     fs::path root = test::freshTempDir("stub_live");
     fs::create_directories(root / "exercises");
+    const fs::path solutions = solutionsDir();
     RootOverride override(root);
     for (const ExerciseInfo& e : allExercises()) {
         fs::path edited = root / "exercises" / e.file();
-        fs::copy_file(solutionsDir() / e.file(), edited);
+        fs::copy_file(solutions / e.file(), edited);
         ASSERT_EQ(exercisesDir() / e.file(), edited);
         EXPECT_FALSE(isUnchangedStub(edited, e)) << e.file() << ": an edited file in exercises/ is called the stub";
         // ...and the shipped stub stays the stub even where exercises/ holds something else.

@@ -33,7 +33,7 @@ using walkthrough::DocCommand;
 
 namespace {
 
-std::string quoted(const std::string& s) {
+std::string shellQuoted(const std::string& s) {
     std::string out = "'";
     for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return out + "'";
@@ -57,7 +57,7 @@ test::CommandResult shell(const std::string& command) {
 fs::path scratchClone(const std::string& name) {
     fs::path copy = test::freshTempDir(name);
     test::CommandResult files =
-        shell("git -C " + quoted(sourceRoot().string()) + " ls-files --cached --others --exclude-standard");
+        shell("git -C " + shellQuoted(sourceRoot().string()) + " ls-files --cached --others --exclude-standard");
     if (files.status != 0) throw std::runtime_error("git ls-files in " + sourceRoot().string() + ": " + files.output);
     std::istringstream in(files.output);
     for (std::string rel; std::getline(in, rel);) {
@@ -68,7 +68,7 @@ fs::path scratchClone(const std::string& name) {
         fs::copy_file(from, copy / rel, fs::copy_options::overwrite_existing);
         fs::permissions(copy / rel, fs::status(from).permissions());
     }
-    test::CommandResult init = shell("cd " + quoted(copy.string()) + " && git init -q && git add -A");
+    test::CommandResult init = shell("cd " + shellQuoted(copy.string()) + " && git init -q && git add -A");
     if (init.status != 0) throw std::runtime_error("git init in the scratch copy: " + init.output);
     return copy;
 }
@@ -101,8 +101,8 @@ struct Walk {
     int imageTriples = 0;  // check-output/NN/SCENE-{expected,got,diff}.png seen on disk
 
     test::CommandResult run(const std::string& command) {
-        return shell("cd " + quoted(root.string()) + " && env -u RAYLAB_ROOT RAYLAB_BIN=" + quoted(binary) +
-                     " timeout 300 bash -c " + quoted(command));
+        return shell("cd " + shellQuoted(root.string()) + " && env -u RAYLAB_ROOT RAYLAB_BIN=" + shellQuoted(binary) +
+                     " timeout 300 bash -c " + shellQuoted(command));
     }
 };
 
@@ -178,7 +178,7 @@ std::vector<DocCommand> docCommands(const fs::path& doc, bool checks) {
 TEST(Wrapper, SaysHowToBuildWhenNothingIsBuilt) {
     fs::path copy = test::freshTempDir("wrapper_nobuild");
     fs::copy_file(sourceRoot() / "raylab", copy / "raylab");
-    test::CommandResult r = shell("env -u RAYLAB_BIN " + quoted((copy / "raylab").string()) + " check");
+    test::CommandResult r = shell("env -u RAYLAB_BIN " + shellQuoted((copy / "raylab").string()) + " check");
     EXPECT_NE(r.status, 0);
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_NE(r.output.find("scripts/build.sh"), std::string::npos) << r.output;
@@ -195,7 +195,7 @@ TEST(Wrapper, RunsTheNewerOfTheTwoBuilds) {
     auto touch = [&](const char* build, int secondsAgo) {
         fs::last_write_time(copy / build / "bin" / "raylab", fs::file_time_type::clock::now() - std::chrono::seconds(secondsAgo));
     };
-    std::string wrapper = "env -u RAYLAB_BIN -u RAYLAB_ROOT " + quoted((copy / "raylab").string());
+    std::string wrapper = "env -u RAYLAB_BIN -u RAYLAB_ROOT " + shellQuoted((copy / "raylab").string());
     touch("build", 100), touch("build-headless", 10);
     EXPECT_EQ(shell(wrapper + " check -e 1").output, "build-headless check -e 1 " + copy.string() + "\n");
     touch("build", 5);
@@ -292,13 +292,16 @@ TEST(Walkthrough, EveryStudentDocumentAsWritten) {
     EXPECT_GT(walk.imageTriples, 0) << "no failing check left SCENE-expected/got/diff.png in check-output/";
 
     // 4. Nothing the documents made a student write shows up in `git status`.
-    test::CommandResult status = shell("cd " + quoted(walk.root.string()) + " && git status --porcelain --untracked-files=all");
+    test::CommandResult status = shell("cd " + shellQuoted(walk.root.string()) + " && git status --porcelain --untracked-files=all");
     std::string untracked;
     std::istringstream lines(status.output);
     for (std::string line; std::getline(lines, line);)
         if (line.rfind("??", 0) == 0) untracked += line + "\n";
     EXPECT_EQ(untracked, "") << "files the documents' commands wrote that git does not ignore";
 
+    std::cout << walk.checkRuns.size() << " documented check runs, " << shown.size()
+              << " blocks of checker output from the documents matched, " << walk.imageTriples
+              << " check-output picture triples\n";
     if (!HasFailure()) fs::remove_all(walk.root);
     else std::cerr << "the scratch copy is kept for a look: " << walk.root << "\n";
 }
