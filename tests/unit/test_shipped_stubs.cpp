@@ -90,3 +90,33 @@ TEST(ShippedStubs, TheLiveExercisesFolderIsNeverConsulted) {
         EXPECT_TRUE(isUnchangedStub(root / ("stub-" + e.file()), e)) << e.file();
     }
 }
+
+// cmake/shipped_stubs.cmake, run as the build runs it: a student who edited
+// exercises/ and rebuilds keeps the real stub; an edited file at the first
+// build gives no stub at all (the probes decide), never the student's work.
+TEST(ShippedStubs, ARebuildAfterEditingKeepsTheShippedStub) {
+    fs::path dir = test::freshTempDir("stub_rebuild");
+    fs::create_directories(dir / "exercises");
+    for (const ExerciseInfo& e : allExercises()) fs::copy_file(exercisesDir() / e.file(), dir / "exercises" / e.file());
+    auto generate = [&](const std::string& snapshot) {
+        std::string command = std::string(RAYLAB_CMAKE) + " -DEXERCISES_DIR=" + (dir / "exercises").string() +
+                              " -DSNAPSHOT_DIR=" + (dir / snapshot).string() + " -DOUTPUT=" + (dir / "stubs.cpp").string() +
+                              " -P " + (sourceRoot() / "cmake" / "shipped_stubs.cmake").string() + " > /dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+        return test::readText(dir / "stubs.cpp");
+    };
+    std::string first = generate("snapshot");
+    EXPECT_NE(first.find("\"05-ggx.glsl\""), std::string::npos);
+    // The student solves 05 in place and rebuilds: the same stubs as before.
+    fs::copy_file(solutionsDir() / "05-ggx.glsl", dir / "exercises" / "05-ggx.glsl", fs::copy_options::overwrite_existing);
+    EXPECT_EQ(generate("snapshot"), first);
+    EXPECT_EQ(test::readText(dir / "snapshot" / "05-ggx.glsl"), test::readText(exercisesDir() / "05-ggx.glsl"));
+    // A first build after editing: no stub for 05 rather than the solution.
+    std::string fresh = generate("fresh-snapshot");
+    EXPECT_EQ(fresh.find("\"05-ggx.glsl\""), std::string::npos);
+    EXPECT_NE(fresh.find("\"07-fresnel.glsl\""), std::string::npos);
+    // An instructor's new stub (still all NOT_STARTED) replaces the old one.
+    test::writeText(dir / "exercises" / "07-fresnel.glsl", "// new\nvec3 F_Schlick(vec3 F0, float VoH) {\n    return vec3(NOT_STARTED);\n}\n");
+    generate("snapshot");
+    EXPECT_EQ(test::readText(dir / "snapshot" / "07-fresnel.glsl"), test::readText(dir / "exercises" / "07-fresnel.glsl"));
+}

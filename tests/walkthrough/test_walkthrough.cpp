@@ -273,7 +273,16 @@ TEST(Walkthrough, EveryStudentDocumentAsWritten) {
         for (const DocCommand& c : renders) runDocumented(walk, handout, c, "exercises 01-" + e.id + " done");
     }
 
-    // 3. The checker output the documents show is what the checker prints.
+    // 3. All ten done: the README's checks again, now every exercise passes.
+    for (const DocCommand& c : docCommands(readme, true)) {
+        test::CommandResult r = runDocumented(walk, readme, c, "every exercise the solution");
+        EXPECT_EQ(r.status, 0) << where(readme, c.line) << "\n" << r.output;
+        for (const ExerciseInfo& e : allExercises())
+            if (r.output.find(e.id) != std::string::npos)
+                EXPECT_EQ(verdictOf(r.output, e.id), "PASS") << where(readme, c.line) << "\n" << r.output;
+    }
+
+    // 4. The checker output the documents show is what the checker prints.
     for (const auto& [doc, block] : shown) {
         bool found = false;
         for (const auto& [state, output] : walk.checkRuns) found = found || walkthrough::showsOutput(block.lines, output);
@@ -291,7 +300,7 @@ TEST(Walkthrough, EveryStudentDocumentAsWritten) {
     // "the lines below the hint name three pictures in check-output/NN-name/"
     EXPECT_GT(walk.imageTriples, 0) << "no failing check left SCENE-expected/got/diff.png in check-output/";
 
-    // 4. Nothing the documents made a student write shows up in `git status`.
+    // 5. Nothing the documents made a student write shows up in `git status`.
     test::CommandResult status = shell("cd " + shellQuoted(walk.root.string()) + " && git status --porcelain --untracked-files=all");
     std::string untracked;
     std::istringstream lines(status.output);
