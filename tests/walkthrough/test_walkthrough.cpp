@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -247,14 +248,15 @@ TEST(Walkthrough, EveryStudentDocumentAsWritten) {
         // The fresh stub.
         checkAll("the shipped stub", {"NOT STARTED"});
         // Wrong versions: every mutant of this exercise.
-        int mutants = 0;
-        for (const auto& m : fs::directory_iterator(walk.root / "tests" / "mutants")) {
-            if (m.path().filename().string().rfind(e.id + "--", 0) != 0) continue;
-            fs::copy_file(m.path(), file, fs::copy_options::overwrite_existing);
-            checkAll("mutant " + m.path().filename().string(), {"FAIL", "COMPILE ERROR"});
-            ++mutants;
+        std::vector<fs::path> mutants;
+        for (const auto& m : fs::directory_iterator(walk.root / "tests" / "mutants"))
+            if (m.path().filename().string().rfind(e.id + "--", 0) == 0) mutants.push_back(m.path());
+        std::sort(mutants.begin(), mutants.end());
+        EXPECT_FALSE(mutants.empty()) << "no mutant of " << e.id;
+        for (const fs::path& m : mutants) {
+            fs::copy_file(m, file, fs::copy_options::overwrite_existing);
+            checkAll("mutant " + m.filename().string(), {"FAIL", "COMPILE ERROR"});
         }
-        EXPECT_GT(mutants, 0) << "no mutant of " << e.id;
         // Half done: the solution with one function still the stub, where a document shows that.
         std::string stub = *shippedStub(e.file()), solution = test::readText(walk.root / "solutions" / e.file());
         static const std::regex notStarted("(\\w+) is not started");
