@@ -20,8 +20,18 @@ const std::vector<ExerciseInfo>& allExercises();
 // By number (1..10) or id ("05-ggx"); throws rl::Error listing the valid ones.
 const ExerciseInfo& findExercise(const std::string& numberOrId);
 
-// True when `file` is the stub shipped in exercises/ for this exercise,
-// ignoring white space (what `raylab check` reports as NOT STARTED).
+// True when `file` is the stub shipped for this exercise (what `raylab check`
+// reports as NOT STARTED): the same text once white space (CR included) and a
+// UTF-8 byte-order mark are dropped. "Shipped" is exercises/ as it was when the
+// program was built (compiled in, see cmake/shipped_stubs.cmake), never the
+// live folder, which is the student's own work.
 bool isUnchangedStub(const std::filesystem::path& file, const ExerciseInfo& exercise);
+
+// The comparison form of GLSL text: no white space, no BOM.
+std::string normalisedGlsl(const std::string& text);
+
+// The shipped stub `fileName` ("05-ggx.glsl") as compiled in, or nullptr.
+// Defined in the generated shipped_stubs.cpp.
+const std::string* shippedStub(const std::string& fileName);
 
 }  // namespace rl
