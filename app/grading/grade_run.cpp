@@ -402,7 +402,10 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
 int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& log) {
     const fs::path results = root / "results" / "results.json";
     auto fallback = [&](const std::string& why) {
-        nlohmann::json j = {{"score", 0}, {"output", "raylab could not grade this submission: " + why}};
+        nlohmann::json j = {{"score", 0},
+                            {"output", "raylab could not grade this submission: " + why},
+                            {"output_format", "text"},
+                            {"tests", nlohmann::json::array()}};
         writeFileAtomic(results, j.dump(2) + "\n");
         log << "raylab grade --gradescope: " << why << "\n";
     };
