@@ -32,9 +32,9 @@ tr.problem td.id{border-left:4px solid #d33}
 figure .row{display:flex;gap:6px} figure .img{text-align:center;font-size:11px;color:#555}
 figure img{height:108px;image-rendering:pixelated;display:block;background:#888}
 figcaption{font-size:12px;margin-top:4px}
-#grades{width:100%} #grades td.x{white-space:normal;max-width:6.5em}
-.why{display:block;font-size:11px;line-height:1.2;color:#444;max-width:6.5em;overflow:hidden;text-overflow:ellipsis;white-space:nowrap;text-align:left}
-#grades td.notes{white-space:normal;min-width:12em;font-size:12px;overflow-wrap:anywhere}
+#grades{width:100%;font-size:13px} #grades th,#grades td{padding:3px 5px} #grades td.x{white-space:normal;width:5.4em}
+.why{display:block;font-size:11px;line-height:1.15;color:#444;text-align:left;white-space:normal;overflow-wrap:anywhere;max-width:5.8em}
+#grades td.notes{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
 .filter{margin:8px 0;display:flex;gap:12px;align-items:center} .filter input[type=search]{width:22em;font:inherit;padding:3px 6px}
 details.passed{margin:16px 0} details.passed>summary{cursor:pointer;font-weight:600}
 </style>

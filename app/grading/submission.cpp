@@ -266,7 +266,7 @@ public:
             std::string why = e.what();
             if (!prefix.empty()) why = prefix.substr(0, prefix.size() - 1 - zipPath.filename().string().size()) + why;
             if (firstZipProblem.empty()) firstZipProblem = why;
-            notes.push_back("refused the zip " + why);
+            if (!prefix.empty()) notes.push_back("refused the zip " + why);  // the submission itself: its reason says it
             return why;
         }
         folder(dest, prefix, zipDepth);

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -154,6 +155,24 @@ fs::path buildClass(const fs::path& root) {
     auto bomb = zipped;
     bomb.push_back({"exercises/padding.glsl", std::string(8u << 20, ' ')});  // 8 MiB of spaces: ratio ~1000:1
     writeZip(sub / "zip-bomb.zip", bomb);
+    // Shapes real uploads take: a repository's zip (a 20 MiB library in build/,
+    // .git, a stray stub at the top), and renamed files with a byte-order mark.
+    std::vector<ZipEntry> repo;
+    for (const auto& [name, text] : solutionFiles()) repo.push_back({"raylab-main/exercises/" + name, text});
+    std::string library(20u << 20, '\0');
+    std::uint32_t x = 7;
+    for (char& c : library) c = char((x = x * 1664525u + 1013904223u) >> 24);  // incompressible, like a real one
+    repo.push_back({"raylab-main/build/libraylab_core.a", library});
+    repo.push_back({"raylab-main/.git/HEAD", "ref: refs/heads/main\n"});
+    repo.push_back({"05-ggx.glsl", stubFiles()["05-ggx.glsl"]});
+    writeZip(sub / "messy-repo.zip", repo);
+    auto renamed = solutionFiles();
+    renamed["05-ggx (1).glsl"] = renamed["05-ggx.glsl"];
+    renamed.erase("05-ggx.glsl");
+    renamed["07-fresnel.GLSL"] = renamed["07-fresnel.glsl"];
+    renamed.erase("07-fresnel.glsl");
+    renamed["03-lambert.glsl"] = "\xEF\xBB\xBF" + renamed["03-lambert.glsl"];
+    writeFolder(sub / "renamed", renamed);
     writeText(sub / "roster.txt", "not a student\n");
     return sub;
 }
@@ -176,7 +195,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
     for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
     for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
-                           "zip-symlink", "zipped"})
+                           "zip-symlink", "zipped", "messy-repo", "renamed"})
         expected.push_back(id);
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
@@ -191,6 +210,21 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     // docs/grading.md); this bound only catches a grader gone much slower
     // (serialised, waiting on something), not a busy test machine.
     EXPECT_LT(full.seconds, 30);
+
+    // Every shape of a real upload earns what its files deserve, and says which files were graded.
+    for (const char* id : {"messy-repo", "renamed"}) {
+        Student s = load(out, id);
+        EXPECT_DOUBLE_EQ(s.score, 100) << id;
+        expectOthersFull(s, id, {});
+    }
+    std::string messyNotes, renamedNotes;
+    for (const std::string& n : load(out, "messy-repo").notes) messyNotes += n + "\n";
+    for (const std::string& n : load(out, "renamed").notes) renamedNotes += n + "\n";
+    EXPECT_TRUE(contains(messyNotes, "graded the folder raylab-main/exercises/")) << messyNotes;
+    EXPECT_TRUE(contains(messyNotes, "not searched: .git/, build/")) << messyNotes;
+    EXPECT_TRUE(contains(renamedNotes, "graded 05-ggx (1).glsl as 05-ggx.glsl")) << renamedNotes;
+    EXPECT_TRUE(contains(renamedNotes, "graded 07-fresnel.GLSL as 07-fresnel.glsl")) << renamedNotes;
+    EXPECT_TRUE(contains(renamedNotes, "byte-order mark")) << renamedNotes;
 
     Student zero = load(out, "zero");
     EXPECT_DOUBLE_EQ(zero.score, 0);
@@ -570,6 +604,7 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
         it = it->first < "04" ? std::next(it) : three.erase(it);
     std::vector<ZipEntry> zipped;
     for (const auto& [name, text] : three) zipped.push_back({"raylab/exercises/" + name, text});
+    fs::create_directories(root / "submission");
     writeZip(root / "submission" / "upload.zip", zipped);  // what a student's zip upload looks like
     fs::create_directories(root / "results");
     std::string command = "cd " + root.string() + " && RAYLAB_GRADESCOPE_ROOT=" + root.string() +
