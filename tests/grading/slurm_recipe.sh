@@ -48,7 +48,8 @@ mkdir -p "$T/munge"
 chmod 700 "$T/munge"
 mungekey --create --keyfile="$T/munge/munge.key" --force
 munged --force --foreground --socket="$T/munge/munge.socket" --key-file="$T/munge/munge.key" \
-  --pid-file="$T/munge/munged.pid" --log-file="$T/munge/munged.log" --seed-file="$T/munge/munged.seed" &
+  --pid-file="$T/munge/munged.pid" --log-file="$T/munge/munged.log" --seed-file="$T/munge/munged.seed" \
+  > "$T/munge/munged.out" 2>&1 &
 pids+=($!)
 
 # The node as slurmd sees the machine: its real CPUs, sockets, cores and memory.
@@ -85,9 +86,9 @@ PartitionName=debug Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF="$T/slurm.conf"
 for _ in $(seq 50); do [ -S "$T/munge/munge.socket" ] && break; sleep 0.1; done
-slurmctld -D -i -f "$SLURM_CONF" &
+slurmctld -D -i -f "$SLURM_CONF" > "$T/slurmctld.out" 2>&1 &
 pids+=($!)
-slurmd -D -N localhost -f "$SLURM_CONF" &
+slurmd -D -N localhost -f "$SLURM_CONF" > "$T/slurmd.out" 2>&1 &
 pids+=($!)
 for _ in $(seq 100); do
   sinfo -h -o '%T' 2>/dev/null | grep -qE '^(idle|mixed|allocated)' && break
