@@ -515,8 +515,10 @@ SubmissionList listSubmissions(const fs::path& dir) {
         }
         fs::file_status st = entry.symlink_status(ec);
         LmsDownloadName lms = parseLmsDownloadName(name);
-        if (lms.kind != LmsDownloadName::Kind::None && !fs::is_symlink(st) &&
-            (fs::is_directory(st) || fs::is_regular_file(st))) {
+        // Canvas gives files only; a folder "lab_1_2_final" is a student's folder, not a download.
+        const bool lmsPart = (lms.kind == LmsDownloadName::Kind::Canvas && fs::is_regular_file(st)) ||
+                             (lms.kind == LmsDownloadName::Kind::Moodle && (fs::is_directory(st) || fs::is_regular_file(st)));
+        if (lmsPart) {
             SubmissionEntry& g = groups[lms.student];
             if (g.parts.empty()) {
                 g.kind = SubmissionEntry::Kind::Group;

@@ -331,11 +331,12 @@ TEST(LmsDownloads, CanvasFilesAndMoodleFoldersBecomeOneSubmissionEach) {
     writeFolder(dir / "Jane Doe_4201_assignsubmission_file_", {{"04-shadows.glsl", solutions["04-shadows.glsl"]}});
     writeFolder(dir / "Jane Doe_4201_assignsubmission_onlinetext_", {{"onlinetext.html", "<p>done</p>"}});
     writeText(dir / "roster.csv", "");
+    writeFolder(dir / "lab_1_2_final", {{"01-camera.glsl", solutions["01-camera.glsl"]}});  // a folder: no Canvas name
     SubmissionList list = listSubmissions(dir);
     std::vector<std::string> ids;
     for (const SubmissionEntry& e : list.students) ids.push_back(e.id);
-    EXPECT_EQ(ids, (std::vector<std::string>{"Jane Doe_4201", "doejane_1001", "smithjohn_1002"}));
-    ASSERT_EQ(list.students.size(), 3u);
+    EXPECT_EQ(ids, (std::vector<std::string>{"Jane Doe_4201", "doejane_1001", "lab_1_2_final", "smithjohn_1002"}));
+    ASSERT_EQ(list.students.size(), 4u);
     EXPECT_EQ(list.students[1].parts.size(), 3u);
     Scratch work{freshTempDir("lms_staged")};
     StagedSubmission s = stageSubmission(list.students[1], work.dir / "canvas", work.dir / "scratch");
