@@ -34,7 +34,7 @@ figure img{height:108px;image-rendering:pixelated;display:block;background:#888}
 figcaption{font-size:12px;margin-top:4px}
 #grades{width:100%;font-size:13px} #grades th,#grades td{padding:3px 5px} #grades td.x{white-space:normal;width:5.4em}
 .why{display:block;font-size:11px;line-height:1.15;color:#444;text-align:left;white-space:normal;overflow-wrap:anywhere;max-width:5.8em}
-#grades td.notes{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
+#grades td.notecol{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
 .filter{margin:8px 0;display:flex;gap:12px;align-items:center} .filter input[type=search]{width:22em;font:inherit;padding:3px 6px}
 details.passed{margin:16px 0} details.passed>summary{cursor:pointer;font-weight:600}
 </style>
@@ -236,7 +236,7 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
                 urlSegment(g.id) + "/index.html\">" + htmlEscape(g.id) + "</a></td>" + cells + "<td data-v=\"" +
                 formatPoints(s.total) + "\"><b>" + formatPoints(s.total) + "</b></td><td data-v=\"" +
                 std::to_string(problems) + "\"" + (problems ? " class=\"s-fail\"" : "") + ">" +
-                std::to_string(problems) + "</td><td class=\"l notes\">" + htmlEscape(notes) + "</td></tr>\n";
+                std::to_string(problems) + "</td><td class=\"l notecol\">" + htmlEscape(notes) + "</td></tr>\n";
     }
     html += "</tbody>\n</table>\n";
     html += kSortScript;

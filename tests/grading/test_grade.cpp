@@ -486,7 +486,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     std::string probe = index;
     probe.replace(probe.rfind("</body>"), 7,
                   "<script>var t = document.getElementById('grades').getBoundingClientRect();"
-                  "var notes = document.querySelector('#grades td.notes').getBoundingClientRect();"
+                  "var notes = document.querySelector('#grades td.notecol').getBoundingClientRect();"
                   "document.body.setAttribute('data-fit', String(t.right <= window.innerWidth && "
                   "notes.right <= window.innerWidth && document.documentElement.scrollWidth <= window.innerWidth));"
                   "var box = document.getElementById('filter'); box.value = 'ggx.glsl:3';"
