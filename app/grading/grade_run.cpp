@@ -249,6 +249,9 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
             e.refused = true;
             e.report = reportWithReason(info, CheckStatus::CompileError, staged.problemReason,
                                         "submit a plain folder or .zip holding your exercise files");
+        } else if (staged.endless.count(info.file())) {
+            e.report = reportWithReason(info, CheckStatus::TimedOut, staged.endless.at(info.file()),
+                                        "every loop needs a condition that becomes false, or a break");
         } else if (refused != staged.refused.end()) {
             e.refused = true;
             e.report = reportWithReason(info, CheckStatus::CompileError, refused->second,

@@ -12,9 +12,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 #include <fcntl.h>
@@ -159,6 +161,112 @@ const ExerciseInfo* exerciseNamed(const std::string& name, bool& exact) {
     for (const ExerciseInfo& e : allExercises())
         if (stem == e.id) return &e;
     return nullptr;
+}
+
+// The source with comments blanked out (newlines kept, so lines still count).
+std::string withoutComments(const std::string& text) {
+    std::string out = text;
+    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+        if (out[i] == '/' && out[i + 1] == '/') {
+            for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+        } else if (out[i] == '/' && out[i + 1] == '*') {
+            std::size_t end = out.find("*/", i + 2);
+            end = end == std::string::npos ? out.size() : end + 2;
+            for (; i < end; ++i)
+                if (out[i] != '\n') out[i] = ' ';
+            --i;
+        }
+    }
+    return out;
+}
+
+int lineAt(const std::string& text, std::size_t offset) {
+    return 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(offset, text.size())), '\n'));
+}
+
+// A loop that can never end: `while (true)`, `while (1)` or a `for` without
+// a condition, whose body holds no break, return or discard. On a GPU it
+// hangs (the driver resets); llvmpipe alone stops it after 65535 iterations
+// and renders something. Returns the line of the loop, or 0.
+int endlessLoopLine(const std::string& source) {
+    const std::string code = withoutComments(source);
+    static const std::regex loop(R"(\bwhile\s*\(\s*(true|1)\s*\)|\bfor\s*\([^;()]*;\s*;)");
+    static const std::regex exit(R"(\b(break|return|discard)\b)");
+    for (auto it = std::sregex_iterator(code.begin(), code.end(), loop); it != std::sregex_iterator(); ++it) {
+        std::size_t at = std::size_t(it->position()) + std::size_t(it->length());
+        if ((*it)[0].str().rfind("for", 0) == 0) {  // past the for's closing parenthesis
+            int depth = 1;
+            for (; at < code.size() && depth > 0; ++at) depth += code[at] == '(' ? 1 : code[at] == ')' ? -1 : 0;
+        }
+        while (at < code.size() && std::isspace(static_cast<unsigned char>(code[at]))) ++at;
+        if (at >= code.size()) break;
+        std::size_t end = at;
+        if (code[at] == '{') {
+            int depth = 0;
+            for (; end < code.size(); ++end) {
+                depth += code[end] == '{' ? 1 : code[end] == '}' ? -1 : 0;
+                if (depth == 0) break;
+            }
+        } else {
+            end = code.find(';', at);
+            if (end == std::string::npos) end = code.size();
+        }
+        // A `do { } while (true);` ends in the while: its body is before it, and not looked at.
+        std::size_t before = std::size_t(it->position());
+        while (before > 0 && std::isspace(static_cast<unsigned char>(code[before - 1]))) --before;
+        if (before > 0 && code[before - 1] == '}') continue;
+        std::string body = code.substr(at, end - at + 1);
+        if (!std::regex_search(body, exit)) return lineAt(code, std::size_t(it->position()));
+    }
+    return 0;
+}
+
+// The number of tokens the preprocessor would make of the file's code, with
+// every object-like macro expanded (a macro bomb doubles it per definition:
+// #define A1 A0 A0, #define A2 A1 A1, ...). Stops counting at `limit`.
+double macroExpansion(const std::string& source, std::string& biggest, int& line, double limit) {
+    const std::string code = withoutComments(source);
+    static const std::regex define(R"(^\s*#\s*define\s+([A-Za-z_]\w*)(\([^)]*\))?(.*)$)");
+    static const std::regex identifier(R"([A-Za-z_]\w*)");
+    std::map<std::string, std::pair<std::string, int>> macros;  // name -> body, line
+    std::vector<std::string> codeLines;
+    std::istringstream lines(code);
+    int number = 0;
+    for (std::string l; std::getline(lines, l);) {
+        ++number;
+        std::smatch m;
+        if (std::regex_match(l, m, define))
+            macros[m[1]] = {m[3], number};
+        else if (l.find_first_not_of(" \t") == std::string::npos || l[l.find_first_not_of(" \t")] != '#')
+            codeLines.push_back(l);
+    }
+    std::map<std::string, double> size;
+    std::set<std::string> open;  // a macro is not expanded inside itself
+    std::function<double(const std::string&)> sizeOf = [&](const std::string& name) -> double {
+        auto known = size.find(name);
+        if (known != size.end()) return known->second;
+        auto macro = macros.find(name);
+        if (macro == macros.end() || open.count(name)) return 1;
+        open.insert(name);
+        double n = 0;
+        const std::string& body = macro->second.first;
+        for (auto it = std::sregex_iterator(body.begin(), body.end(), identifier); it != std::sregex_iterator() && n < limit; ++it)
+            n += sizeOf(it->str());
+        open.erase(name);
+        return size[name] = std::max(n, 1.0);
+    };
+    double total = 0;
+    for (const std::string& l : codeLines)
+        for (auto it = std::sregex_iterator(l.begin(), l.end(), identifier); it != std::sregex_iterator() && total < limit; ++it)
+            total += sizeOf(it->str());
+    double most = 0;
+    for (const auto& [name, body] : macros)
+        if (sizeOf(name) > most) {
+            most = sizeOf(name);
+            biggest = name;
+            line = body.second;
+        }
+    return total;
 }
 
 bool wantedInZip(const std::string& path) {
@@ -436,6 +544,19 @@ void stageItems(const std::vector<Item>& items, const Collector& found, const fs
             std::string shown = displayPath(staging / file);
             if (text.compare(0, shown.size(), shown) == 0) text = e.rel + text.substr(shown.size());
             out.refused[file] = text;
+            continue;
+        }
+        // What would not finish on a GPU, decided the same way on every machine.
+        std::string source = readWholeFile(staging / file), biggest;
+        int line = 0;
+        constexpr double kMaxExpandedTokens = 1e6;  // a real exercise file expands to a few thousand
+        if (macroExpansion(source, biggest, line, kMaxExpandedTokens) >= kMaxExpandedTokens) {
+            out.refused[file] = file + ":" + std::to_string(line) + ": the macro " + biggest +
+                                " expands to more than a million tokens (a macro bomb): refused before compiling";
+        } else if (int loopLine = endlessLoopLine(source)) {
+            out.endless[file] = file + ":" + std::to_string(loopLine) +
+                                ": this loop never ends (its condition is always true and its body has no break, "
+                                "return or discard): on a GPU the check would never finish";
         }
     }
     // Then the other shader files of the graded folder, where an #include finds them.

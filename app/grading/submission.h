@@ -59,6 +59,10 @@ struct StagedSubmission {
     Problem problem = Problem::None;  // Empty: every exercise NOT STARTED; Refused: every exercise REFUSED
     std::string problemReason;        // one line for the student, when problem != None
     std::map<std::string, std::string> refused;  // exercise file ("05-ggx.glsl") -> why it was refused
+    // Exercise files that could never finish on a GPU (a loop with a constant
+    // true condition and no way out), found before compiling: TIMEOUT on
+    // every machine, whatever llvmpipe's loop cap makes of them.
+    std::map<std::string, std::string> endless;
     std::vector<std::string> notes;              // ignored and refused files, nesting: for the student
 };
 

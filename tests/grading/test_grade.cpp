@@ -119,6 +119,10 @@ fs::path buildClass(const fs::path& root) {
     }
     writeFolder(sub / "compile-error", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
     writeFolder(sub / "endless", solutionFiles({{"10-display.glsl", endlessDisplay()}}));
+    // An empty endless loop, which llvmpipe's loop cap alone would end and render: TIMEOUT, as on a GPU.
+    std::string whileTrue = solutionFiles()["10-display.glsl"];
+    whileTrue.insert(whileTrue.find("vec3 toneMap(vec3 c, int op) {\n") + 31, "    while (true) {}\n");
+    writeFolder(sub / "while-true", solutionFiles({{"10-display.glsl", whileTrue}}));
     writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
     writeFolder(sub / "include-escape",
                 solutionFiles({{"05-ggx.glsl", "#include \"../../full/05-ggx.glsl\"\n"}}));
@@ -195,7 +199,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
     for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
     for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
-                           "zip-symlink", "zipped", "messy-repo", "renamed"})
+                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true"})
         expected.push_back(id);
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
@@ -256,6 +260,11 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     EXPECT_DOUBLE_EQ(loop.points, 0);
     EXPECT_LT(loop.seconds, kTimeout + 2) << "the endless loop costs its timeout, no more";
     EXPECT_LT(endless.seconds, kTimeout + full.seconds + 10);
+    Student whileTrue = load(out, "while-true");
+    EXPECT_EQ(whileTrue.exercises.at("10-display").status, "TIMEOUT");
+    EXPECT_TRUE(contains(whileTrue.exercises.at("10-display").message, "this loop never ends"))
+        << whileTrue.exercises.at("10-display").message;
+    EXPECT_DOUBLE_EQ(whileTrue.score, 90);
     expectOthersFull(endless, "endless", {"10-display"});
 
     Student nan = load(out, "nan");
@@ -327,7 +336,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     json summary = readJson(out / "summary.json");
     EXPECT_EQ(summary.at("students").get<int>(), int(expected.size()));
-    EXPECT_EQ(summary.at("timeouts").get<int>(), 1);
+    EXPECT_EQ(summary.at("timeouts").get<int>(), 2);
     EXPECT_EQ(summary.at("compile_errors").get<int>(), 2);
     EXPECT_EQ(summary.at("full_marks").get<int>(), 4);  // full, zipped, messy-repo, renamed
     if (!HasFailure()) fs::remove_all(root);

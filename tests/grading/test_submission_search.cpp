@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace fs = std::filesystem;
@@ -151,4 +152,46 @@ TEST(SubmissionSearch, ExercisesMissingFromTheGradedFolderAreTakenFromElsewhere)
     StagedSubmission s = stage(dir / "hal", dir);
     EXPECT_EQ(readText(dir / "staged" / "09-reflections.glsl"), solutions["09-reflections.glsl"]);
     EXPECT_TRUE(contains(joined(s.notes), "09-reflections.glsl: graded extra/09-reflections.glsl")) << joined(s.notes);
+}
+
+TEST(SubmissionSearch, WhatWouldNeverFinishOnAGpuIsDecidedBeforeCompiling) {
+    Scratch scratch{freshTempDir("search_endless")};
+    const fs::path& dir = scratch.dir;
+    std::map<std::string, std::string> solutions = solutionFiles();
+    const std::string display = solutions["10-display.glsl"];
+    const std::string head = "vec3 toneMap(vec3 c, int op) {\n";
+    ASSERT_NE(display.find(head), std::string::npos);
+    auto withLoop = [&](const std::string& loop) {
+        std::string text = display;
+        return text.insert(text.find(head) + head.size(), loop);
+    };
+    // Endless on a GPU: a constant condition and no way out (llvmpipe alone would stop it and render).
+    writeFolder(dir / "a", {{"10-display.glsl", withLoop("    while (true) { c = sin(c); }  // wait\n")},
+                            {"07-fresnel.glsl", solutions["07-fresnel.glsl"]}});
+    StagedSubmission a = stage(dir / "a", dir / "wa");
+    ASSERT_EQ(a.endless.count("10-display.glsl"), 1u) << joined(a.notes);
+    const int line = 1 + int(std::count(display.begin(), display.begin() + std::ptrdiff_t(display.find(head)), '\n')) + 1;
+    EXPECT_EQ(a.endless["10-display.glsl"].rfind("10-display.glsl:" + std::to_string(line) + ": this loop never ends", 0), 0u)
+        << a.endless["10-display.glsl"];
+    EXPECT_EQ(a.endless.count("07-fresnel.glsl"), 0u) << "the solutions' loops all end";
+    // Loops with a way out, or in a comment, are the checker's business.
+    for (const std::string& fine : {std::string("    while (true) { c = sin(c); if (c.x > 0.5) break; }\n"),
+                                    std::string("    for (;;) return c;\n"),
+                                    std::string("    // while (true) {}\n"),
+                                    std::string("    do { c = sin(c); } while (true);\n")}) {
+        fs::remove_all(dir / "b");
+        fs::remove_all(dir / "wb");
+        writeFolder(dir / "b", {{"10-display.glsl", withLoop(fine)}});
+        StagedSubmission b = stage(dir / "b", dir / "wb");
+        EXPECT_EQ(b.endless.count("10-display.glsl"), 0u) << fine;
+    }
+    // A macro bomb: refused before the driver's preprocessor spends minutes or gigabytes on it.
+    std::string bomb = "#define A0 c\n";
+    for (int k = 1; k <= 24; ++k)
+        bomb += "#define A" + std::to_string(k) + " A" + std::to_string(k - 1) + " A" + std::to_string(k - 1) + "\n";
+    writeFolder(dir / "c", {{"10-display.glsl", withLoop(bomb + "    c = c + A24;\n")}});
+    StagedSubmission c = stage(dir / "c", dir / "wc");
+    ASSERT_EQ(c.refused.count("10-display.glsl"), 1u);
+    EXPECT_TRUE(contains(c.refused["10-display.glsl"], "expands to more than a million tokens (a macro bomb)"))
+        << c.refused["10-display.glsl"];
 }
