@@ -3,6 +3,7 @@
 # (or with sudo available). Safe to run again: does nothing when all are present.
 #   scripts/setup.sh            build + headless + tests
 #   scripts/setup.sh --window   also the window/report test tools (Xvfb, Chromium)
+#   scripts/setup.sh --slurm    also Slurm and MUNGE, for the test of the Slurm recipe (test extra)
 set -euo pipefail
 
 packages=(
@@ -15,11 +16,14 @@ packages=(
   python3-jsonschema
 )
 window_packages=(xvfb xauth xdotool chromium fonts-dejavu-core imagemagick)
+slurm_packages=(slurmctld slurmd slurm-client munge)
 
 for arg in "$@"; do
   case "$arg" in
-    --window|--all) packages+=("${window_packages[@]}") ;;
-    -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
+    --window) packages+=("${window_packages[@]}") ;;
+    --slurm) packages+=("${slurm_packages[@]}") ;;
+    --all) packages+=("${window_packages[@]}" "${slurm_packages[@]}") ;;
+    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
     *) echo "setup.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done

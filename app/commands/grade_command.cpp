@@ -1,6 +1,7 @@
 // raylab grade SUBMISSIONS -o OUT [--jobs N] [--timeout S] [--rubric FILE]
 //              [--id-column NAME] [--shard I/N] [--force]
 // raylab grade merge SHARD_OUT... -o OUT
+// raylab grade export OUT --format canvas|moodle|csv [--roster FILE] ...
 // raylab grade --gradescope [--gradescope-root DIR]
 // Batch grading for instructors (docs/grading.md): every student of
 // SUBMISSIONS graded in isolated processes, grades.csv, Gradescope
@@ -9,6 +10,7 @@
 
 #include "core/error.h"
 #include "grading/grade_run.h"
+#include "grading/lms_export.h"
 #include "grading/merge.h"
 #include "grading/rubric.h"
 
@@ -32,6 +34,9 @@ struct GradeCommandOptions {
     std::string gradescopeRoot;
     std::vector<std::string> mergeInputs;
     std::string mergeOut;
+    std::vector<std::string> exports;  // --export (grade) / --format (grade export)
+    ExportOptions exportOptions;
+    std::string exportOut;             // grade export: OUT
 };
 
 void parseShard(const std::string& text, int& index, int& count) {
@@ -64,12 +69,33 @@ GradeSettings settingsFrom(const GradeCommandOptions& o) {
     return s;
 }
 
-int runGradeCommand(const GradeCommandOptions& o, bool merge) {
+// Writes each export asked for; 0, or 3 when a submission was left out of one.
+int runExports(const GradeCommandOptions& o, const std::filesystem::path& out) {
+    int status = 0;
+    for (const std::string& format : o.exports) {
+        ExportOptions e = o.exportOptions;
+        e.format = format;
+        ExportReport report = exportGrades(out, e);
+        printExportReport(report, format, std::cout);
+        if (!report.unmatched.empty()) status = 3;
+    }
+    return status;
+}
+
+int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
+    if (exportOnly) {
+        if (o.exports.empty()) throw Error("grade export: --format canvas|moodle|csv is required");
+        if (o.exports.size() > 1 && !o.exportOptions.output.empty())
+            throw Error("grade export: -o FILE names one file; give one --format with it");
+        return runExports(o, o.exportOut);
+    }
+    if (!o.exportOptions.roster.empty() && o.exports.empty())
+        throw Error("--roster: give --export canvas|moodle with it");
     if (merge) {
         if (o.mergeOut.empty()) throw Error("grade merge: -o OUT is required");
         std::vector<std::filesystem::path> inputs(o.mergeInputs.begin(), o.mergeInputs.end());
         mergeGradeOutputs(inputs, o.mergeOut, std::cout);
-        return 0;
+        return runExports(o, o.mergeOut);
     }
     if (o.gradescope) {
         std::string root = o.gradescopeRoot;
@@ -87,7 +113,9 @@ int runGradeCommand(const GradeCommandOptions& o, bool merge) {
     run.submissions = o.submissions;
     run.settings = settingsFrom(o);
     if (!o.shard.empty()) parseShard(o.shard, run.shardIndex, run.shardCount);
-    return runGrade(run, std::cout);
+    int status = runGrade(run, std::cout);
+    if (status != 0) return status;
+    return runExports(o, run.settings.out);
 }
 
 }  // namespace
@@ -108,11 +136,29 @@ void addGradeCommand(CLI::App& app) {
                   "Run as Gradescope's autograder: ROOT/submission in, ROOT/results/results.json out");
     cmd->add_option("--gradescope-root", o->gradescopeRoot,
                     "ROOT for --gradescope (default: $RAYLAB_GRADESCOPE_ROOT, else /autograder)");
+    auto exportOptions = [o](CLI::App* c, const char* formatFlag) {
+        c->add_option(formatFlag, o->exports, "Gradebook export: canvas, moodle or csv (repeat for more)")
+            ->check(CLI::IsMember({"canvas", "moodle", "csv"}));
+        c->add_option("--roster", o->exportOptions.roster,
+                      "The LMS's class export (Canvas gradebook CSV, Moodle grading worksheet or grades CSV)");
+        c->add_option("--assignment", o->exportOptions.assignment,
+                      "Assignment (Canvas) or grade item (Moodle) column name (default: the rubric's total_column)");
+        c->add_option("--moodle-id", o->exportOptions.moodleId, "Moodle identifier column: username, idnumber or email")
+            ->capture_default_str();
+        c->add_flag("--exercise-columns", o->exportOptions.exerciseColumns,
+                    "Per-exercise columns too (read-only in Canvas)");
+    };
+    exportOptions(cmd, "--export");
     CLI::App* merge = cmd->add_subcommand("merge", "Join the outputs of `grade --shard I/N` runs into one");
     merge->add_option("shards", o->mergeInputs, "Output folders of the shards")->required();
     merge->add_option("-o,--output", o->mergeOut, "Merged output folder")->required();
-    cmd->callback([o, merge] {
-        int status = runGradeCommand(*o, merge->parsed());
+    exportOptions(merge, "--export");
+    CLI::App* exporter = cmd->add_subcommand("export", "Write a gradebook file for Canvas or Moodle from a finished run");
+    exporter->add_option("out", o->exportOut, "Output folder of `raylab grade` (or of `grade merge`)")->required();
+    exportOptions(exporter, "--format");
+    exporter->add_option("-o,--output", o->exportOptions.output, "File to write (default: OUT/grades-FORMAT.csv)");
+    cmd->callback([o, merge, exporter] {
+        int status = runGradeCommand(*o, merge->parsed(), exporter->parsed());
         if (status != 0) throw CLI::RuntimeError(status);
     });
 }

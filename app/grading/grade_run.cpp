@@ -249,6 +249,9 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
             e.refused = true;
             e.report = reportWithReason(info, CheckStatus::CompileError, staged.problemReason,
                                         "submit a plain folder or .zip holding your exercise files");
+        } else if (staged.endless.count(info.file())) {
+            e.report = reportWithReason(info, CheckStatus::TimedOut, staged.endless.at(info.file()),
+                                        "every loop needs a condition that becomes false, or a break");
         } else if (refused != staged.refused.end()) {
             e.refused = true;
             e.report = reportWithReason(info, CheckStatus::CompileError, refused->second,
@@ -402,7 +405,10 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
 int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& log) {
     const fs::path results = root / "results" / "results.json";
     auto fallback = [&](const std::string& why) {
-        nlohmann::json j = {{"score", 0}, {"output", "raylab could not grade this submission: " + why}};
+        nlohmann::json j = {{"score", 0},
+                            {"output", "raylab could not grade this submission: " + why},
+                            {"output_format", "text"},
+                            {"tests", nlohmann::json::array()}};
         writeFileAtomic(results, j.dump(2) + "\n");
         log << "raylab grade --gradescope: " << why << "\n";
     };

@@ -1,7 +1,8 @@
 // OUT/grades.csv: one header row, then one row per student sorted by id,
 // the id first, points per exercise, the total last, every number with two
-// decimals. Imports into Moodle or Canvas (the id column's header comes from
-// the rubric or --id-column); same records, same bytes.
+// decimals (the id column's header comes from the rubric or --id-column);
+// same records, same bytes. For reading and scripts: the files Canvas and
+// Moodle import are grading/lms_export.h's.
 #pragma once
 
 #include "grading/rubric.h"

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <regex>
 
 namespace rl {
 
@@ -31,6 +32,11 @@ tr.problem td.id{border-left:4px solid #d33}
 figure .row{display:flex;gap:6px} figure .img{text-align:center;font-size:11px;color:#555}
 figure img{height:108px;image-rendering:pixelated;display:block;background:#888}
 figcaption{font-size:12px;margin-top:4px}
+#grades{width:100%;font-size:13px} #grades th,#grades td{padding:3px 5px} #grades td.x{white-space:normal;width:5.4em}
+.why{display:block;font-size:11px;line-height:1.15;color:#444;text-align:left;white-space:normal;overflow-wrap:anywhere;max-width:5.8em}
+#grades td.notecol{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
+.filter{margin:8px 0;display:flex;gap:12px;align-items:center} .filter input[type=search]{width:22em;font:inherit;padding:3px 6px}
+details.passed{margin:16px 0} details.passed>summary{cursor:pointer;font-weight:600}
 </style>
 )";
 
@@ -55,6 +61,60 @@ document.querySelectorAll('table.sortable th').forEach(function (th, col) {
 });
 </script>
 )";
+
+// The filter box: keeps the rows whose text or reasons hold every word typed,
+// and, when ticked, only students with a problem.
+const char* kFilterScript = R"(<script>
+(function () {
+  var box = document.getElementById('filter'), only = document.getElementById('problems-only');
+  function apply() {
+    var words = box.value.toLowerCase().split(/\s+/).filter(Boolean), shown = 0;
+    document.querySelectorAll('#grades tbody tr').forEach(function (row) {
+      var text = (row.textContent + ' ' + Array.prototype.map.call(row.querySelectorAll('[title]'),
+                  function (c) { return c.title; }).join(' ')).toLowerCase();
+      var ok = words.every(function (w) { return text.indexOf(w) >= 0; }) &&
+               (!only.checked || row.classList.contains('problem'));
+      row.hidden = !ok;
+      shown += ok;
+    });
+    document.getElementById('shown').textContent = shown + ' shown';
+  }
+  box.addEventListener('input', apply);
+  only.addEventListener('change', apply);
+  apply();
+})();
+</script>
+)";
+
+// The reason in a few words, for the class table's cell (the tooltip has it all).
+std::string shortReason(const ExerciseGrade* g) {
+    if (!g) return "not started";
+    const ExerciseReport& r = g->report;
+    std::string status = gradeStatus(*g);
+    if (status == "PASS") return "";
+    if (status == "FAIL") {
+        int passed = 0, total = 0;
+        for (const ProbeSummary& p : r.probes) {
+            passed += p.passed;
+            total += p.total;
+        }
+        int images = 0;
+        for (const ImageSummary& i : r.images) images += i.passed;
+        std::string why = total ? "probes " + std::to_string(passed) + "/" + std::to_string(total) : "";
+        if (!r.images.empty())
+            why += (why.empty() ? "" : ", ") + std::string("img ") + std::to_string(images) + "/" + std::to_string(r.images.size());
+        return why;
+    }
+    if (status == "COMPILE ERROR") {
+        static const std::regex fileLine(R"(^([^:\s]+:\d+))");  // "05-ggx.glsl:3: error: ..."
+        std::smatch m;
+        return std::regex_search(r.message, m, fileLine) ? m[1].str() : std::string("compile error");
+    }
+    if (status == "NOT STARTED") return r.message.find("missing") != std::string::npos ? "missing" : "not started";
+    if (status == "TIMEOUT") return "timeout";
+    if (status == "CRASH") return "crash";
+    return "refused";
+}
 
 std::string statusClass(const ExerciseGrade* g) {
     if (!g) return "s-none";
@@ -141,10 +201,14 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
         html += (first ? "" : ", ") + htmlEscape(status) + " " + std::to_string(count.get<int>());
         first = false;
     }
-    html += "</p>\n<p class=\"muted\">Click a column header to sort. Each cell's tooltip gives the exercise's status "
-            "and reason; the student's page has the renders, differences and logs. "
+    html += "</p>\n<p class=\"muted\">Click a column header to sort. Each cell gives the points and, under them, "
+            "the reason in short (probe cases and check images passed, the file and line of a compile error, ...); "
+            "its tooltip gives the whole reason, and the student's page the renders, differences and logs. "
             "Files: <a href=\"grades.csv\">grades.csv</a>, <a href=\"summary.json\">summary.json</a>, "
             "<a href=\"rubric.json\">rubric.json</a>.</p>\n";
+    html += "<div class=\"filter\"><input type=\"search\" id=\"filter\" placeholder=\"Filter: id, status, reason, "
+            "note...\" aria-label=\"Filter the students\"><label><input type=\"checkbox\" id=\"problems-only\"> only "
+            "students with problems</label><span class=\"muted\" id=\"shown\"></span></div>\n";
     html += "<table class=\"sortable\" id=\"grades\">\n<thead><tr><th class=\"l\" data-type=\"text\">" +
             htmlEscape(rubric.idColumn) + "</th>";
     for (const RubricExercise& e : rubric.exercises)
@@ -161,8 +225,10 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
             std::string status = x ? gradeStatus(*x) : "NOT STARTED";
             problems += status != "PASS";
             std::string tip = status + (x && !x->report.message.empty() ? ": " + x->report.message : "");
-            cells += "<td class=\"" + statusClass(x) + "\" data-v=\"" + formatPoints(s.hundredths[k]) + "\" title=\"" +
-                     htmlEscape(tip) + "\">" + formatPoints(s.hundredths[k]) + "</td>";
+            std::string why = shortReason(x);
+            cells += "<td class=\"x " + statusClass(x) + "\" data-v=\"" + formatPoints(s.hundredths[k]) + "\" title=\"" +
+                     htmlEscape(tip) + "\">" + formatPoints(s.hundredths[k]) +
+                     (why.empty() ? "" : "<span class=\"why\">" + htmlEscape(why) + "</span>") + "</td>";
         }
         std::string notes;
         for (const std::string& n : g.notes) notes += (notes.empty() ? "" : "; ") + n;
@@ -170,10 +236,11 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
                 urlSegment(g.id) + "/index.html\">" + htmlEscape(g.id) + "</a></td>" + cells + "<td data-v=\"" +
                 formatPoints(s.total) + "\"><b>" + formatPoints(s.total) + "</b></td><td data-v=\"" +
                 std::to_string(problems) + "\"" + (problems ? " class=\"s-fail\"" : "") + ">" +
-                std::to_string(problems) + "</td><td class=\"l wrap\">" + htmlEscape(notes) + "</td></tr>\n";
+                std::to_string(problems) + "</td><td class=\"l notecol\">" + htmlEscape(notes) + "</td></tr>\n";
     }
     html += "</tbody>\n</table>\n";
     html += kSortScript;
+    html += kFilterScript;
     html += "</body>\n</html>\n";
     return html;
 }
@@ -202,51 +269,77 @@ std::string studentPage(const Rubric& rubric, const StudentGrade& g) {
     }
     html += "</tbody>\n</table>\n";
 
-    for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
+    // One exercise's section: what failed first, passing check scenes folded away.
+    auto figure = [](const ImageSummary& i) {
+        std::string f = "<figure><div class=\"row\">";
+        for (const auto& [label, path] : {std::pair<const char*, const std::string&>{"yours", i.gotPng},
+                                          {"reference", i.expectedPng},
+                                          {"difference", i.diffPng}}) {
+            f += "<div class=\"img\">";
+            if (!path.empty())
+                f += "<img src=\"" + htmlEscape(imageUrl(path)) + "\" alt=\"" + htmlEscape(i.scene) + " " + label + "\">";
+            f += std::string(label) + "</div>";
+        }
+        return f + "</div><figcaption><b class=\"badge " + std::string(i.passed ? "s-pass" : "s-fail") + "\">" +
+               (i.passed ? "PASS" : "FAIL") + "</b> " + htmlEscape(i.scene) + ": " + fixed(100 * i.offFraction, 2) +
+               "% of pixels off, mean " + fixed(i.meanLsb, 2) + "/255" +
+               (i.nonFinite ? ", " + std::to_string(i.nonFinite) + " NaN/Inf" : "") + "</figcaption></figure>\n";
+    };
+    auto section = [&](std::size_t k) {
         const RubricExercise& e = rubric.exercises[k];
         const ExerciseGrade* x = g.find(e.id);
         const ExerciseInfo& info = findExercise(e.id);
-        html += "<h2 id=\"" + htmlEscape(urlSegment(e.id)) + "\">" + htmlEscape(e.id + ": " + info.title) +
-                " <span class=\"badge " + statusClass(x) + "\">" + htmlEscape(x ? gradeStatus(*x) : "NOT STARTED") +
-                "</span> " + formatPoints(s.hundredths[k]) + " / " + formatPoints(std::lround(e.weight * 100)) +
-                "</h2>\n";
-        if (!x) continue;
+        std::string out = "<h2 id=\"" + htmlEscape(urlSegment(e.id)) + "\">" + htmlEscape(e.id + ": " + info.title) +
+                          " <span class=\"badge " + statusClass(x) + "\">" +
+                          htmlEscape(x ? gradeStatus(*x) : "NOT STARTED") + "</span> " + formatPoints(s.hundredths[k]) +
+                          " / " + formatPoints(std::lround(e.weight * 100)) + "</h2>\n";
+        if (!x) return out;
         const ExerciseReport& r = x->report;
-        if (!r.message.empty()) html += "<p>" + htmlEscape(r.message) + "</p>\n";
-        if (!r.hint.empty()) html += "<p class=\"muted\">hint: " + htmlEscape(r.hint) + "</p>\n";
+        if (!r.message.empty()) out += "<p>" + htmlEscape(r.message) + "</p>\n";
+        if (!r.hint.empty()) out += "<p class=\"muted\">hint: " + htmlEscape(r.hint) + "</p>\n";
+        if (!r.details.empty() && r.status != CheckStatus::Pass)
+            out += std::string("<details open><summary>") +
+                   (r.status == CheckStatus::CompileError ? "Compile log" : "Details") + "</summary><pre>" +
+                   htmlEscape(r.details) + "</pre></details>\n";
         if (!r.probes.empty()) {
-            html += "<table><thead><tr><th class=\"l\">Probe</th><th>Cases passed</th></tr></thead><tbody>\n";
+            out += "<table><thead><tr><th class=\"l\">Probe</th><th>Cases passed</th></tr></thead><tbody>\n";
             for (const ProbeSummary& p : r.probes)
-                html += "<tr><td class=\"l\">" + htmlEscape(p.name) + "</td><td class=\"" +
-                        (p.passed == p.total ? "s-pass" : "s-fail") + "\">" + std::to_string(p.passed) + " / " +
-                        std::to_string(p.total) + "</td></tr>\n";
-            html += "</tbody></table>\n";
+                out += "<tr><td class=\"l\">" + htmlEscape(p.name) + "</td><td class=\"" +
+                       (p.passed == p.total ? "s-pass" : "s-fail") + "\">" + std::to_string(p.passed) + " / " +
+                       std::to_string(p.total) + "</td></tr>\n";
+            out += "</tbody></table>\n";
         }
-        if (!r.images.empty()) {
-            html += "<div class=\"scenes\">\n";
-            for (const ImageSummary& i : r.images) {
-                html += "<figure><div class=\"row\">";
-                for (const auto& [label, path] : {std::pair<const char*, const std::string&>{"yours", i.gotPng},
-                                                  {"reference", i.expectedPng},
-                                                  {"difference", i.diffPng}}) {
-                    html += "<div class=\"img\">";
-                    if (!path.empty())
-                        html += "<img src=\"" + htmlEscape(imageUrl(path)) + "\" alt=\"" + htmlEscape(i.scene) + " " +
-                                label + "\">";
-                    html += std::string(label) + "</div>";
-                }
-                html += "</div><figcaption><b class=\"badge " + std::string(i.passed ? "s-pass" : "s-fail") + "\">" +
-                        (i.passed ? "PASS" : "FAIL") + "</b> " + htmlEscape(i.scene) + ": " +
-                        fixed(100 * i.offFraction, 2) + "% of pixels off, mean " + fixed(i.meanLsb, 2) + "/255" +
-                        (i.nonFinite ? ", " + std::to_string(i.nonFinite) + " NaN/Inf" : "") +
-                        "</figcaption></figure>\n";
-            }
-            html += "</div>\n";
+        std::string failing, passing;
+        int passed = 0;
+        for (const ImageSummary& i : r.images) {
+            (i.passed ? passing : failing) += figure(i);
+            passed += i.passed;
         }
-        if (!r.details.empty())
-            html += std::string("<details") + (r.status == CheckStatus::CompileError ? " open" : "") +
-                    "><summary>" + std::string(r.status == CheckStatus::CompileError ? "Compile log" : "Details") + "</summary><pre>" + htmlEscape(r.details) + "</pre></details>\n";
+        if (!failing.empty()) out += "<div class=\"scenes\">\n" + failing + "</div>\n";
+        if (!passing.empty())
+            out += std::string("<details") + (failing.empty() && r.status != CheckStatus::Pass ? " open" : "") +
+                   "><summary>" + std::to_string(passed) + " check scene" + (passed == 1 ? "" : "s") +
+                   " within budget</summary><div class=\"scenes\">\n" + passing + "</div></details>\n";
+        if (!r.details.empty() && r.status == CheckStatus::Pass)
+            out += "<details><summary>Details</summary><pre>" + htmlEscape(r.details) + "</pre></details>\n";
+        return out;
+    };
+    // Failures first, in rubric order; the passes folded into one summary at the end.
+    std::string passes, passNames;
+    int passCount = 0;
+    for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
+        const ExerciseGrade* x = g.find(rubric.exercises[k].id);
+        if (x && gradeStatus(*x) == "PASS") {
+            passes += section(k);
+            passNames += (passCount++ ? ", " : "") + rubric.exercises[k].id;
+        } else {
+            html += section(k);
+        }
     }
+    if (passCount)
+        html += "<details class=\"passed\"><summary>" + std::to_string(passCount) + " exercise" +
+                (passCount == 1 ? "" : "s") + " passed: " + htmlEscape(passNames) + "</summary>\n" + passes +
+                "</details>\n";
     html += "</body>\n</html>\n";
     return html;
 }

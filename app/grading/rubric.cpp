@@ -36,6 +36,19 @@ std::string text(const json& j, const char* key, const std::string& fallback, co
     return j[key].get<std::string>();
 }
 
+const std::set<std::string> kVisibilities = {"visible", "after_due_date", "after_published", "hidden"};
+
+std::string choice(const json& j, const char* key, const std::string& fallback, const std::set<std::string>& allowed,
+                   const std::string& where) {
+    std::string v = text(j, key, fallback, where);
+    if (!allowed.count(v)) {
+        std::string list;
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        throw Error(where + ": \"" + key + "\" must be one of " + list + ", not \"" + v + "\"");
+    }
+    return v;
+}
+
 }  // namespace
 
 long Rubric::maxHundredths() const {
@@ -78,6 +91,18 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
     if (r.zeroCreditMeanLsb <= 0) throw Error(where + ": zero_credit_mean_lsb must be > 0");
     if (r.failMax > 1) throw Error(where + ": fail_max must be at most 1");
 
+    json gs = j.value("gradescope", json::object());
+    if (!gs.is_object()) throw Error(shown + ": \"gradescope\" must be an object");
+    const std::string gsWhere = shown + ": gradescope";
+    r.gradescope.outputFormat =
+        choice(gs, "output_format", r.gradescope.outputFormat, {"text", "md", "html", "simple_format", "ansi"}, gsWhere);
+    r.gradescope.visibility = choice(gs, "visibility", r.gradescope.visibility, kVisibilities, gsWhere);
+    r.gradescope.stdoutVisibility = choice(gs, "stdout_visibility", r.gradescope.stdoutVisibility, kVisibilities, gsWhere);
+    if (gs.contains("leaderboard")) {
+        if (!gs["leaderboard"].is_boolean()) throw Error(gsWhere + ": \"leaderboard\" must be true or false");
+        r.gradescope.leaderboard = gs["leaderboard"].get<bool>();
+    }
+
     if (!j.contains("exercises") || !j["exercises"].is_array() || j["exercises"].empty())
         throw Error(shown + ": \"exercises\" must be a non-empty array of {\"id\", \"weight\"}");
     std::set<std::string> seen, columns{r.idColumn, r.totalColumn};
@@ -97,6 +122,7 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
         if (!e.contains("weight")) throw Error(at + ": \"weight\" is missing");
         x.weight = number(e, "weight", 0, at);
         x.column = text(e, "column", x.id, at);
+        x.visibility = choice(e, "visibility", x.visibility, kVisibilities, at);
         if (!columns.insert(x.column).second) throw Error(at + ": column \"" + x.column + "\" is used twice");
         r.exercises.push_back(x);
     }
@@ -107,7 +133,7 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
 json toJson(const Rubric& r) {
     json exercises = json::array();
     for (const RubricExercise& e : r.exercises)
-        exercises.push_back({{"id", e.id}, {"weight", e.weight}, {"column", e.column}});
+        exercises.push_back({{"id", e.id}, {"weight", e.weight}, {"column", e.column}, {"visibility", e.visibility}});
     return {{"id_column", r.idColumn},
             {"total_column", r.totalColumn},
             {"credit",
@@ -116,6 +142,11 @@ json toJson(const Rubric& r) {
               {"failed_scene_max", r.failedSceneMax},
               {"zero_credit_mean_lsb", r.zeroCreditMeanLsb},
               {"fail_max", r.failMax}}},
+            {"gradescope",
+             {{"output_format", r.gradescope.outputFormat},
+              {"visibility", r.gradescope.visibility},
+              {"stdout_visibility", r.gradescope.stdoutVisibility},
+              {"leaderboard", r.gradescope.leaderboard}}},
             {"exercises", exercises}};
 }
 

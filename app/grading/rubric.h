@@ -29,6 +29,15 @@ struct RubricExercise {
     std::string id;      // "05-ggx"
     double weight = 0;   // points for a PASS
     std::string column;  // its grades.csv header (default: the id)
+    std::string visibility = "visible";  // Gradescope: visible, after_due_date, after_published or hidden
+};
+
+// How results.json is written for Gradescope (the rubric's "gradescope" object).
+struct GradescopeSettings {
+    std::string outputFormat = "text";      // text, md, html, simple_format or ansi: how Gradescope renders outputs
+    std::string visibility = "visible";     // of the whole result
+    std::string stdoutVisibility = "hidden";  // of the autograder's log
+    bool leaderboard = false;               // a leaderboard entry with the total
 };
 
 struct Rubric {
@@ -40,6 +49,7 @@ struct Rubric {
     double zeroCreditMeanLsb = 8;      // mean error (in 1/255) at which a failed scene earns nothing
     double failMax = 0.75;             // most credit for a FAIL: a mistake in a rare case is still a mistake
     std::vector<RubricExercise> exercises;  // graded and listed in this order; others are not checked
+    GradescopeSettings gradescope;
 
     long maxHundredths() const;
 };

@@ -132,7 +132,8 @@ void extractEntries(zip_t* archive, const std::vector<Entry>& entries, const fs:
 
 }  // namespace
 
-UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, const UnzipLimits& limits) {
+UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, const UnzipLimits& limits,
+                             const UnzipFilter& wanted) {
     const std::string shown = zipPath.filename().string();
     auto fail = [&](const std::string& why) { return Error(shown + ": " + why); };
     int code = 0;
@@ -146,9 +147,9 @@ UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, cons
     }
     zip_int64_t count = zip_get_num_entries(archive.get(), 0);
     if (count < 0) throw fail("not a valid zip archive");
-    if (std::size_t(count) > limits.maxEntries)
-        throw fail("holds " + std::to_string(count) + " entries, over the limit of " +
-                   std::to_string(limits.maxEntries));
+    const std::size_t listedLimit = wanted ? limits.maxListedEntries : limits.maxEntries;
+    if (std::size_t(count) > listedLimit)
+        throw fail("holds " + std::to_string(count) + " entries, over the limit of " + std::to_string(listedLimit));
 
     // First pass: names, types and declared sizes, so that a bad archive is
     // refused before anything is written.
@@ -168,6 +169,10 @@ UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, cons
         std::string key = parts[0];
         for (std::size_t k = 1; k < parts.size(); ++k) key += "/" + parts[k];
         bool directory = name.back() == '/';
+        if (wanted && (directory || !wanted(key))) {
+            if (!directory) result.skipped.push_back(key);
+            continue;  // never written: no limit applies, the name was checked above
+        }
         zip_uint8_t opsys = 0;
         zip_uint32_t attributes = 0;
         if (zip_file_get_external_attributes(archive.get(), zip_uint64_t(i), 0, &opsys, &attributes) == 0 &&
@@ -197,6 +202,9 @@ UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, cons
         }
         entries.push_back({zip_uint64_t(i), parts, directory});
     }
+    if (entries.size() > limits.maxEntries)
+        throw fail("holds " + std::to_string(entries.size()) + " entries to extract, over the limit of " +
+                   std::to_string(limits.maxEntries));
     if (declaredTotal > limits.maxTotalBytes)
         throw fail("inflates to " + std::to_string(declaredTotal >> 20) + " MiB, over the limit of " +
                    std::to_string(limits.maxTotalBytes >> 20) + " MiB");

@@ -15,13 +15,16 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace rl {
 
 struct UnzipLimits {
-    std::size_t maxEntries = 2000;
+    std::size_t maxListedEntries = 100000;                   // entries in the archive's directory, extracted or not
+    std::size_t maxEntries = 2000;                           // entries extracted
     std::uint64_t maxTotalBytes = std::uint64_t(64) << 20;  // all entries, inflated
     std::uint64_t maxEntryBytes = std::uint64_t(16) << 20;
     double maxRatio = 200;                                   // inflated / compressed, per entry ...
@@ -31,10 +34,16 @@ struct UnzipLimits {
 struct UnzipResult {
     std::map<std::string, std::string> refused;  // entry path -> why it was not extracted
     std::size_t files = 0;                       // regular files extracted
+    std::vector<std::string> skipped;            // files left in the archive: not wanted
 };
+
+// Which entries to extract ("exercises/05-ggx.glsl"); the others are not
+// written and count against no size limit (a build folder in a repository's
+// zip), but their names are checked all the same.
+using UnzipFilter = std::function<bool(const std::string& path)>;
 
 // `dest` must not exist yet or be empty. Throws rl::Error "NAME.zip: reason".
 UnzipResult extractZipSafely(const std::filesystem::path& zip, const std::filesystem::path& dest,
-                             const UnzipLimits& limits = {});
+                             const UnzipLimits& limits = {}, const UnzipFilter& wanted = {});
 
 }  // namespace rl

@@ -1,6 +1,14 @@
 // Where students' work comes from: one entry per student in SUBMISSIONS (a
-// folder, possibly a copy of exercises/ nested a level or two deeper, or a
-// .zip of one), and how it becomes a clean folder that the checker may read.
+// folder, a .zip, or the files an LMS bulk download gives one student, see
+// grading/roster.h), and how it becomes a clean folder that the checker may
+// read.
+//
+// The exercise files are searched for the way an instructor would: at any
+// depth, inside zips (and zips inside those), skipping build folders and
+// version control; the folder with the most exercises that are not the
+// unchanged stub wins, exercises it lacks are taken from elsewhere, renamed
+// copies ("05-ggx (1).glsl", "05-ggx.GLSL") stand in for missing names, and
+// every such choice becomes a note for the student.
 //
 // Staging copies only regular shader files from the student's own entry into
 // OUT/<id>/submission/ and grades that copy, so that grading never reads
@@ -19,10 +27,14 @@
 namespace rl {
 
 struct SubmissionEntry {
-    enum class Kind { Folder, Zip, Link };
-    std::string id;              // the entry's name; for a zip without ".zip"
-    std::filesystem::path path;  // SUBMISSIONS/<name>
+    enum class Kind { Folder, Zip, Link, Group };
+    std::string id;              // the entry's name; for a zip without ".zip"; for a Group its student ("doejane_12345")
+    std::filesystem::path path;  // SUBMISSIONS/<name>; for a Group its first part
     Kind kind = Kind::Folder;
+    // Group: the entries of an LMS download that belong to one student, each
+    // with the name it stands for ("05-ggx.glsl" for
+    // "doejane_12345_67890_05-ggx.glsl"; "" for a folder: its contents).
+    std::vector<std::pair<std::filesystem::path, std::string>> parts;
 };
 
 struct SubmissionList {
@@ -30,8 +42,10 @@ struct SubmissionList {
     std::vector<std::string> ignored;       // entries that are no student, with the reason
 };
 
-// Every folder, .zip and symbolic link in `dir` is a student; hidden entries
-// and other files are listed as ignored. Throws rl::Error when `dir` is not a
+// Every folder, .zip and symbolic link in `dir` is a student, and so is every
+// group of entries named as an LMS bulk download names them (Canvas:
+// "doejane_12345_67890_05-ggx.glsl", Moodle: "Jane Doe_12345_assignsubmission_file_");
+// hidden entries and other files are listed as ignored. Throws rl::Error when `dir` is not a
 // readable folder.
 SubmissionList listSubmissions(const std::filesystem::path& dir);
 
@@ -45,6 +59,10 @@ struct StagedSubmission {
     Problem problem = Problem::None;  // Empty: every exercise NOT STARTED; Refused: every exercise REFUSED
     std::string problemReason;        // one line for the student, when problem != None
     std::map<std::string, std::string> refused;  // exercise file ("05-ggx.glsl") -> why it was refused
+    // Exercise files that could never finish on a GPU (a loop with a constant
+    // true condition and no way out), found before compiling: TIMEOUT on
+    // every machine, whatever llvmpipe's loop cap makes of them.
+    std::map<std::string, std::string> endless;
     std::vector<std::string> notes;              // ignored and refused files, nesting: for the student
 };
 

@@ -7,12 +7,14 @@
 #include "support/test_support.h"
 
 #include "core/image.h"
+#include "core/paths.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -117,6 +119,10 @@ fs::path buildClass(const fs::path& root) {
     }
     writeFolder(sub / "compile-error", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
     writeFolder(sub / "endless", solutionFiles({{"10-display.glsl", endlessDisplay()}}));
+    // An empty endless loop, which llvmpipe's loop cap alone would end and render: TIMEOUT, as on a GPU.
+    std::string whileTrue = solutionFiles()["10-display.glsl"];
+    whileTrue.insert(whileTrue.find("vec3 toneMap(vec3 c, int op) {\n") + 31, "    while (true) {}\n");
+    writeFolder(sub / "while-true", solutionFiles({{"10-display.glsl", whileTrue}}));
     writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
     writeFolder(sub / "include-escape",
                 solutionFiles({{"05-ggx.glsl", "#include \"../../full/05-ggx.glsl\"\n"}}));
@@ -153,6 +159,24 @@ fs::path buildClass(const fs::path& root) {
     auto bomb = zipped;
     bomb.push_back({"exercises/padding.glsl", std::string(8u << 20, ' ')});  // 8 MiB of spaces: ratio ~1000:1
     writeZip(sub / "zip-bomb.zip", bomb);
+    // Shapes real uploads take: a repository's zip (a 20 MiB library in build/,
+    // .git, a stray stub at the top), and renamed files with a byte-order mark.
+    std::vector<ZipEntry> repo;
+    for (const auto& [name, text] : solutionFiles()) repo.push_back({"raylab-main/exercises/" + name, text});
+    std::string library(20u << 20, '\0');
+    std::uint32_t x = 7;
+    for (char& c : library) c = char((x = x * 1664525u + 1013904223u) >> 24);  // incompressible, like a real one
+    repo.push_back({"raylab-main/build/libraylab_core.a", library});
+    repo.push_back({"raylab-main/.git/HEAD", "ref: refs/heads/main\n"});
+    repo.push_back({"05-ggx.glsl", stubFiles()["05-ggx.glsl"]});
+    writeZip(sub / "messy-repo.zip", repo);
+    auto renamed = solutionFiles();
+    renamed["05-ggx (1).glsl"] = renamed["05-ggx.glsl"];
+    renamed.erase("05-ggx.glsl");
+    renamed["07-fresnel.GLSL"] = renamed["07-fresnel.glsl"];
+    renamed.erase("07-fresnel.glsl");
+    renamed["03-lambert.glsl"] = "\xEF\xBB\xBF" + renamed["03-lambert.glsl"];
+    writeFolder(sub / "renamed", renamed);
     writeText(sub / "roster.txt", "not a student\n");
     return sub;
 }
@@ -175,7 +199,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
     for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
     for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
-                           "zip-symlink", "zipped"})
+                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true"})
         expected.push_back(id);
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
@@ -190,6 +214,21 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     // docs/grading.md); this bound only catches a grader gone much slower
     // (serialised, waiting on something), not a busy test machine.
     EXPECT_LT(full.seconds, 30);
+
+    // Every shape of a real upload earns what its files deserve, and says which files were graded.
+    for (const char* id : {"messy-repo", "renamed"}) {
+        Student s = load(out, id);
+        EXPECT_DOUBLE_EQ(s.score, 100) << id;
+        expectOthersFull(s, id, {});
+    }
+    std::string messyNotes, renamedNotes;
+    for (const std::string& n : load(out, "messy-repo").notes) messyNotes += n + "\n";
+    for (const std::string& n : load(out, "renamed").notes) renamedNotes += n + "\n";
+    EXPECT_TRUE(contains(messyNotes, "graded the folder raylab-main/exercises/")) << messyNotes;
+    EXPECT_TRUE(contains(messyNotes, "not searched: .git/, build/")) << messyNotes;
+    EXPECT_TRUE(contains(renamedNotes, "graded 05-ggx (1).glsl as 05-ggx.glsl")) << renamedNotes;
+    EXPECT_TRUE(contains(renamedNotes, "graded 07-fresnel.GLSL as 07-fresnel.glsl")) << renamedNotes;
+    EXPECT_TRUE(contains(renamedNotes, "byte-order mark")) << renamedNotes;
 
     Student zero = load(out, "zero");
     EXPECT_DOUBLE_EQ(zero.score, 0);
@@ -221,6 +260,11 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     EXPECT_DOUBLE_EQ(loop.points, 0);
     EXPECT_LT(loop.seconds, kTimeout + 2) << "the endless loop costs its timeout, no more";
     EXPECT_LT(endless.seconds, kTimeout + full.seconds + 10);
+    Student whileTrue = load(out, "while-true");
+    EXPECT_EQ(whileTrue.exercises.at("10-display").status, "TIMEOUT");
+    EXPECT_TRUE(contains(whileTrue.exercises.at("10-display").message, "this loop never ends"))
+        << whileTrue.exercises.at("10-display").message;
+    EXPECT_DOUBLE_EQ(whileTrue.score, 90);
     expectOthersFull(endless, "endless", {"10-display"});
 
     Student nan = load(out, "nan");
@@ -292,9 +336,9 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     json summary = readJson(out / "summary.json");
     EXPECT_EQ(summary.at("students").get<int>(), int(expected.size()));
-    EXPECT_EQ(summary.at("timeouts").get<int>(), 1);
+    EXPECT_EQ(summary.at("timeouts").get<int>(), 2);
     EXPECT_EQ(summary.at("compile_errors").get<int>(), 2);
-    EXPECT_EQ(summary.at("full_marks").get<int>(), 2);
+    EXPECT_EQ(summary.at("full_marks").get<int>(), 4);  // full, zipped, messy-repo, renamed
     if (!HasFailure()) fs::remove_all(root);
 }
 
@@ -416,24 +460,56 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     EXPECT_EQ(images, 10 * 5 * 3) << "every check scene of every exercise: render, reference, difference";
     EXPECT_TRUE(contains(readText(out / "broken" / "index.html"), "05-ggx.glsl:3:")) << "the compile log, file:line";
 
-    for (const auto& [name, file] : std::map<std::string, fs::path>{{"index", out / "index.html"},
-                                                                    {"student", out / "fresnel" / "index.html"}}) {
-        fs::path shot = root / (name + ".png");
-        fs::path profile = root / ("chromium-" + name);
-        std::string command = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                              "--disable-background-networking --disable-component-update --disable-sync "
-                              "--user-data-dir=" + profile.string() + " --screenshot=" + shot.string() +
-                              " --window-size=1200,900 'file://" + file.string() + "' > /dev/null 2>&1";
-        EXPECT_EQ(std::system(command.c_str()), 0) << command;
-        ASSERT_TRUE(fs::exists(shot)) << command;
-        EXPECT_GT(fs::file_size(shot), 1000u);
-        rl::DisplayImage picture = rl::readPng(shot.string());
-        EXPECT_EQ(picture.width, 1200);
-        std::set<int> colours;
-        for (std::size_t k = 0; k + 2 < picture.rgb.size() && colours.size() < 8; k += 3 * 97)
-            colours.insert(picture.rgb[k] << 16 | picture.rgb[k + 1] << 8 | picture.rgb[k + 2]);
-        EXPECT_GE(colours.size(), 4u) << name << ": the screenshot shows a page, not a blank";
-    }
+    const std::string chromium = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                                 "--disable-background-networking --disable-component-update --disable-sync ";
+    for (int width : {1280, 1920})
+        for (const auto& [name, file] : std::map<std::string, fs::path>{{"index", out / "index.html"},
+                                                                        {"student", out / "fresnel" / "index.html"}}) {
+            const std::string tag = name + "-" + std::to_string(width);
+            fs::path shot = root / (tag + ".png");
+            std::string command = chromium + "--user-data-dir=" + (root / ("chromium-" + tag)).string() +
+                                  " --screenshot=" + shot.string() + " --window-size=" + std::to_string(width) +
+                                  ",900 'file://" + file.string() + "' > /dev/null 2>&1";
+            EXPECT_EQ(std::system(command.c_str()), 0) << command;
+            ASSERT_TRUE(fs::exists(shot)) << command;
+            EXPECT_GT(fs::file_size(shot), 1000u);
+            rl::DisplayImage picture = rl::readPng(shot.string());
+            EXPECT_EQ(picture.width, width);
+            std::set<int> colours;
+            for (std::size_t k = 0; k + 2 < picture.rgb.size() && colours.size() < 8; k += 3 * 97)
+                colours.insert(picture.rgb[k] << 16 | picture.rgb[k + 1] << 8 | picture.rgb[k + 2]);
+            EXPECT_GE(colours.size(), 4u) << tag << ": the screenshot shows a page, not a blank";
+        }
+
+    // The reason at a glance: a short one in each cell, the whole one in its tooltip.
+    EXPECT_TRUE(std::regex_search(index, std::regex("title=\"FAIL: [^\"]+\">[0-9.]+<span class=\"why\">probes "))) << index;
+    EXPECT_TRUE(contains(index, "<span class=\"why\">05-ggx.glsl:3</span>")) << "the compile error's file:line";
+    // Failures first on the student's page, the passes folded away below them.
+    std::smatch h2;
+    ASSERT_TRUE(std::regex_search(page, h2, std::regex("<h2 id=\"([^\"]+)\"")));
+    EXPECT_EQ(h2[1].str(), "07-fresnel") << "the failing exercise first";
+    EXPECT_TRUE(contains(page, "<details class=\"passed\"><summary>9 exercises passed:")) << page.substr(0, 3000);
+
+    // Layout and filter as Chromium lays the page out at 1280 px: the table, notes column included,
+    // fits the window, and typing in the filter box keeps the matching students only.
+    std::string probe = index;
+    probe.replace(probe.rfind("</body>"), 7,
+                  "<script>var t = document.getElementById('grades').getBoundingClientRect();"
+                  "var notes = document.querySelector('#grades td.notecol').getBoundingClientRect();"
+                  "document.body.setAttribute('data-fit', String(t.right <= window.innerWidth && "
+                  "notes.right <= window.innerWidth && document.documentElement.scrollWidth <= window.innerWidth));"
+                  "var box = document.getElementById('filter'); box.value = 'ggx.glsl:3';"
+                  "box.dispatchEvent(new Event('input'));"
+                  "document.body.setAttribute('data-shown', document.getElementById('shown').textContent);</script></body>");
+    writeText(out / "probe.html", probe);
+    std::string probeDom = (root / "probe-dom.html").string();
+    std::string layout = chromium + "--user-data-dir=" + (root / "chromium-probe").string() +
+                         " --window-size=1280,900 --dump-dom 'file://" + (out / "probe.html").string() + "' > " +
+                         probeDom + " 2>/dev/null";
+    EXPECT_EQ(std::system(layout.c_str()), 0) << layout;
+    std::string laidOut = readText(probeDom);
+    EXPECT_TRUE(contains(laidOut, "data-fit=\"true\"")) << "the table is wider than 1280 px: " << laidOut.substr(0, 600);
+    EXPECT_TRUE(contains(laidOut, "data-shown=\"1 shown\"")) << laidOut.substr(0, 600);
 
     // Sorting: the same page with two clicks on the Total header, as Chromium leaves the DOM.
     std::string clicked = index;
@@ -442,8 +518,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
                     "th[th.length - 3].click(); th[th.length - 3].click();</script></body>");
     writeText(out / "sorted.html", clicked);
     std::string dom = root / "sorted-dom.html";
-    std::string dump = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                       "--disable-background-networking --disable-component-update --disable-sync --user-data-dir=" +
+    std::string dump = chromium + "--user-data-dir=" +
                        (root / "chromium-dom").string() + " --dump-dom 'file://" + (out / "sorted.html").string() +
                        "' > " + dom + " 2>/dev/null";
     EXPECT_EQ(std::system(dump.c_str()), 0) << dump;
@@ -456,6 +531,38 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     if (!HasFailure()) fs::remove_all(root);
 }
 
+// Gradescope's documented results.json fields (gradescope-autograders.readthedocs.io/en/latest/specs/).
+void expectGradescopeResults(const json& results) {
+    static const std::set<std::string> top = {"score", "execution_time", "output", "output_format", "test_output_format",
+                                              "test_name_format", "visibility", "stdout_visibility", "extra_data",
+                                              "tests", "leaderboard"};
+    static const std::set<std::string> perTest = {"score", "max_score", "status", "name", "name_format", "number",
+                                                  "output", "output_format", "tags", "visibility", "extra_data"};
+    static const std::set<std::string> visibilities = {"visible", "hidden", "after_due_date", "after_published"};
+    static const std::set<std::string> formats = {"text", "html", "simple_format", "md", "ansi"};
+    for (const auto& [key, value] : results.items()) EXPECT_TRUE(top.count(key)) << "not a documented field: " << key;
+    EXPECT_TRUE(results.at("score").is_number());
+    EXPECT_TRUE(results.at("execution_time").is_number_integer());
+    EXPECT_TRUE(formats.count(results.value("output_format", "text")));
+    EXPECT_TRUE(formats.count(results.value("test_output_format", "text")));
+    EXPECT_TRUE(visibilities.count(results.value("visibility", "visible")));
+    EXPECT_TRUE(visibilities.count(results.value("stdout_visibility", "hidden")));
+    double sum = 0;
+    for (const json& t : results.at("tests")) {
+        for (const auto& [key, value] : t.items()) EXPECT_TRUE(perTest.count(key)) << "not a documented test field: " << key;
+        EXPECT_TRUE(t.at("score").is_number());
+        EXPECT_TRUE(t.at("max_score").is_number());
+        EXPECT_TRUE(t.at("status") == "passed" || t.at("status") == "failed");
+        EXPECT_TRUE(visibilities.count(t.value("visibility", "visible")));
+        EXPECT_TRUE(formats.count(t.value("output_format", "text")));
+        const std::string output = t.at("output").get<std::string>();
+        // Only results.json reaches Gradescope: no output may point at an image file.
+        EXPECT_FALSE(contains(output, ".png")) << output;
+        sum += t.at("score").get<double>();
+    }
+    EXPECT_NEAR(sum, results.at("score").get<double>(), 0.005);
+}
+
 TEST(GradeRun, GradescopeLayoutWritesResultsJson) {
     fs::path root = freshTempDir("grade_gradescope");
     auto three = solutionFiles();
@@ -466,6 +573,7 @@ TEST(GradeRun, GradescopeLayoutWritesResultsJson) {
                                   "RAYLAB_GRADESCOPE_ROOT=" + root.string());
     ASSERT_EQ(run.status, 0) << run.output;
     json results = readJson(root / "results" / "results.json");
+    expectGradescopeResults(results);
     EXPECT_DOUBLE_EQ(results.at("score").get<double>(), 26);
     ASSERT_EQ(results.at("tests").size(), 10u);
     const json& first = results["tests"][0];
@@ -485,6 +593,38 @@ TEST(GradeRun, GradescopeLayoutWritesResultsJson) {
         fs::remove_all(root);
         fs::remove_all(nothing);
     }
+}
+
+// The run_autograder of docs/grading.md, run as written in a temporary
+// folder standing in for /autograder.
+TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
+    std::string doc = readText(rl::sourceRoot() / "docs" / "grading.md");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(doc, m, std::regex("`run_autograder`:\\n\\n```bash\\n([\\s\\S]*?)```")))
+        << "docs/grading.md shows run_autograder";
+    const fs::path root = freshTempDir("gradescope_layout");
+    std::string script = std::regex_replace(m[1].str(), std::regex("/autograder"), root.string());
+    writeText(root / "run_autograder", script);
+    fs::permissions(root / "run_autograder", fs::perms::owner_all);
+    fs::create_directories(root / "source" / "build" / "bin");
+    fs::create_symlink(RAYLAB_BINARY, root / "source" / "build" / "bin" / "raylab");
+    auto three = solutionFiles();
+    for (auto it = three.begin(); it != three.end();)
+        it = it->first < "04" ? std::next(it) : three.erase(it);
+    std::vector<ZipEntry> zipped;
+    for (const auto& [name, text] : three) zipped.push_back({"raylab/exercises/" + name, text});
+    fs::create_directories(root / "submission");
+    writeZip(root / "submission" / "upload.zip", zipped);  // what a student's zip upload looks like
+    fs::create_directories(root / "results");
+    std::string command = "cd " + root.string() + " && RAYLAB_GRADESCOPE_ROOT=" + root.string() +
+                          " ./run_autograder > results/stdout 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(root / "results" / "stdout");
+    json results = readJson(root / "results" / "results.json");
+    expectGradescopeResults(results);
+    EXPECT_DOUBLE_EQ(results.at("score").get<double>(), 26);
+    EXPECT_EQ(results.at("output_format"), "text");
+    EXPECT_TRUE(contains(results.value("output", ""), "upload.zip")) << "the note says what was graded";
+    if (!HasFailure()) fs::remove_all(root);
 }
 
 TEST(GradeCli, BadArgumentsGiveOneLineAndNonZeroExit) {

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "grading/grade_run.h"
 #include "grading/grades_csv.h"
+#include "grading/gradescope_results.h"
 #include "grading/merge.h"
 #include "grading/rubric.h"
 #include "grading/safe_unzip.h"
@@ -339,4 +340,47 @@ TEST(Merge, RefusesMissingShardsDifferentRubricsAndTwiceGradedStudents) {
                 contains(merge({dir / "s1", dir / "nothing"}), "rubric.json: missing"));
     EXPECT_EQ(merge({dir / "s1", dir / "s2", dir / "s3"}), "");
     EXPECT_EQ(readText(dir / "merged" / "grades.csv").substr(0, 8), "Student,");
+}
+
+// ---- Gradescope's results.json from a rubric that asks for more ----------------------------
+
+TEST(GradescopeResults, VisibilityOutputFormatAndLeaderboardFollowTheRubric) {
+    nlohmann::json j = toJson(loadRubric(defaultRubricPath()));
+    j["gradescope"] = {{"output_format", "md"}, {"visibility", "after_published"}, {"leaderboard", true}};
+    j["exercises"][9]["visibility"] = "after_due_date";
+    j["exercises"][8]["visibility"] = "hidden";
+    Rubric r = rubricFromJson(j, "rubric.json");
+    StudentGrade g;
+    g.id = "alice";
+    g.notes = {"graded the folder exercises/ inside the submission"};
+    for (const RubricExercise& e : r.exercises) {
+        ExerciseGrade x;
+        x.report.id = e.id;
+        x.report.status = CheckStatus::Fail;
+        x.report.message = "image sphere-row: 3.00% of pixels off";
+        x.report.hint = "the probes pass but the picture differs: compare alice/images/a-got.png with ../_reference/a.png";
+        x.report.details = "  image sphere-row: 3.00% of pixels off\n    expected ../_reference/a.png\n"
+                           "    got      images/a-got.png\n    diff     images/a-diff.png\n";
+        ImageSummary image;
+        image.scene = "sphere-row";
+        image.meanLsb = 2.5;
+        image.offFraction = 0.03;
+        x.report.images = {image};
+        g.exercises.push_back(x);
+    }
+    nlohmann::json results = gradescopeResults(r, g);
+    EXPECT_EQ(results.at("output_format"), "md");
+    EXPECT_EQ(results.at("visibility"), "after_published");
+    EXPECT_EQ(results.at("tests")[9].at("visibility"), "after_due_date");
+    EXPECT_EQ(results.at("tests")[8].at("visibility"), "hidden");
+    EXPECT_EQ(results.at("tests")[0].at("visibility"), "visible");
+    ASSERT_TRUE(results.contains("leaderboard"));
+    EXPECT_EQ(results["leaderboard"][0].at("value"), results.at("score"));
+    const std::string out = results["tests"][0].at("output").get<std::string>();
+    EXPECT_FALSE(contains(out, ".png")) << "Gradescope keeps only results.json: " << out;
+    EXPECT_TRUE(contains(out, "sphere-row: 3.00% of pixels off, mean error 2.50/255")) << out;
+    EXPECT_TRUE(contains(out, "```")) << "the table stays a table in Markdown: " << out;
+    j["exercises"][0]["visibility"] = "students";
+    EXPECT_TRUE(contains(refusalOf([&] { rubricFromJson(j, "rubric.json"); }),
+                         "rubric.json: exercises[0]: \"visibility\" must be one of"));
 }

@@ -1,0 +1,232 @@
+#include "grading/lms_export.h"
+
+#include "core/error.h"
+#include "grading/atomic_file.h"
+#include "grading/grades_csv.h"
+#include "grading/roster.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace rl {
+
+namespace {
+
+std::string row(const std::vector<std::string>& fields) {
+    std::string out;
+    for (std::size_t k = 0; k < fields.size(); ++k) out += (k ? "," : "") + csvField(fields[k]);
+    return out + "\n";
+}
+
+// The assignment's header: a roster column "NAME (12345)" when there is one
+// (Canvas then matches the assignment by its id), else NAME.
+std::string canvasAssignmentHeader(const std::optional<Roster>& roster, const std::string& name) {
+    if (roster && roster->kind == Roster::Kind::Canvas) {
+        static const std::regex withId(R"(^(.*) \((\d+)\)$)");
+        for (const std::string& h : roster->headers) {
+            std::smatch m;
+            if (h == name || (std::regex_match(h, m, withId) && m[1] == name)) return h;
+        }
+    }
+    return name;
+}
+
+struct Matched {
+    const StudentGrade* grade;
+    const RosterStudent* student;  // nullptr without a roster
+};
+
+}  // namespace
+
+std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& grades, const ExportOptions& o,
+                       ExportReport& report) {
+    if (o.format != "canvas" && o.format != "moodle" && o.format != "csv")
+        throw Error("--format: expected canvas, moodle or csv, got '" + o.format + "'");
+    if (o.format == "csv") {
+        report.rows = grades.size();
+        return gradesCsv(rubric, grades);
+    }
+    if (o.moodleId != "username" && o.moodleId != "idnumber" && o.moodleId != "email")
+        throw Error("--moodle-id: expected username, idnumber or email, got '" + o.moodleId + "'");
+    std::optional<Roster> roster;
+    if (!o.roster.empty()) roster = loadRoster(o.roster);
+    if (roster && o.format == "canvas" && roster->kind != Roster::Kind::Canvas)
+        throw Error(o.roster.string() + ": a Moodle roster; the Canvas export needs Canvas's gradebook export as roster");
+    if (roster && o.format == "moodle" && roster->kind != Roster::Kind::Moodle)
+        throw Error(o.roster.string() + ": a Canvas roster; the Moodle export needs a Moodle export as roster");
+
+    std::vector<const StudentGrade*> sorted;
+    for (const StudentGrade& g : grades) sorted.push_back(&g);
+    std::sort(sorted.begin(), sorted.end(), [](const StudentGrade* a, const StudentGrade* b) { return a->id < b->id; });
+
+    // Each submission's student; a student matched twice keeps the first submission.
+    std::vector<Matched> matched;
+    std::map<const RosterStudent*, const StudentGrade*> taken;
+    for (const StudentGrade* g : sorted) {
+        if (!roster) {
+            matched.push_back({g, nullptr});
+            continue;
+        }
+        std::string why;
+        int k = matchRosterStudent(*roster, g->id, g->source, why);
+        if (k < 0) {
+            report.unmatched.push_back(g->id + ": " + why);
+            continue;
+        }
+        const RosterStudent* s = &roster->students[std::size_t(k)];
+        if (taken.count(s)) {
+            report.unmatched.push_back(g->id + ": the roster's student on line " + std::to_string(s->line) + " (" +
+                                       s->name + ") was already matched by the submission " + taken[s]->id +
+                                       "; left out");
+            continue;
+        }
+        taken[s] = g;
+        matched.push_back({g, s});
+    }
+    if (roster)
+        for (const RosterStudent& s : roster->students)
+            if (!taken.count(&s))
+                report.withoutSubmission.push_back(s.name + " (line " + std::to_string(s.line) + ")");
+
+    const std::string assignment = o.assignment.empty() ? rubric.totalColumn : o.assignment;
+    std::string text;
+    if (o.format == "canvas") {
+        std::vector<std::string> header = {"Student", "ID", "SIS User ID", "SIS Login ID", "Section",
+                                           canvasAssignmentHeader(roster, assignment)};
+        std::vector<std::string> points = {"    Points Possible", "", "", "", "", formatPoints(rubric.maxHundredths())};
+        for (const RubricExercise& e : rubric.exercises)
+            if (o.exerciseColumns) {
+                header.push_back(e.column + " Current Points");
+                points.push_back("(read only)");
+            }
+        text = row(header) + row(points);
+        for (const Matched& m : matched) {
+            std::vector<std::string> fields;
+            if (m.student) {
+                fields = {m.student->name, m.student->canvasId, m.student->sisUserId, m.student->sisLoginId,
+                          m.student->section};
+            } else {
+                LmsDownloadName n = parseLmsDownloadName(m.grade->source);
+                static const std::regex grouped(R"(^([a-z0-9]*)_(\d+)$)");
+                std::smatch g;
+                if (n.kind != LmsDownloadName::Kind::Canvas && std::regex_match(m.grade->id, g, grouped)) {
+                    n.kind = LmsDownloadName::Kind::Canvas;
+                    n.name = g[1];
+                    n.number = g[2];
+                }
+                if (n.kind != LmsDownloadName::Kind::Canvas) {
+                    report.unmatched.push_back(m.grade->id +
+                                               ": no Canvas user id in its name; give Canvas's gradebook export "
+                                               "with --roster");
+                    continue;
+                }
+                fields = {n.name, n.number, "", "", ""};
+            }
+            StudentScore s = scoreStudent(rubric, *m.grade);
+            fields.push_back(formatPoints(s.total));
+            if (o.exerciseColumns)
+                for (long h : s.hundredths) fields.push_back(formatPoints(h));
+            text += row(fields);
+            ++report.rows;
+        }
+    } else {
+        const std::string idHeader = o.moodleId == "username" ? "Username"
+                                     : o.moodleId == "idnumber" ? "ID number"
+                                                                : "Email address";
+        std::vector<std::string> header = {idHeader, assignment};
+        if (o.exerciseColumns)
+            for (const RubricExercise& e : rubric.exercises) header.push_back(e.column);
+        text = row(header);
+        for (const Matched& m : matched) {
+            std::string id;
+            if (m.student) {
+                id = o.moodleId == "username" ? m.student->username
+                     : o.moodleId == "idnumber" ? m.student->idNumber
+                                                : m.student->email;
+                if (id.empty()) {
+                    report.unmatched.push_back(m.grade->id + ": the roster has no " + idHeader + " for " +
+                                               m.student->name + " (line " + std::to_string(m.student->line) +
+                                               "); export a roster with that column, or choose another --moodle-id");
+                    continue;
+                }
+            } else {
+                if (parseLmsDownloadName(m.grade->source).kind != LmsDownloadName::Kind::None) {
+                    report.unmatched.push_back(m.grade->id + ": a Moodle download name, not a " + idHeader +
+                                               "; give a Moodle export with --roster");
+                    continue;
+                }
+                id = m.grade->id;
+            }
+            StudentScore s = scoreStudent(rubric, *m.grade);
+            std::vector<std::string> fields = {id, formatPoints(s.total)};
+            if (o.exerciseColumns)
+                for (long h : s.hundredths) fields.push_back(formatPoints(h));
+            text += row(fields);
+            ++report.rows;
+        }
+        if (!roster)
+            report.notes.push_back("no --roster: the ids were not checked; Moodle stops the whole import at the first "
+                                   "id it does not know");
+    }
+    return text;
+}
+
+ExportReport exportGrades(const fs::path& out, const ExportOptions& options) {
+    std::error_code ec;
+    if (!fs::is_regular_file(out / "summary.json", ec) || !fs::is_regular_file(out / "rubric.json", ec))
+        throw Error(out.string() + ": not the output of a finished `raylab grade` (no summary.json or rubric.json)");
+    nlohmann::json summary, rubricJson;
+    try {
+        summary = nlohmann::json::parse(readWholeFile(out / "summary.json"));
+        rubricJson = nlohmann::json::parse(readWholeFile(out / "rubric.json"));
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(out.string() + ": summary.json or rubric.json is not valid JSON (" + e.what() + ")");
+    }
+    Rubric rubric = rubricFromJson(rubricJson, (out / "rubric.json").string());
+    std::vector<StudentGrade> grades;
+    for (const std::string& id : summary.value("student_ids", std::vector<std::string>{})) {
+        std::optional<StudentGrade> g = loadStudentGrade(out, id);
+        if (!g) throw Error(gradeRecordPath(out, id).string() + ": missing or unreadable");
+        grades.push_back(*g);
+    }
+    ExportReport report;
+    std::string text = exportText(rubric, grades, options, report);
+    report.file = !options.output.empty()      ? options.output
+                  : options.format == "csv" ? out / "grades.csv"
+                                            : out / ("grades-" + options.format + ".csv");
+    writeFileAtomic(report.file, text);
+    if (options.format != "csv") {
+        // The same lines as on the terminal, kept beside the file for a batch run's instructor.
+        std::ostringstream lines;
+        printExportReport(report, options.format, lines);
+        fs::path beside = report.file;
+        beside.replace_extension(".report.txt");
+        writeFileAtomic(beside, lines.str());
+    }
+    return report;
+}
+
+void printExportReport(const ExportReport& report, const std::string& format, std::ostream& log) {
+    log << format << " export: " << report.rows << " student" << (report.rows == 1 ? "" : "s") << " in "
+        << report.file.string() << "\n";
+    if (!report.unmatched.empty()) {
+        log << report.unmatched.size() << " submission" << (report.unmatched.size() == 1 ? "" : "s")
+            << " left out of the export (fix them before importing):\n";
+        for (const std::string& u : report.unmatched) log << "  " << u << "\n";
+    }
+    if (!report.withoutSubmission.empty()) {
+        log << report.withoutSubmission.size() << " student" << (report.withoutSubmission.size() == 1 ? "" : "s")
+            << " of the roster without a submission (not in the export):\n";
+        for (const std::string& s : report.withoutSubmission) log << "  " << s << "\n";
+    }
+    for (const std::string& n : report.notes) log << "note: " << n << "\n";
+}
+
+}  // namespace rl
