@@ -112,6 +112,17 @@ double exitDistance(const Sphere& s, dvec3 p, dvec3 dir) {
     return std::max(-2.0 * glm::dot(p - s.center, dir), 0.0);
 }
 
+// Sphere i has the surface of sphere `left`, the one a ray leaves: it is that
+// sphere or an identical one (same centre and radius; the first of them wins
+// a camera ray's hit). Both are handled exactly.
+bool sameSurface(const Scene& scene, int i, int left) {
+    if (i == left) return true;
+    if (left < 0) return false;
+    const Sphere& a = scene.spheres[size_t(i)];
+    const Sphere& b = scene.spheres[size_t(left)];
+    return a.center == b.center && a.radius == b.radius;
+}
+
 }  // namespace
 
 // ---- visibility ------------------------------------------------------------------
@@ -138,27 +149,27 @@ bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
     int nearestSphere = -1;
     double nearest = std::numeric_limits<double>::infinity();
     bool nearestInside = false;
-    // The sphere the ray leaves: from outside it is behind the ray for good;
-    // from inside the ray meets it again at its exit distance, from p.
-    if (from.inside) {
-        nearest = exitDistance(scene.spheres[size_t(from.sphere)], from.p, dir);
-        nearestSphere = from.sphere;
-        nearestInside = true;
-    }
-    // Every other sphere, from p pushed past its rounding error along n.
-    dvec3 origin = from.p + from.n * from.error;
+    dvec3 origin = from.p + from.n * from.error;  // for the other spheres: p pushed past its rounding error
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
-        if (i == from.sphere) continue;
         double t;
         bool inside;
-        if (nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside) && t < nearest) {
+        if (sameSurface(scene, i, from.sphere)) {
+            // The sphere the ray leaves: from outside it is behind the ray for
+            // good; from inside the ray meets it again at its exit distance.
+            if (!from.inside) continue;
+            t = exitDistance(scene.spheres[size_t(i)], from.p, dir);
+            inside = true;
+        } else if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) {
+            continue;
+        }
+        if (t < nearest) {
             nearest = t;
             nearestSphere = i;
             nearestInside = inside;
         }
     }
     if (nearestSphere < 0) return false;
-    dvec3 start = nearestSphere == from.sphere ? from.p : origin;
+    dvec3 start = sameSurface(scene, nearestSphere, from.sphere) ? from.p : origin;
     out = makeHit(scene, nearestSphere, nearest, nearestInside, start, dir);
     return true;
 }
@@ -180,8 +191,9 @@ bool lightVisible(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
 }
 
 bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
-    // The sphere of the hit: only from inside, where the ray crosses it at its
-    // exit distance (beyond the light when the light is inside it too).
+    // The sphere of the hit (and any identical one): only from inside, where
+    // the ray crosses it at its exit distance (beyond the light when the light
+    // is inside it too).
     if (hit.inside) {
         dvec3 toLight = lightPosition - hit.p;
         double distance = glm::length(toLight);
@@ -194,7 +206,7 @@ bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
     if (distance == 0.0) return true;
     dvec3 dir = toLight / distance;
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
-        if (i == hit.sphere) continue;
+        if (sameSurface(scene, i, hit.sphere)) continue;
         const Sphere& s = scene.spheres[size_t(i)];
         double t0, t1;
         if (!sphereRoots(origin, dir, s.center, s.radius, t0, t1)) continue;

@@ -32,10 +32,12 @@ struct Hit {
 // sphere's surface on the outside cannot meet that sphere again (it is
 // convex), and one that leaves it on the inside meets it once more, at its
 // far root t = -2 (p - centre).w (the near root is 0). Secondary rays are
-// therefore traced with the sphere they leave handled exactly, never behind
-// an offset; the other spheres see the origin pushed along n by Hit::error,
-// a bound on double rounding (a few 1e-16 of the scene's size), which keeps
-// two coincident surfaces apart and changes no pixel.
+// therefore traced with the sphere they leave (and any identical one)
+// handled exactly, never behind an offset; the other spheres see the origin
+// pushed along n by Hit::error, a bound on double rounding (4e-15 of the
+// scene's size), so that a surface within rounding of the one left (a copy
+// of a sphere whose centre rounded differently) does not shadow it; it
+// changes no pixel.
 // This is the reference's own geometry, independent of the GLSL.
 
 // Nearest sphere hit with t > 0 along the unit direction dir from a point

@@ -59,6 +59,18 @@ class Oracle {
 public:
     explicit Oracle(const Scene& scene) : scene_(scene) {}
 
+    // Sphere i has the surface of sphere `left` (the one a ray leaves): the
+    // same sphere, or an identical one (same centre and radius, which
+    // scenes/hard/overlapping.json has). Its surface passes through the ray
+    // origin exactly, so it is handled exactly too: with no offset its
+    // rounded root near 0 would decide, at random, whether it occludes.
+    bool sameSurface(int i, int left) const {
+        if (left < 0) return false;
+        const Sphere& a = scene_.spheres[size_t(i)];
+        const Sphere& b = scene_.spheres[size_t(left)];
+        return i == left || (a.center == b.center && a.radius == b.radius);
+    }
+
     // Nearest hit from o along unit d, `leaving` the sphere of `from` (or none).
     bool trace(V o, V d, const OracleHit* from, OracleHit& out) const {
         Real nearest = std::numeric_limits<Real>::infinity();
@@ -66,7 +78,7 @@ public:
         bool inside = false;
         for (int i = 0; i < int(scene_.spheres.size()); ++i) {
             const Sphere& s = scene_.spheres[size_t(i)];
-            if (from && i == from->sphere) {
+            if (from && sameSurface(i, from->sphere)) {
                 if (!from->inside) continue;  // leaving the outside of a convex body: never again
                 Real exit = std::max<Real>(-2 * dot(o - widen(s.center), d), 0);  // roots 0 and -2 f.d
                 if (exit < nearest) nearest = exit, sphere = i, inside = true;
@@ -94,7 +106,7 @@ public:
         V d = (1 / distance) * toLight;
         for (int i = 0; i < int(scene_.spheres.size()); ++i) {
             const Sphere& s = scene_.spheres[size_t(i)];
-            if (i == hit.sphere) {
+            if (sameSurface(i, hit.sphere)) {
                 if (hit.inside && -2 * dot(hit.p - widen(s.center), d) < distance) return false;
                 continue;
             }

@@ -252,12 +252,16 @@ TEST(NextHit, HitPointIsOnTheSphereWhateverTheRayOrigin) {
 }
 
 TEST(NextHit, CoincidentSpheresDoNotShadowEachOther) {
-    // Two identical spheres (the first wins the hit): the second's surface
-    // passes through p, up to rounding. The rounding-sized push along n keeps
-    // a ray leaving the outside from meeting it at t = 1e-16.
+    // Two identical spheres (the first wins the hit), and a copy whose centre
+    // rounded 2 ulps away (4.4e-16, as a transformed copy's may): their
+    // surfaces pass through p, up to rounding. The identical one is handled
+    // exactly, like the sphere the ray leaves; the near copy is kept off by
+    // the rounding-sized push along n (Hit::error = 3.6e-15 here), so a ray
+    // leaving the outside does not meet it at t = 1e-16.
     Scene scene;
     scene.spheres.push_back(makeSphere(dvec3(0.3, -0.2, 0.1), 0.7, Material{}));
     scene.spheres.push_back(scene.spheres[0]);
+    scene.spheres.push_back(makeSphere(dvec3(0.3 + 2 * std::ldexp(1.0, -54), -0.2, 0.1), 0.7, Material{}));
     scene.lights = {makeLight(dvec3(0.3, 5, 0.1), 10)};
     for (double x : {-0.3, -0.1, 0.0, 0.37, 0.6, 0.9}) {
         Hit hit;
