@@ -69,14 +69,15 @@ struct Tally {
     }
     double offFraction() const { return pixels > 0 ? off / pixels : 0; }
     double meanLsb() const { return pixels > 0 ? sumLsb / pixels : 0; }
-    std::string summary() const {
+    // One line; with `worstScenes`, the 8 worst pictures below it.
+    std::string summary(bool worstScenes = false) const {
         char text[240];
         std::snprintf(text, sizeof text, "off %.4f%% mean %.4f/255 over %.0f pixels; %d pictures with pixels off, %d over the %.0f%% cap",
                       100 * offFraction(), meanLsb(), pixels, scenesOff, overCap, 100 * kPerSceneCap);
         std::vector<std::pair<double, std::string>> w = worst;
         std::sort(w.rbegin(), w.rend());
         std::string out = text;
-        for (std::size_t k = 0; k < w.size() && k < 8; ++k) out += "\n    " + w[k].second;
+        for (std::size_t k = 0; worstScenes && k < w.size() && k < 8; ++k) out += "\n    " + w[k].second;
         return out;
     }
 };
@@ -106,7 +107,7 @@ TEST_P(ReferenceTruth, RandomScenes) {
                   describeScene(std::uint64_t(seed), scene) + ", " + what);
     }
     std::printf("[ measured ] reference vs offset-free, %s: %s\n", transformName(GetParam()).c_str(),
-                tally.summary().c_str());
+                tally.summary(true).c_str());
     EXPECT_EQ(tally.nonFinite, 0);
     EXPECT_LE(tally.offFraction(), kReferenceOffBudget) << tally.summary();
     EXPECT_EQ(tally.overCap, 0) << tally.summary();
@@ -129,7 +130,7 @@ TEST_P(GlslVsReference, RandomScenes) {
         tally.add(compareRenderings(got, expected), scene.render.width, scene.render.height,
                   describeScene(std::uint64_t(seed), scene) + ", " + what);
     }
-    std::printf("[ measured ] GLSL vs reference, %s: %s\n", transformName(GetParam()).c_str(), tally.summary().c_str());
+    std::printf("[ measured ] GLSL vs reference, %s: %s\n", transformName(GetParam()).c_str(), tally.summary(true).c_str());
     EXPECT_EQ(tally.nonFinite, 0);
     EXPECT_LE(tally.offFraction(), kGlslOffBudget) << tally.summary();
     EXPECT_LT(tally.meanLsb(), kGlslMeanBudget) << tally.summary();
