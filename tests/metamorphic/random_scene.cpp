@@ -414,8 +414,10 @@ Scene transformed(const Scene& scene, Transform t, std::uint64_t seed, std::stri
             break;
         }
         case Transform::FartherCamera: {
-            out = fartherCamera(scene, 1000.0);
-            std::snprintf(text, sizeof text, "camera 1000x farther, fov %.3g deg", out.camera.fovYDegrees);
+            double factor = std::min(1000.0, std::tan(0.5 * scene.camera.fovYDegrees * kPi / 180) /
+                                                 std::tan(0.5 * kMinFartherFovDegrees * kPi / 180));
+            out = fartherCamera(scene, factor);
+            std::snprintf(text, sizeof text, "camera %.4gx farther, fov %.3g deg", factor, out.camera.fovYDegrees);
             break;
         }
     }

@@ -59,9 +59,18 @@ std::string transformName(Transform t);
 inline void PrintTo(Transform t, std::ostream* out) { *out << transformName(t); }  // gtest messages
 // Applies t with parameters drawn from `seed` (scale 10^u, u uniform in
 // [-6, 6]; translation of length 10^u, u in [0, 6], in a random direction;
-// a random rotation; the camera 1000 times farther). `what` receives a
+// a random rotation; the camera 1000 times farther, or less where the field
+// of view would fall below kMinFartherFovDegrees). `what` receives a
 // description of the parameters ("scale 3.2e-05").
 Scene transformed(const Scene& scene, Transform t, std::uint64_t seed, std::string* what = nullptr);
+
+// The narrowest field of view the farther camera goes to: 0.02 degrees, 9.7e-6
+// rad per pixel of a 36-pixel-high picture. The distant-camera scenes start
+// at 0.05 to 0.34 degrees; 1000 times narrower, a pixel would be 1e-8 to 7e-8
+// rad, under the 6e-8 to which float32 resolves a unit vector's component:
+// no float32 shader could frame that picture. They move 2.5 to 17 times
+// farther; every other scene (35 to 65 degrees) the full 1000 times.
+constexpr double kMinFartherFovDegrees = 0.02;
 // True when t keeps the picture (all but FartherCamera).
 bool keepsPicture(Transform t);
 
