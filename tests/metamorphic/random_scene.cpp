@@ -101,7 +101,7 @@ template <class Draw>
 bool placeCamera(Scene& scene, Random& rng, dvec3 target, Draw draw, double clearance, int enclosure = -1) {
     for (int attempt = 0; attempt < 200; ++attempt) {
         dvec3 p = draw();
-        bool ok = glm::length(target - p) > 1.0;
+        bool ok = glm::length(target - p) > 0.5;
         for (int i = 0; i < int(scene.spheres.size()) && ok; ++i) {
             const Sphere& s = scene.spheres[size_t(i)];
             ok = surfaceDistance(p, s) >= clearance && (i == enclosure || !insideSphere(p, s));
@@ -148,9 +148,10 @@ dvec3 clusterCentre(Random& rng, const std::vector<Sphere>& placed, double r, do
 Scene clusterScene(Random& rng) {
     Scene scene;
     int count = fewToMany(rng, 64);
+    double spread = 0.6 + 0.6 * std::cbrt(double(count));  // free spheres in [-spread, spread]^3: denser when few
     for (int k = 0; k < count; ++k) {
         double r = rng.range(0.15, 1.2);
-        scene.spheres.push_back(sphere(clusterCentre(rng, scene.spheres, r, 3.0), r, randomMaterial(rng)));
+        scene.spheres.push_back(sphere(clusterCentre(rng, scene.spheres, r, spread), r, randomMaterial(rng)));
     }
     int lights = rng.chance(0.1) ? 0 : fewToMany(rng, 16);
     for (int k = 0; k < lights; ++k)
@@ -291,8 +292,9 @@ Scene distantCameraScene(Random& rng) {
         d.y *= 0.5;
         return distance * glm::normalize(d);
     }, 1.0);
-    // Frame a square of half-height 1.3 to 3 at the target: fov 0.05 to 0.34 degrees.
-    scene.camera.fovYDegrees = 2 * std::atan(rng.range(1.3, 3.0) / distance) * 180 / kPi;
+    // Frame a half-height of 1.1 to 2 at the target (the unit sphere fills
+    // 15% to 50% of the picture): fov 0.04 to 0.23 degrees.
+    scene.camera.fovYDegrees = 2 * std::atan(rng.range(1.1, 2.0) / distance) * 180 / kPi;
     return scene;
 }
 
@@ -337,9 +339,16 @@ Scene randomScene(std::uint64_t seed) {
     }
     if (kind == SceneKind::FacingMirrors) scene.render.maxBounces = rng.integer(4, 8);
     if (kind == SceneKind::Cluster) {
-        // A camera outside the cluster, looking at it.
-        placeCamera(scene, rng, dvec3(rng.range(-1, 1), rng.range(-1, 1), rng.range(-1, 1)),
-                    [&] { return rng.range(8, 14) * rng.unitVector(); }, 0.3);
+        // A camera outside the cluster, looking at its centre from where the
+        // cluster's bounding sphere fills 70% to 110% of the picture's height.
+        dvec3 centre(0.0);
+        for (const Sphere& s : scene.spheres) centre += s.center / double(scene.spheres.size());
+        double extent = 0;
+        for (const Sphere& s : scene.spheres) extent = std::max(extent, glm::length(s.center - centre) + s.radius);
+        double fov = rng.range(35, 65);
+        double distance = std::max(extent / std::sin(0.5 * fov * kPi / 180) * rng.range(0.9, 1.4), extent + 0.5);
+        placeCamera(scene, rng, centre, [&] { return centre + distance * rng.unitVector(); }, 0.3);
+        scene.camera.fovYDegrees = fov;
     }
     scene.sourcePath = "<random " + std::to_string(seed) + ">";
     return scene;

@@ -30,7 +30,7 @@ enum class SceneKind {
     TouchingRows,    // 12-32 touching spheres on a ground, 6 lights, spp 4, no bounces
     Enclosed,        // the camera inside a closed sphere (sometimes a mirror) with spheres and lights in it
     FacingMirrors,   // two or more mirrors facing each other, up to 8 bounces
-    DistantCamera,   // a few spheres seen from 1e3 to 3e3 away through a field of view under 0.5 degrees
+    DistantCamera,   // a few spheres seen from 1e3 to 3e3 away through a field of view of 0.04 to 0.23 degrees
 };
 std::string kindName(SceneKind kind);
 
@@ -66,9 +66,9 @@ Scene transformed(const Scene& scene, Transform t, std::uint64_t seed, std::stri
 
 // The narrowest field of view the farther camera goes to: 0.02 degrees, 9.7e-6
 // rad per pixel of a 36-pixel-high picture. The distant-camera scenes start
-// at 0.05 to 0.34 degrees; 1000 times narrower, a pixel would be 1e-8 to 7e-8
-// rad, under the 6e-8 to which float32 resolves a unit vector's component:
-// no float32 shader could frame that picture. They move 2.5 to 17 times
+// at 0.04 to 0.23 degrees; 1000 times narrower, a pixel would be 2e-8 to 1e-7
+// rad, about the 6e-8 to which float32 resolves a unit vector's component:
+// no float32 shader could frame that picture. They move 2 to 12 times
 // farther; every other scene (35 to 65 degrees) the full 1000 times.
 constexpr double kMinFartherFovDegrees = 0.02;
 // True when t keeps the picture (all but FartherCamera).

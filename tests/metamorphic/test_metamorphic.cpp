@@ -188,6 +188,34 @@ TEST(RandomScenes, AreSeededAndCoverWhatTheIssueAsks) {
     EXPECT_GE(biggest, 5e4);  // a ground of radius 1e5 occurs
 }
 
+TEST(RandomScenes, FrameTheirSpheres) {
+    // A scene whose camera sees only the background tests nothing: in every
+    // scene at least 5% of the camera rays (one per pixel, 86 of 1728) hit a
+    // sphere (a sparse cluster of a few small spheres covers less than 10%).
+    int fewest = 100, median = 0;
+    std::vector<int> shares;
+    for (int seed = 0; seed < kRandomScenes; ++seed) {
+        Scene s = randomScene(std::uint64_t(seed));
+        ref::CameraBasis camera = ref::cameraBasis(s.camera);
+        glm::dvec2 resolution(s.render.width, s.render.height);
+        int hits = 0;
+        for (int j = 0; j < s.render.height; ++j)
+            for (int i = 0; i < s.render.width; ++i) {
+                glm::dvec3 d = ref::cameraRayDirection(glm::dvec2(i + 0.5, j + 0.5), resolution, camera.fovYRadians,
+                                                       camera.right, camera.up, camera.forward);
+                ref::Hit hit;
+                hits += ref::closestHit(s, camera.position, d, hit);
+            }
+        int share = 100 * hits / (s.render.width * s.render.height);
+        shares.push_back(share);
+        EXPECT_GE(share, 5) << describeScene(std::uint64_t(seed), s);
+    }
+    std::sort(shares.begin(), shares.end());
+    fewest = shares.front();
+    median = shares[shares.size() / 2];
+    std::printf("[ measured ] camera rays that hit a sphere: fewest %d%%, median %d%%\n", fewest, median);
+}
+
 TEST(RandomScenes, TransformsKeepTheScenesMeaning) {
     // Scaling by s scales intensities by s^2 (irradiance C I / d^2 unchanged);
     // rotation keeps distances; the farther camera frames the same rectangle.
