@@ -64,12 +64,26 @@ bool sphereRoots(dvec3 origin, dvec3 dir, dvec3 centre, double radius, double& t
     return true;
 }
 
+// Sphere i has the surface of sphere `left`, the one a ray leaves: it is that
+// sphere or an identical one (same centre and radius; the first of them wins
+// a camera ray's hit). Both are handled exactly. `twins`: whether `left` has
+// an identical sphere at all (Hit::hasTwin, found where the two tie for the
+// nearest hit), which spares the comparison in the inner loops.
+bool identicalSpheres(const Scene& scene, int i, int j) {
+    const Sphere& a = scene.spheres[size_t(i)];
+    const Sphere& b = scene.spheres[size_t(j)];
+    return a.radius == b.radius && a.center == b.center;
+}
+inline bool sameSurface(const Scene& scene, int i, int left, bool twins) {
+    return i == left || (twins && left >= 0 && identicalSpheres(scene, i, left));
+}
+
 // The hit at distance t along the ray on sphere `index`, met from inside or
 // not: p reprojected onto the sphere (pbrt-v4 section 6.8.5), so that its
 // error is bounded by the sphere's size whatever the ray origin and t (a
 // camera 3000 away would otherwise put 3000 x 1e-16 into p), and the normal
 // of unit length by construction.
-Hit makeHit(const Scene& scene, int index, double t, bool inside, dvec3 origin, dvec3 dir) {
+Hit makeHit(const Scene& scene, int index, double t, bool inside, bool hasTwin, dvec3 origin, dvec3 dir) {
     const Sphere& s = scene.spheres[size_t(index)];
     Hit hit;
     hit.t = t;
@@ -84,6 +98,7 @@ Hit makeHit(const Scene& scene, int index, double t, bool inside, dvec3 origin, 
     hit.n = inside ? -u : u;
     hit.magnitude = std::max(maxAbs(hit.p), maxAbs(s.center) + s.radius);
     hit.error = kHitErrorRelative * (maxAbs(s.center) + s.radius);
+    hit.hasTwin = hasTwin;
     return hit;
 }
 
@@ -112,17 +127,6 @@ double exitDistance(const Sphere& s, dvec3 p, dvec3 dir) {
     return std::max(-2.0 * glm::dot(p - s.center, dir), 0.0);
 }
 
-// Sphere i has the surface of sphere `left`, the one a ray leaves: it is that
-// sphere or an identical one (same centre and radius; the first of them wins
-// a camera ray's hit). Both are handled exactly.
-bool sameSurface(const Scene& scene, int i, int left) {
-    if (i == left) return true;
-    if (left < 0) return false;
-    const Sphere& a = scene.spheres[size_t(i)];
-    const Sphere& b = scene.spheres[size_t(left)];
-    return a.center == b.center && a.radius == b.radius;
-}
-
 }  // namespace
 
 // ---- visibility ------------------------------------------------------------------
@@ -131,17 +135,22 @@ bool closestHit(const Scene& scene, dvec3 origin, dvec3 dir, Hit& out) {
     int nearestSphere = -1;
     double nearest = std::numeric_limits<double>::infinity();
     bool nearestInside = false;
+    bool twin = false;  // an identical sphere ties with the nearest (the same inputs give the same t)
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
         double t;
         bool inside;
-        if (nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside) && t < nearest) {
+        if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) continue;
+        if (t < nearest) {
             nearest = t;
             nearestSphere = i;
             nearestInside = inside;
+            twin = false;
+        } else if (t == nearest) {
+            twin = twin || identicalSpheres(scene, i, nearestSphere);
         }
     }
     if (nearestSphere < 0) return false;
-    out = makeHit(scene, nearestSphere, nearest, nearestInside, origin, dir);
+    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, origin, dir);
     return true;
 }
 
@@ -149,11 +158,12 @@ bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
     int nearestSphere = -1;
     double nearest = std::numeric_limits<double>::infinity();
     bool nearestInside = false;
+    bool twin = false;  // as in closestHit()
     dvec3 origin = from.p + from.n * from.error;  // for the other spheres: p pushed past its rounding error
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
         double t;
         bool inside;
-        if (sameSurface(scene, i, from.sphere)) {
+        if (sameSurface(scene, i, from.sphere, from.hasTwin)) {
             // The sphere the ray leaves: from outside it is behind the ray for
             // good; from inside the ray meets it again at its exit distance.
             if (!from.inside) continue;
@@ -166,11 +176,14 @@ bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
             nearest = t;
             nearestSphere = i;
             nearestInside = inside;
+            twin = false;
+        } else if (t == nearest) {
+            twin = twin || identicalSpheres(scene, i, nearestSphere);
         }
     }
     if (nearestSphere < 0) return false;
-    dvec3 start = sameSurface(scene, nearestSphere, from.sphere) ? from.p : origin;
-    out = makeHit(scene, nearestSphere, nearest, nearestInside, start, dir);
+    dvec3 start = sameSurface(scene, nearestSphere, from.sphere, from.hasTwin) ? from.p : origin;
+    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, start, dir);
     return true;
 }
 
@@ -206,7 +219,7 @@ bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
     if (distance == 0.0) return true;
     dvec3 dir = toLight / distance;
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
-        if (sameSurface(scene, i, hit.sphere)) continue;
+        if (sameSurface(scene, i, hit.sphere, hit.hasTwin)) continue;
         const Sphere& s = scene.spheres[size_t(i)];
         double t0, t1;
         if (!sphereRoots(origin, dir, s.center, s.radius, t0, t1)) continue;

@@ -24,6 +24,7 @@ struct Hit {
     int sphere = -1;        // index into Scene::spheres
     bool inside = false;    // the ray met the sphere from inside (its far root): n = -u
     double error = 0;       // bound on the distance of p from the true surface (double rounding only)
+    bool hasTwin = false;   // another sphere has the same centre and radius (the same surface)
 };
 
 // ---- visibility ------------------------------------------------------------------
