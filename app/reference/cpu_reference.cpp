@@ -27,6 +27,106 @@ double maxAbs(dvec3 v) {
     return std::max(a.x, std::max(a.y, a.z));
 }
 
+// Unit roundoff of double, 2^-53.
+constexpr double kUnitRoundoff = 1.0 / 9007199254740992.0;
+
+// Hit::error relative to maxAbs(centre) + radius: 2^-48 = 32 unit roundoffs.
+// The reprojected p = centre + radius u (u = normalize(p0 - centre)) is off
+// the true surface by at most |u| - 1 (about 3 roundoffs of normalize)
+// times the radius plus the rounding of the sum (1 roundoff of
+// maxAbs(centre) + radius per component, sqrt(3) in length): under 6
+// roundoffs of maxAbs(centre) + radius (pbrt-v4 section 6.8.5 bounds the
+// same reprojection by gamma(5) |p|). 32 leaves a factor 5 for deciding
+// another sphere's inside from that origin, and is still 4e-15 of the
+// scene's size: no contact shadow or silhouette moves by a pixel.
+constexpr double kHitErrorRelative = 32.0 * kUnitRoundoff;
+
+// The two roots t0 <= t1 of |origin + t dir - centre| = radius for a unit
+// dir, in the numerically stable form (Haines et al. 2019, Ray Tracing Gems
+// ch. 7): f = origin - centre, b = f.dir, disc = r^2 - |f - b dir|^2,
+// c = |f|^2 - r^2, q = -b - sign(b) sqrt(disc), roots c/q and q.
+// False when the line misses the sphere.
+bool sphereRoots(dvec3 origin, dvec3 dir, dvec3 centre, double radius, double& t0, double& t1) {
+    dvec3 f = origin - centre;
+    double b = glm::dot(f, dir);
+    dvec3 perpendicular = f - b * dir;  // centre to the line's closest point
+    double discriminant = radius * radius - glm::dot(perpendicular, perpendicular);
+    if (discriminant < 0.0) return false;
+    double c = glm::dot(f, f) - radius * radius;
+    double q = -b - (b >= 0.0 ? 1.0 : -1.0) * std::sqrt(discriminant);  // sign(0) = +1 keeps both roots
+    if (q == 0.0) {  // origin on the surface, line tangent: one double root at 0
+        t0 = t1 = 0.0;
+        return true;
+    }
+    t0 = c / q;
+    t1 = q;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+// Sphere i has the surface of sphere `left`, the one a ray leaves: it is that
+// sphere or an identical one (same centre and radius; the first of them wins
+// a camera ray's hit). Both are handled exactly. `twins`: whether `left` has
+// an identical sphere at all (Hit::hasTwin, found where the two tie for the
+// nearest hit), which spares the comparison in the inner loops.
+bool identicalSpheres(const Scene& scene, int i, int j) {
+    const Sphere& a = scene.spheres[size_t(i)];
+    const Sphere& b = scene.spheres[size_t(j)];
+    return a.radius == b.radius && a.center == b.center;
+}
+inline bool sameSurface(const Scene& scene, int i, int left, bool twins) {
+    return i == left || (twins && left >= 0 && identicalSpheres(scene, i, left));
+}
+
+// The hit at distance t along the ray on sphere `index`, met from inside or
+// not: p reprojected onto the sphere (pbrt-v4 section 6.8.5), so that its
+// error is bounded by the sphere's size whatever the ray origin and t (a
+// camera 3000 away would otherwise put 3000 x 1e-16 into p), and the normal
+// of unit length by construction.
+Hit makeHit(const Scene& scene, int index, double t, bool inside, bool hasTwin, dvec3 origin, dvec3 dir) {
+    const Sphere& s = scene.spheres[size_t(index)];
+    Hit hit;
+    hit.t = t;
+    hit.sphere = index;
+    hit.inside = inside;
+    dvec3 radial = origin + t * dir - s.center;
+    double length = glm::length(radial);
+    // radial = 0 only for a sphere whose radius underflows next to its centre:
+    // the normal that faces the ray is then -dir.
+    dvec3 u = length > 0.0 ? radial / length : (inside ? dir : -dir);
+    hit.p = s.center + s.radius * u;
+    hit.n = inside ? -u : u;
+    hit.magnitude = std::max(maxAbs(hit.p), maxAbs(s.center) + s.radius);
+    hit.error = kHitErrorRelative * (maxAbs(s.center) + s.radius);
+    hit.hasTwin = hasTwin;
+    return hit;
+}
+
+// The nearest t > 0 of sphere i along the ray, and from which side, or false.
+bool nearestRoot(const Sphere& s, dvec3 origin, dvec3 dir, double& t, bool& inside) {
+    double t0, t1;
+    if (!sphereRoots(origin, dir, s.center, s.radius, t0, t1)) return false;
+    if (t0 > 0.0) {  // the near root is ahead: the ray comes from outside
+        t = t0;
+        inside = false;
+        return true;
+    }
+    if (t1 > 0.0) {  // the near root is behind: the origin is inside, the far root ahead
+        t = t1;
+        inside = true;
+        return true;
+    }
+    return false;
+}
+
+// Exit distance of the ray that leaves sphere s's surface at p into it
+// (unit dir, dir.(p - centre) <= 0): the roots are 0 and -2 (p - centre).dir.
+// Never below 0: a ray inside a closed sphere cannot miss it (a rounded
+// tangent direction meets it again at p itself).
+double exitDistance(const Sphere& s, dvec3 p, dvec3 dir) {
+    return std::max(-2.0 * glm::dot(p - s.center, dir), 0.0);
+}
+
 }  // namespace
 
 // ---- visibility ------------------------------------------------------------------
@@ -34,23 +134,56 @@ double maxAbs(dvec3 v) {
 bool closestHit(const Scene& scene, dvec3 origin, dvec3 dir, Hit& out) {
     int nearestSphere = -1;
     double nearest = std::numeric_limits<double>::infinity();
+    bool nearestInside = false;
+    bool twin = false;  // an identical sphere ties with the nearest (the same inputs give the same t)
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
-        const Sphere& s = scene.spheres[i];
-        double t = intersectSphere(origin, dir, s.center, s.radius);
-        if (t > 0.0 && t < nearest) {
+        double t;
+        bool inside;
+        if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) continue;
+        if (t < nearest) {
             nearest = t;
             nearestSphere = i;
+            nearestInside = inside;
+            twin = false;
+        } else if (t == nearest) {
+            twin = twin || identicalSpheres(scene, i, nearestSphere);
         }
     }
     if (nearestSphere < 0) return false;
+    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, origin, dir);
+    return true;
+}
 
-    const Sphere& s = scene.spheres[nearestSphere];
-    out.t = nearest;
-    out.p = origin + nearest * dir;
-    out.n = (out.p - s.center) / s.radius;
-    if (glm::dot(out.n, dir) > 0.0) out.n = -out.n;  // hit from inside: face the ray
-    out.magnitude = std::max(maxAbs(out.p), maxAbs(s.center) + s.radius);
-    out.sphere = nearestSphere;
+bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
+    int nearestSphere = -1;
+    double nearest = std::numeric_limits<double>::infinity();
+    bool nearestInside = false;
+    bool twin = false;  // as in closestHit()
+    dvec3 origin = from.p + from.n * from.error;  // for the other spheres: p pushed past its rounding error
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        double t;
+        bool inside;
+        if (sameSurface(scene, i, from.sphere, from.hasTwin)) {
+            // The sphere the ray leaves: from outside it is behind the ray for
+            // good; from inside the ray meets it again at its exit distance.
+            if (!from.inside) continue;
+            t = exitDistance(scene.spheres[size_t(i)], from.p, dir);
+            inside = true;
+        } else if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) {
+            continue;
+        }
+        if (t < nearest) {
+            nearest = t;
+            nearestSphere = i;
+            nearestInside = inside;
+            twin = false;
+        } else if (t == nearest) {
+            twin = twin || identicalSpheres(scene, i, nearestSphere);
+        }
+    }
+    if (nearestSphere < 0) return false;
+    dvec3 start = sameSurface(scene, nearestSphere, from.sphere, from.hasTwin) ? from.p : origin;
+    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, start, dir);
     return true;
 }
 
@@ -70,6 +203,32 @@ bool lightVisible(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
     return !anyHitBefore(scene, origin, toLight / distance, distance);
 }
 
+bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
+    // The sphere of the hit (and any identical one): only from inside, where
+    // the ray crosses it at its exit distance (beyond the light when the light
+    // is inside it too).
+    if (hit.inside) {
+        dvec3 toLight = lightPosition - hit.p;
+        double distance = glm::length(toLight);
+        if (distance == 0.0) return true;  // the light on p: nothing in between
+        if (exitDistance(scene.spheres[size_t(hit.sphere)], hit.p, toLight / distance) < distance) return false;
+    }
+    dvec3 origin = hit.p + hit.n * hit.error;
+    dvec3 toLight = lightPosition - origin;
+    double distance = glm::length(toLight);
+    if (distance == 0.0) return true;
+    dvec3 dir = toLight / distance;
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        if (sameSurface(scene, i, hit.sphere, hit.hasTwin)) continue;
+        const Sphere& s = scene.spheres[size_t(i)];
+        double t0, t1;
+        if (!sphereRoots(origin, dir, s.center, s.radius, t0, t1)) continue;
+        // Occluded when the ray enters or leaves the sphere before the light.
+        if ((t0 > 0.0 && t0 < distance) || (t1 > 0.0 && t1 < distance)) return false;
+    }
+    return true;
+}
+
 // ---- shading ---------------------------------------------------------------------
 
 dvec3 directLight(const Scene& scene, const Hit& hit, dvec3 v) {
@@ -78,7 +237,7 @@ dvec3 directLight(const Scene& scene, const Hit& hit, dvec3 v) {
     for (const Light& light : scene.lights) {
         dvec3 E = pointLightIrradiance(hit.p, hit.n, light.position, light.color * light.intensity);
         if (E == dvec3(0.0)) continue;  // facing away, or light at p: no shadow ray needed
-        if (!lightVisible(scene, hit, light.position)) continue;
+        if (!lightReachable(scene, hit, light.position)) continue;
         dvec3 l = glm::normalize(light.position - hit.p);
         radiance += cookTorranceBRDF(hit.n, v, l, m, scene.model) * E;
     }
@@ -93,18 +252,24 @@ dvec3 shadeHit(const Scene& scene, const Hit& hit, dvec3 v) {
 dvec3 traceRadiance(const Scene& scene, dvec3 origin, dvec3 dir) {
     dvec3 radiance(0.0);
     dvec3 throughput(1.0);
-    for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
-        Hit hit;
-        if (!closestHit(scene, origin, dir, hit)) {
+    Hit hit;
+    bool found = closestHit(scene, origin, dir, hit);
+    for (int bounce = 0;; ++bounce) {
+        if (!found) {
             radiance += throughput * scene.render.background;
             break;
         }
         radiance += throughput * shadeHit(scene, hit, -dir);
-        const Material& m = scene.spheres[hit.sphere].material;
+        if (bounce == scene.render.maxBounces) break;
+        const Material& m = scene.spheres[size_t(hit.sphere)].material;
         double NoV = std::clamp(glm::dot(hit.n, -dir), kMinNoV, 1.0);  // the spec's NdotV clamp
         throughput *= F_SchlickRoughness(baseReflectance(m), NoV, m.roughness);
-        origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
-        dir = glm::reflect(dir, hit.n);
+        // reflect() keeps |d| = 1 only to a few roundoffs; renormalised, the
+        // error does not build up over the bounces.
+        dir = glm::normalize(glm::reflect(dir, hit.n));
+        Hit next;
+        found = nextHit(scene, hit, dir, next);
+        hit = next;
     }
     return radiance;
 }

@@ -18,26 +18,55 @@ namespace rl::ref {
 // A ray/sphere hit.
 struct Hit {
     double t = kNoHit;      // distance along the unit ray direction; kNoHit for a miss
-    glm::dvec3 p{0.0};      // hit point, world space
-    glm::dvec3 n{0.0};      // unit normal (p - centre)/radius, flipped to face the incoming ray
+    glm::dvec3 p{0.0};      // hit point, world space, reprojected onto the sphere: centre + radius u
+    glm::dvec3 n{0.0};      // unit normal u = (p - centre)/radius, flipped to face the incoming ray
     double magnitude = 0;   // max(maxAbs(p), maxAbs(centre) + radius): the scale of the numbers behind p
     int sphere = -1;        // index into Scene::spheres
+    bool inside = false;    // the ray met the sphere from inside (its far root): n = -u
+    double error = 0;       // bound on the distance of p from the true surface (double rounding only)
+    bool hasTwin = false;   // another sphere has the same centre and radius (the same surface)
 };
 
 // ---- visibility ------------------------------------------------------------------
+//
+// The geometric truth (spec "Reflection bounces"): a ray that leaves a
+// sphere's surface on the outside cannot meet that sphere again (it is
+// convex), and one that leaves it on the inside meets it once more, at its
+// far root t = -2 (p - centre).w (the near root is 0). Secondary rays are
+// therefore traced with the sphere they leave (and any identical one)
+// handled exactly, never behind an offset; the other spheres see the origin
+// pushed along n by Hit::error, a bound on double rounding (4e-15 of the
+// scene's size), so that a surface within rounding of the one left (a copy
+// of a sphere whose centre rounded differently) does not shadow it; it
+// changes no pixel.
+// This is the reference's own geometry, independent of the GLSL.
 
-// Nearest sphere hit with t > 0 along the unit direction dir. Fills `out` and
-// returns true, or returns false (and leaves `out` alone) on a miss.
+// Nearest sphere hit with t > 0 along the unit direction dir from a point
+// on no surface (a camera ray). Fills `out` and returns true, or returns
+// false (and leaves `out` alone) on a miss.
 bool closestHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir, Hit& out);
+
+// Nearest hit of the secondary ray that leaves the surface at `from` in the
+// unit direction dir, on the side n faces (dot(dir, from.n) >= 0: a mirror
+// bounce or a shadow ray towards a light above the surface). The sphere it
+// leaves is handled exactly (see above). Same contract as closestHit.
+bool nextHit(const Scene& scene, const Hit& from, glm::dvec3 dir, Hit& out);
 
 // True when some sphere is hit at 0 < t < tMax along the unit direction dir.
 // Stops at the first occluder: a shadow ray needs whether, not where.
 bool anyHitBefore(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir, double tMax);
 
-// Exercise 04's lightVisibility(): true when nothing lies between the hit and
-// the light. The shadow ray starts at offsetRayOrigin(p, n, magnitude) and
-// the light is occluded iff a sphere is hit closer than the light from there.
+// Exercise 04's lightVisibility(), as the exercise teaches it: true when
+// nothing lies between the hit and the light, the shadow ray starting at
+// offsetRayOrigin(p, n, magnitude). The exercise probes check the student's
+// function against this one; the renderer below uses lightReachable().
 bool lightVisible(const Scene& scene, const Hit& hit, glm::dvec3 lightPosition);
+
+// The reference's shadow ray: true when no surface lies between the hit and
+// the light, with the sphere of the hit handled exactly (from outside it
+// cannot occlude; from inside its far root occludes when nearer than the
+// light). Call it only for a light above the surface (n.l > 0).
+bool lightReachable(const Scene& scene, const Hit& hit, glm::dvec3 lightPosition);
 
 // ---- shading ---------------------------------------------------------------------
 
@@ -55,7 +84,8 @@ glm::dvec3 shadeHit(const Scene& scene, const Hit& hit, glm::dvec3 v);
 // "Reflection bounces": the primary hit and up to render.maxBounces mirror
 // bounces, each hit adding throughput * shadeHit; after each hit
 //     throughput *= F_SchlickRoughness(F0, clamp(n.(-d), 1e-4, 1), roughness)
-// and the ray continues from offsetRayOrigin(p, n, magnitude) in reflect(d, n).
+// and the ray continues from p in normalize(reflect(d, n)) (nextHit(): no
+// offset; renormalised so that |d| = 1 does not drift over many bounces).
 // A ray that hits nothing adds throughput * background and stops.
 // The bounce Fresnel is F_SchlickRoughness for EVERY model variant: the
 // variants (scene.model) change the direct-light BRDF only.

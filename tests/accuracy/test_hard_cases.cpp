@@ -55,6 +55,16 @@ struct HardCase {
 
 std::ostream& operator<<(std::ostream& out, const HardCase& c) { return out << c.name; }
 
+// The picture the GLSL is judged against in this suite: the double-precision
+// model with the shader's own ray offset (2^-19 of the hit magnitude), which
+// is what ref::renderCpu() rendered until issue #10. The CPU reference now
+// renders the geometric truth (no offset of its own; the metamorphic suite,
+// tests/metamorphic/, judges the GLSL against it), and the shader still
+// carries the offset, whose cost OffsetErrorWithinBudget measures against
+// that truth. Once the shader's offsets follow the hit's rounding error
+// (issue #10, shader side), this is ref::renderCpu(scene) again.
+Rendering shaderModel(const Scene& scene) { return acc::renderDoubleWithOffset(scene, ref::kRayOffsetRelative); }
+
 // ---- expected behaviours -------------------------------------------------------------------
 
 std::array<std::uint8_t, 3> backgroundPixel(const Scene& scene) {
@@ -124,7 +134,7 @@ std::string roughnessZeroIsClamped(const Scene& scene, const Rendering& gl) {
 // No pixel brighter than all its neighbours that the double-precision
 // reference does not have too (a grazing 1/NoV or 1/NoL blow-up).
 std::string noNewFireflies(const Scene& scene, const Rendering& gl) {
-    long count = acc::newFireflies(gl.radiance, ref::renderCpu(scene).radiance);
+    long count = acc::newFireflies(gl.radiance, shaderModel(scene).radiance);
     return count ? std::to_string(count) + " fireflies that the reference does not have" : "";
 }
 
@@ -224,7 +234,7 @@ TEST_P(HardCaseTest, MatchesCpuReference) {
     const HardCase& c = GetParam();
     Scene scene = c.scene();
     Rendering gl = acc::renderGlsl(scene);
-    Rendering cpu = ref::renderCpu(scene);
+    Rendering cpu = shaderModel(scene);
     ImageDiff d = compareRenderings(gl, cpu);
     std::cout << "[ measured ] " << c.name << ": " << acc::describeDiff(d) << "\n";
     EXPECT_EQ(problems(c, scene, gl, cpu), "");
@@ -234,7 +244,7 @@ TEST_P(HardCaseTest, MatchesCpuReference) {
     EXPECT_EQ(problems(c, scene, specialised, cpu), "") << "specialised shader";
     if (c.invarianceBudget >= 0) {
         // The same picture as the untransformed scene (the offset scales with it).
-        ImageDiff invariance = compareRenderings(gl, ref::renderCpu(acc::hardScene("contact.json")));
+        ImageDiff invariance = compareRenderings(gl, shaderModel(acc::hardScene("contact.json")));
         std::cout << "[ measured ] " << c.name << " vs the untransformed scene: " << acc::describeDiff(invariance) << "\n";
         EXPECT_LE(invariance.offFraction, c.invarianceBudget) << acc::describeDiff(invariance);
     }
@@ -249,7 +259,7 @@ TEST_P(HardCaseTest, EveryModelVariant) {
         Scene scene = c.scene();
         scene.model = variant.model;
         Rendering gl = acc::renderGlsl(scene);
-        Rendering cpu = ref::renderCpu(scene);
+        Rendering cpu = shaderModel(scene);
         EXPECT_EQ(problems(c, scene, gl, cpu), "") << "model " << variant.name;
         double off = compareRenderings(gl, cpu).offFraction;
         if (off >= worst) {
@@ -260,13 +270,13 @@ TEST_P(HardCaseTest, EveryModelVariant) {
     std::cout << "[ measured ] " << c.name << " worst variant: " << worstModel << " off " << 100 * worst << "%\n";
 }
 
-// What the ray offset itself costs: the CPU reference (offset 2^-19 of the
-// hit magnitude) against the same double-precision renderer with 2^-40, which
-// shows the scene as it is (contact shadows, reflections near contacts).
+// What the ray offset itself costs: the double-precision model with the
+// shader's offset (2^-19 of the hit magnitude) against the CPU reference,
+// which shows the scene as it is (contact shadows, reflections near contacts).
 TEST_P(HardCaseTest, OffsetErrorWithinBudget) {
     const HardCase& c = GetParam();
     Scene scene = c.scene();
-    ImageDiff d = compareRenderings(ref::renderCpu(scene), acc::renderDoubleWithOffset(scene, std::ldexp(1.0, -40)));
+    ImageDiff d = compareRenderings(shaderModel(scene), ref::renderCpu(scene));
     std::cout << "[ measured ] " << c.name << " offset 2^-19 vs 2^-40: " << acc::describeDiff(d) << "\n";
     EXPECT_LE(d.offFraction, c.offsetBudget) << acc::describeDiff(d);
 }
@@ -276,7 +286,7 @@ TEST_P(HardCaseTest, CatchesItsNaiveVersions) {
     const HardCase& c = GetParam();
     ASSERT_FALSE(c.naive.empty());
     Scene scene = c.scene();
-    Rendering cpu = ref::renderCpu(scene);
+    Rendering cpu = shaderModel(scene);
     for (const std::string& file : c.naive) {
         std::filesystem::path path = sourceRoot() / file;
         ASSERT_TRUE(std::filesystem::exists(path)) << path;
