@@ -34,7 +34,7 @@ vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
 // Exercise 04's visibility, used once both of its functions are started
 // (lightVisibility starts its ray at offsetRayOrigin). 1.0 until then.
 float shadowVisibility(Hit hit, vec3 lightPosition) {
-    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), 1.0))) return 1.0;
+    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)))) return 1.0;
 #ifdef RL_SINGLE_SPHERE
     // Specialised to a scene of one sphere, which is convex: seen from outside
     // it shadows nothing; seen from inside (n faces the centre) it hides every
