@@ -35,6 +35,7 @@ struct Hit {
     vec3 n;           // unit normal, flipped to face the incoming ray
     vec3 error;       // componentwise bound on |p - the exact surface point| (error_bounds.glsl)
     int sphere;       // index of the sphere hit (NO_SPHERE for none)
+    vec4 sphereGeometry;  // framework: that sphere's centre (xyz) and radius (w)
 };
 
 float maxAbs(vec3 v) {

@@ -63,16 +63,6 @@ float refineRoot(vec3 o, vec3 d, int i, float t) {
 // exactly once more, at the far root -b + sqrt(b^2 - C), C ~ 0. Exact,
 // whatever the offset: no self-intersection, no contact shadow or reflected
 // silhouette hidden behind an offset.
-// For a shadow ray, only whether that hit comes before tMax: from inside, the
-// far root t1 < tMax exactly when g(tMax) = tMax (tMax + 2b) + C > 0 (C <= 0
-// there), which needs no square root.
-bool leavingSphereHitBefore(vec3 o, vec3 d, float tMax, int i) {
-    vec3 f = o - sphereCenter(i);
-    float b = dot(f, d);
-    float r = sphereRadius(i);
-    return b < 0.0 && tMax * (tMax + 2.0 * b) + (dot(f, f) - r * r) > 0.0;
-}
-
 float leavingSphereHit(vec3 o, vec3 d, int i) {
     vec3 f = o - sphereCenter(i);
     float b = dot(f, d);
@@ -83,12 +73,13 @@ float leavingSphereHit(vec3 o, vec3 d, int i) {
 
 // The hit at o + t d on sphere i, reprojected onto the sphere, with the
 // componentwise bound on its distance from the exact surface point (Hit.error).
-// Two reprojections; the one with the smaller bound is kept:
+// Two reprojections; the one with the smaller bound along n is kept:
 //   centre form    p' = c + r n,  n = normalize(p - c):
-//                  e = gamma_12 (|p'| + r |n|)            (small or far spheres)
+//                  e = gamma_12 (|p'| + r |n|)             (small or far spheres)
 //   residual form  p' = p - n s,  s = (C_eye - 2 p.c + |p|^2) / 2r:
 //                  e = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
-//                  (a huge sphere near the camera: c + r n would carry ulp(|c|))
+//                  (a huge sphere near the camera, where c + r n would carry
+//                  ulp(|c|): 0.008 for a ground of radius 1e5)
 // Both include the rounding of the later p' + offset n (u |p'|).
 Hit makeHit(vec3 o, vec3 d, float t, int i) {
     Hit hit;
@@ -96,17 +87,18 @@ Hit makeHit(vec3 o, vec3 d, float t, int i) {
     hit.sphere = i;
     vec3 c = sphereCenter(i);
     float r = sphereRadius(i);
+    hit.sphereGeometry = vec4(c, r);
+    float cameraC = sphereCameraC(i);
     vec3 p = o + t * d;
     vec3 n = normalize(p - c);
     vec3 onCentre = c + r * n;
-    vec3 errorCentre = roundingGamma(12.0) * (abs(onCentre) + r * abs(n));
-    float residual = sphereCameraC(i) - 2.0 * dot(p, c) + dot(p, p);
-    vec3 onResidual = p - n * (residual / (2.0 * r));
-    float depthError = roundingGamma(10.0) * (abs(sphereCameraC(i)) + 2.0 * dot(abs(p), abs(c)) + dot(p, p)) / (2.0 * r);
-    vec3 errorResidual = depthError * abs(n) + roundingGamma(2.0) * abs(onResidual);
-    bool centreForm = dot(abs(n), errorCentre) <= dot(abs(n), errorResidual);
-    hit.p = centreForm ? onCentre : onResidual;
-    hit.error = centreForm ? errorCentre : errorResidual;
+    float pp = dot(p, p);
+    float depthError = roundingGamma(10.0) * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) / (2.0 * r);
+    float centreError = roundingGamma(12.0) * (maxAbs(onCentre) + r);  // bounds dot(|n|, e) of the centre form
+    bool residualForm = depthError < centreError;
+    hit.p = residualForm ? p - n * ((cameraC - 2.0 * dot(p, c) + pp) / (2.0 * r)) : onCentre;
+    hit.error = residualForm ? depthError * abs(n) + roundingGamma(2.0) * abs(hit.p)
+                             : roundingGamma(12.0) * (abs(onCentre) + r * abs(n));
     hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
     return hit;
 }

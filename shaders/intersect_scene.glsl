@@ -53,11 +53,13 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     return hit;
 }
 
-// True when some sphere is hit at 0 < t < tMax. Stops at the first occluder:
-// a shadow ray needs to know only whether, not where (the exercise's root
-// is not refined: it decides only against tMax).
+// True when some sphere other than `leaving` is hit at 0 < t < tMax. Stops
+// at the first occluder: a shadow ray needs to know only whether, not where
+// (the exercise's root is not refined: it decides only against tMax). The
+// sphere a shadow ray leaves is decided before, exactly (lighting.glsl,
+// shadowVisibility): from outside it hides nothing the ray goes to, from
+// inside it hides every light outside it.
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
-    if (leaving != NO_SPHERE && leavingSphereHitBefore(origin, dir, tMax, leaving)) return true;
     for (int i = 0; i < sphereCount(); ++i) {
         float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
         if (t > 0.0 && t < tMax && i != leaving) return true;

@@ -42,7 +42,9 @@ vec4 evaluateProbe() {
     vec4 d = texelFetch(u_probeInputs, ivec2(6 * cell.x + 3, cell.y), 0);
     vec4 e = texelFetch(u_probeInputs, ivec2(6 * cell.x + 4, cell.y), 0);
     Material m = Material(a.xyz, a.w, b.x, b.y);
-    Hit hit = Hit(1.0, a.xyz, b.xyz, d.xyz, int(d.w));  // visibility: p, n, light (c), error, sphere
+    // visibility: p, n, light (c), error, sphere (NO_SPHERE: only the offset keeps the ray off the surface)
+    int sphere = int(d.w);
+    Hit hit = Hit(1.0, a.xyz, b.xyz, d.xyz, sphere, sphere >= 0 ? u_sphereGeometry[max(sphere, 0)] : vec4(0.0));
     vec4 r = vec4(0.0);
     int f = u_probeFunction;
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 1

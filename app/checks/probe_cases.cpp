@@ -537,14 +537,16 @@ std::vector<ProbeSpec> shadowProbes() {
         c.group = group;
         v.cases.push_back(c);
     };
-    for (int k = 0; k < 40; ++k) {  // camera rays onto the scene, lit by one light or the other
+    for (int k = 0; k < 60; ++k) {  // camera rays onto the scene, lit by one light or the other
         dvec3 origin(rng.range(-4, 4), rng.range(2, 5), 8);
         dvec3 target(rng.range(-3, 3), rng.range(0, 1.5), rng.range(-1, 1));
         R::Hit hit;
         if (!R::closestHit(scene, origin, glm::normalize(target - origin), hit)) continue;
         dvec3 outward = hit.p - scene.spheres[hit.sphere].center;
-        addHit(hit.sphere, outward, k % 2 ? scene.lights[0].position : scene.lights[1].position, hit.sphere, 0.0,
-               "scene point");
+        dvec3 light = k % 2 ? scene.lights[0].position : scene.lights[1].position;
+        // The framework asks only for lights in front of the surface (NoL > 0, lighting.glsl).
+        if (glm::dot(light - hit.p, outward) <= 0.0) continue;
+        addHit(hit.sphere, outward, light, hit.sphere, 0.0, "scene point");
     }
     for (int k = 0; k < 8; ++k) {  // ground right beside the red sphere's contact point, light straight above: shadow
         double a = rng.range(0, 2 * R::kPi), d = rng.range(0.1, 0.6);
@@ -909,12 +911,42 @@ std::vector<ProbeSpec> cookTorranceProbes() {
 
 // ---- 09 reflections ----------------------------------------------------------------------
 
+// The nearest hit from o along unit d, the sphere `leaving` handled as the
+// framework does (intersect_scene.glsl): skipped when the ray leaves its
+// outside, its far root from inside. Returns the sphere, -1 for none.
+int closestHitLeaving(const Scene& scene, dvec3 o, dvec3 d, int leaving, R::Hit& hit) {
+    hit.sphere = -1;
+    hit.t = 1e300;
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        const Sphere& s = scene.spheres[i];
+        double t = R::intersectSphere(o, d, s.center, s.radius);
+        if (i == leaving) {
+            double b = glm::dot(o - s.center, d);
+            t = b >= 0 ? -1.0 : -b + std::sqrt(std::max(0.0, b * b - (glm::dot(o - s.center, o - s.center) - s.radius * s.radius)));
+        }
+        if (t > 0 && t < hit.t) {
+            hit.t = t;
+            hit.sphere = i;
+        }
+    }
+    if (hit.sphere < 0) return -1;
+    const Sphere& s = scene.spheres[hit.sphere];
+    hit.p = o + hit.t * d;
+    hit.n = glm::normalize(hit.p - s.center);
+    if (glm::dot(hit.n, d) > 0) hit.n = -hit.n;
+    auto maxAbs = [](dvec3 v) { return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))); };
+    hit.magnitude = std::max(maxAbs(hit.p), maxAbs(s.center) + s.radius);  // the CPU reference's own shadow offset
+    return hit.sphere;
+}
+
 // A local trace loop with switches for the typical mistakes of exercise 09.
 dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, bool swapReflect) {
     dvec3 radiance(0), throughput(1);
+    int leaving = -1;
     for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
         R::Hit hit;
-        if (!R::closestHit(scene, origin, dir, hit)) {
+        dir = glm::normalize(dir);  // closestHit() renormalises
+        if (closestHitLeaving(scene, origin, dir, leaving, hit) < 0) {
             radiance += throughput * scene.render.background;
             break;
         }
@@ -922,8 +954,9 @@ dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, 
         const Material& m = scene.spheres[hit.sphere].material;
         double NoV = std::clamp(glm::dot(hit.n, -dir), 1e-4, 1.0);
         if (attenuate) throughput *= R::F_SchlickRoughness(R::baseReflectance(m), NoV, m.roughness);
-        origin = R::offsetRayOrigin(hit.p, hit.n, hit.magnitude);
-        dir = swapReflect ? glm::normalize(hit.n - 2 * glm::dot(dir, hit.n) * dir) : glm::reflect(dir, hit.n);
+        origin = hit.p;
+        dir = swapReflect ? hit.n - 2 * glm::dot(dir, hit.n) * dir : glm::reflect(dir, hit.n);
+        leaving = hit.sphere;
     }
     return radiance;
 }
@@ -989,8 +1022,11 @@ std::vector<ProbeSpec> reflectionProbes() {
     tr.mistakes.push_back({"the bounce starts off the normal (pushed along the reflected ray): the probe reads -2",
                            "continue from offsetRayOrigin(hit.p, hit.n, hit.error): along the normal, whatever the new direction",
                            [scene](const ProbeCase& c) {
+                               // Off by |r - n| times the offset: marked where that is over a quarter.
                                R::Hit hit;
-                               if (!R::closestHit(scene, get(c, 0), get(c, 4), hit))
+                               dvec3 d = glm::normalize(get(c, 4));
+                               if (closestHitLeaving(scene, get(c, 0), d, -1, hit) < 0 ||
+                                   glm::length(glm::reflect(d, hit.n) - hit.n) <= 0.25)
                                    return value(R::traceRadiance(scene, get(c, 0), get(c, 4)));
                                return value(dvec3(-2.0));
                            }});

@@ -132,10 +132,10 @@ std::string roughnessZeroIsClamped(const Scene& scene, const Rendering& gl) {
     return "";
 }
 
-// No pixel brighter than all its neighbours that the double-precision
-// reference does not have too (a grazing 1/NoV or 1/NoL blow-up).
+// No pixel brighter than all its neighbours that the true picture does not
+// have too (a grazing 1/NoV or 1/NoL blow-up).
 std::string noNewFireflies(const Scene& scene, const Rendering& gl) {
-    long count = acc::newFireflies(gl.radiance, ref::renderCpu(scene).radiance);
+    long count = acc::newFireflies(gl.radiance, acc::renderTruePicture(scene).radiance);
     return count ? std::to_string(count) + " fireflies that the reference does not have" : "";
 }
 
@@ -155,27 +155,29 @@ std::vector<HardCase> hardCases() {
     // offsetBudget: the CPU reference's own offset of 2^-19 of 2R (0.04 and
     // 0.38) loses the contact shadows of the small spheres (measured 5.3% and
     // 19.8% against a 2^-40 offset): the CPU reference's business (issue #10).
-    add({"ground_1e4", "ground-1e4.json", kAim, 0.06, {kMutants + "02-intersect--textbook-quadratic.glsl"}, nullptr});
-    add({"ground_1e5", "ground-1e5.json", kAim, 0.21, {kMutants + "02-intersect--textbook-quadratic.glsl"}, nullptr});
+    add({"ground_1e4", "ground-1e4.json", kAim, 0.06, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+    add({"ground_1e5", "ground-1e5.json", kAim, 0.21, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
     add({"ground_1e5_grazing_light", "ground-1e5-grazing-light.json", kAim, 0.25,
-         {kMutants + "02-intersect--textbook-quadratic.glsl"}, noNewFireflies});
+         {kMutants + "04-shadows--occluders-beyond-light.glsl", kMutants + "06-geometry--ibl-k.glsl"}, noNewFireflies});
     add({"distant_camera", "distant-camera.json", kAim, 0.25, {kMutants + "02-intersect--textbook-quadratic.glsl"},
          nullptr});
-    add({"touching_spheres", "touching-spheres.json", kAim, 0.25, {fixedOffset}, nullptr});
+    add({"touching_spheres", "touching-spheres.json", kAim, 0.25,
+         {kMutants + "04-shadows--occluders-beyond-light.glsl", kMutants + "08-cook-torrance--metals-diffuse.glsl"}, nullptr});
     add({"inside_1e5", "inside-1e5.json", kAim, 0.25, {kMutants + "02-intersect--near-root-inside.glsl"},
          noBackground});
     add({"fov_near_180", "fov-near-180.json", kAim, 0.25, {kMutants + "01-camera--aspect-on-y.glsl"}, nullptr});
-    add({"contact", "contact.json", kAim, kAim, {fixedOffset}, nullptr});
-    add({"contact_scaled_1em3", "contact-scaled-1e-3.json", kAim, kAim, {fixedOffset}, nullptr, "contact.json"});
-    add({"contact_scaled_1e3", "contact-scaled-1e3.json", kAim, kAim, {kMutants + "02-intersect--textbook-quadratic.glsl"},
+    add({"contact", "contact.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+    add({"contact_scaled_1em3", "contact-scaled-1e-3.json", kAim, kAim,
+         {fixedOffset, kMutants + "04-shadows--shadow-ray-shortened.glsl"}, nullptr, "contact.json"});
+    add({"contact_scaled_1e3", "contact-scaled-1e3.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"},
          nullptr, "contact.json"});
     // The CPU reference's offset 2^-19 of 1e4 = 0.02 world units moves contact
     // shadows (measured 1.0% against a 2^-40 offset).
     add({"contact_translated_1e4", "contact-translated-1e4.json", kAim, 0.015,
-         {kMutants + "02-intersect--textbook-quadratic.glsl"}, nullptr, "contact.json"});
+         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr, "contact.json"});
     add({"contact_translated_1e10", "contact-translated-1e10.json", kAim, 1.0,
-         {kMutants + "02-intersect--textbook-quadratic.glsl"}, nullptr, "contact.json"});
-    add({"contact_scaled_1e20", "contact-scaled-1e20.json", kAim, 1.0, {kMutants + "02-intersect--textbook-quadratic.glsl"},
+         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr, "contact.json"});
+    add({"contact_scaled_1e20", "contact-scaled-1e20.json", kAim, 1.0, {kMutants + "09-reflections--full-strength-bounces.glsl"},
          nullptr, "contact.json"});
     // Scaled by 1e-20 every light is within 1e-12 of every point: per the
     // model (d2 <= 1e-12) no light adds anything; ambient and background remain.

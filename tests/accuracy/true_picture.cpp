@@ -47,6 +47,15 @@ struct TrueTracer {
         return false;
     }
 
+    // "Near-zero" offset for the *other* spheres: 2^-40 of the numbers behind
+    // p (1e-12 at scale 1), far below any pixel, but past double's rounding
+    // of p (2^-52 of them), so a sphere that coincides with or touches the
+    // one p lies on (two identical spheres) does not shadow it at random.
+    static dvec3 offset(dvec3 p, dvec3 n, const Sphere& s) {
+        auto maxAbs = [](dvec3 v) { return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))); };
+        return p + n * (std::ldexp(1.0, -40) * std::max(maxAbs(p), maxAbs(s.center) + s.radius));
+    }
+
     dvec3 trace(dvec3 origin, dvec3 dir) const {
         dvec3 radiance(0.0), throughput(1.0);
         int leaving = -1;
@@ -70,13 +79,13 @@ struct TrueTracer {
                 if (E == dvec3(0.0)) continue;
                 dvec3 toLight = light.position - p;
                 double distance = glm::length(toLight);
-                if (occluded(p, toLight / distance, distance, i)) continue;
+                if (occluded(offset(p, n, s), toLight / distance, distance, i)) continue;
                 direct += ref::cookTorranceBRDF(n, v, toLight / distance, m, scene.model) * E;
             }
             radiance += throughput * (direct + scene.render.ambient * m.albedo * m.ao);
             double NoV = std::clamp(glm::dot(n, v), ref::kMinNoV, 1.0);
             throughput *= ref::F_SchlickRoughness(ref::baseReflectance(m), NoV, m.roughness);
-            origin = p;
+            origin = offset(p, n, s);
             dir = glm::reflect(dir, n);
             leaving = i;
         }
