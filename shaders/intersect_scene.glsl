@@ -26,25 +26,43 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     hit.sphere = NO_SPHERE;
     float nearest = 3.4e38;  // FLT_MAX: any real hit is nearer
     int sphere = NO_SPHERE;
-    if (leaving != NO_SPHERE) {
-        float t = leavingSphereHit(origin, dir, leaving);
-        if (t > 0.0) {
-            nearest = t;
-            sphere = leaving;
-        }
-    }
+    vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
+    float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
-        float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
+        vec4 sphereI = u_sphereGeometry[i];
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
         if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
+        if (i == leaving) {
+            leavingGeometry = sphereI;
+#ifdef RL_SPHERE_COUNT
+            leavingC = sphereCameraC(i);
+#endif
+        }
         if (t > 0.0 && i != leaving) {
             if (refinesRoot(i)) t = refineRoot(origin, dir, i, t);
             if (t > 0.0 && t < nearest) {
                 nearest = t;
                 sphere = i;
+                geometry = sphereI;
+#ifdef RL_SPHERE_COUNT  // unrolled: a direct load; a loop would gather it for every sphere
+                cameraC = sphereCameraC(i);
+#endif
             }
         }
     }
-    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere);
+    if (leaving != NO_SPHERE) {
+        float t = leavingSphereHit(origin, dir, leavingGeometry);
+        if (t > 0.0 && t < nearest) {
+            nearest = t;
+            sphere = leaving;
+            geometry = leavingGeometry;
+            cameraC = leavingC;
+        }
+    }
+#ifndef RL_SPHERE_COUNT
+    if (sphere != NO_SPHERE) cameraC = sphereCameraC(sphere);
+#endif
+    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC);
 #if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
     if (g_probeCalls == 0) g_probeFirstHit = hit;
     if (g_probeCalls == 1) g_probeSecondOrigin = origin;
