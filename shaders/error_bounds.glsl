@@ -84,22 +84,28 @@ float leavingSphereHit(vec3 o, vec3 d, vec4 geometry) {
 //                  ulp(|c|): 0.008 for a ground of radius 1e5)
 // Both include the rounding of the later p' + offset n (u |p'|).
 Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC) {
+    const float GAMMA_2 = 2.0 * UNIT_ROUNDOFF / (1.0 - 2.0 * UNIT_ROUNDOFF);
+    const float GAMMA_10 = 10.0 * UNIT_ROUNDOFF / (1.0 - 10.0 * UNIT_ROUNDOFF);
+    const float GAMMA_12 = 12.0 * UNIT_ROUNDOFF / (1.0 - 12.0 * UNIT_ROUNDOFF);
     Hit hit;
     hit.t = t;
     hit.sphere = i;
+    hit.sphereGeometry = geometry;
     vec3 c = geometry.xyz;
     float r = geometry.w;
-    hit.sphereGeometry = geometry;
     vec3 p = o + t * d;
-    vec3 n = normalize(p - c);
-    vec3 onCentre = c + r * n;
+    vec3 v = p - c;
+    float inverseLength = inversesqrt(dot(v, v));
+    vec3 n = v * inverseLength;
     float pp = dot(p, p);
-    float depthError = roundingGamma(10.0) * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) / (2.0 * r);
-    float centreError = roundingGamma(12.0) * (maxAbs(onCentre) + r);  // bounds dot(|n|, e) of the centre form
-    bool residualForm = depthError < centreError;
-    hit.p = residualForm ? p - n * ((cameraC - 2.0 * dot(p, c) + pp) / (2.0 * r)) : onCentre;
-    hit.error = residualForm ? depthError * abs(n) + roundingGamma(2.0) * abs(hit.p)
-                             : roundingGamma(12.0) * (abs(onCentre) + r * abs(n));
+    float halfInverseRadius = 0.5 / r;
+    // Along n: the residual form's bound, and the centre form's (|c + r n| <= |c| + r).
+    float depthError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+    bool residualForm = depthError < GAMMA_12 * (maxAbs(c) + 2.0 * r);
+    // Both forms move p along n onto the sphere: by -s, or to c + r n.
+    hit.p = residualForm ? p - n * ((cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius) : c + r * n;
+    vec3 an = abs(n);
+    hit.error = residualForm ? depthError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
     hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
     return hit;
 }
