@@ -12,12 +12,14 @@ vec3 F_SchlickRoughness(vec3 F0, float NoV, float roughness) {
 
 // Radiance seen along the ray origin + t dir (dir unit length):
 //     radiance = 0, throughput = 1
+//     leaving = NO_SPHERE (the camera lies on no sphere)
 //     repeat for the primary hit and up to maxBounces() bounces:
-//         hit = closestHit(origin, dir)
+//         hit = closestHit(origin, dir, leaving)
 //         miss: radiance += throughput * backgroundRadiance(); stop
 //         radiance += throughput * shadeHit(hit, -dir)
 //         throughput *= F_SchlickRoughness(F0 of the hit's material, clamp(n.v, 1e-4, 1), its roughness)
-//         continue from offsetRayOrigin(hit.p, hit.n, hit.magnitude) in reflect(dir, hit.n)
+//         continue from offsetRayOrigin(hit.p, hit.n, hit.error) in reflect(dir, hit.n),
+//         leaving = hit.sphere
 // Framework: closestHit, shadeHit, backgroundRadiance, sphereMaterial(hit.sphere), maxBounces.
 // Optional, once it works: at the top of each bounce after the first,
 //         if (bounceCannotChangeOutput(radiance, throughput)) stop

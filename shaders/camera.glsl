@@ -1,6 +1,10 @@
 // camera.glsl: the pinhole camera as the host hands it over (docs/uniforms.md).
-uniform mat4 u_cameraToWorld;  // columns: right, up, back (= -forward), position
-uniform float u_fovY;          // full vertical field of view, radians
+// The host computes in double and hands over what float32 can carry
+// (docs/uniforms.md): the scene relative to the camera, so the position is
+// 0, and tan(fov_y / 2) folded into the third column, so that u_fovY is
+// pi/2 (tan(u_fovY / 2) = 1) and fields of view up to 180 degrees stay exact.
+uniform mat4 u_cameraToWorld;  // columns: right, up, back / tan(fov_y / 2) (back = -forward), position (0)
+uniform float u_fovY;          // pi/2: the field of view is in the third column
 uniform vec2 u_resolution;     // render target size in pixels
 uniform int u_spp;             // samples per pixel, a square number n*n
 
@@ -14,7 +18,7 @@ vec3 primaryRayDirection(vec2 pixel, int s, int n) {
     if (isStub(offset)) offset = vec2(0.5);
     vec3 right = u_cameraToWorld[0].xyz;
     vec3 up = u_cameraToWorld[1].xyz;
-    vec3 forward = -u_cameraToWorld[2].xyz;
+    vec3 forward = -u_cameraToWorld[2].xyz;  // forward / tan(fov_y / 2): the same directions as forward with fov_y
     vec3 d = cameraRayDirection(pixel + offset, u_resolution, u_fovY, right, up, forward);
-    return isGeometryStub(d) ? forward : d;
+    return isGeometryStub(d) ? normalize(forward) : d;
 }

@@ -14,11 +14,8 @@ const float NO_HIT = -1.0;
 // with grey/magenta stripes; `raylab check` reports NOT STARTED.
 const float NOT_STARTED = -1.0e30;
 
-// Secondary rays start this far along the normal, relative to the largest
-// number that produced the hit point (Hit.magnitude): 2^-19 is 16 float32
-// ulps of it, above the rounding error of the intersection (a few ulps of
-// |origin - centre|) at any scale, and small enough for contact shadows.
-const float RAY_OFFSET_RELATIVE = 1.0 / 524288.0;
+// Hit.sphere of a camera ray's origin, which lies on no sphere.
+const int NO_SPHERE = -1;
 
 // Tone-mapping operators (the scene's "tonemap").
 const int TONEMAP_REINHARD = 0;
@@ -34,10 +31,11 @@ struct Material {
 
 struct Hit {
     float t;          // distance along the (unit) ray direction; NO_HIT for a miss
-    vec3 p;           // hit point, world space
+    vec3 p;           // hit point, camera-relative world space, reprojected onto the sphere
     vec3 n;           // unit normal, flipped to face the incoming ray
-    float magnitude;  // max(|p|, |centre| + radius), componentwise max-abs: the scale of the numbers behind p
-    int sphere;       // index of the sphere hit
+    vec3 error;       // componentwise bound on |p - the exact surface point| (error_bounds.glsl)
+    int sphere;       // index of the sphere hit (NO_SPHERE for none)
+    vec4 sphereGeometry;  // framework: that sphere's centre (xyz) and radius (w)
 };
 
 float maxAbs(vec3 v) {

@@ -12,7 +12,7 @@ float intersectSphere(vec3 origin, vec3 dir, vec3 center, float radius);
 vec3 Fd_Lambert(vec3 albedo);
 vec3 pointLightIrradiance(vec3 p, vec3 n, vec3 lightPosition, vec3 lightIntensity);
 // 04-shadows
-vec3 offsetRayOrigin(vec3 p, vec3 n, float magnitude);
+vec3 offsetRayOrigin(vec3 p, vec3 n, vec3 pError);
 float lightVisibility(Hit hit, vec3 lightPosition);
 // 05-ggx
 float D_GGX(vec3 n, vec3 h, float alpha);
@@ -36,8 +36,8 @@ vec3 encodeGamma(vec3 c, float gamma);
 vec3 displayEncode(vec3 radiance, float exposure, int op, float gamma);
 
 // Framework functions the exercises may call:
-Hit closestHit(vec3 origin, vec3 dir);                 // intersect_scene.glsl
-bool anyHitBefore(vec3 origin, vec3 dir, float tMax);  // intersect_scene.glsl
+Hit closestHit(vec3 origin, vec3 dir, int leaving);                 // intersect_scene.glsl; leaving: the sphere origin lies on, or NO_SPHERE
+bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving);  // intersect_scene.glsl
 vec3 shadeHit(Hit hit, vec3 v);                        // lighting.glsl: direct light + ambient
 vec3 backgroundRadiance();                             // lighting.glsl: what a missed ray sees
 Material sphereMaterial(int i);                        // scene.glsl

@@ -24,7 +24,7 @@ void markUnfinishedExercises() {
     isStub(intersectSphere(vec3(0.0), -z, vec3(0.0, 0.0, -3.0), 1.0));
     isStub(Fd_Lambert(vec3(0.5)));
     isStub(pointLightIrradiance(vec3(0.0), z, z, vec3(1.0)));
-    isStub(offsetRayOrigin(vec3(1.0), z, 1.0));
+    isStub(offsetRayOrigin(vec3(1.0), z, vec3(1.0)));
     isStub(D_GGX(z, z, 0.25));
     isStub(G1_SchlickGGX(0.5, 0.5));
     isStub(G_SchlickGGX(0.5, 0.5, 0.5));

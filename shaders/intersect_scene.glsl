@@ -1,41 +1,86 @@
 // intersect_scene.glsl: rays against every sphere of the scene, built on the
-// exercise's intersectSphere() (02-intersect).
+// exercise's intersectSphere() (02-intersect) and on error_bounds.glsl.
+//
+// `leaving` is the sphere the ray's origin lies on (Hit.sphere of the hit it
+// starts from), or NO_SPHERE for a camera ray. That sphere is never asked
+// again: it is handled exactly, once per ray (leavingSphereHit: skipped when
+// the ray leaves its outside, its far root when the ray crosses its inside).
+
+#if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
+// `raylab check` of exercise 09 (probe.glsl): the first hit of traceRay() and
+// the origin of the ray after it, to see that the bounce starts on the normal.
+int g_probeCalls = 0;
+Hit g_probeFirstHit;
+vec3 g_probeSecondOrigin;
+#endif
 
 // Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
 // renormalised first: a reflected direction is unit length only to ~1e-7,
-// and over a long chord inside a large sphere that puts the hit point farther
-// off the surface than the secondary-ray offset (the camera-inside hard case).
-Hit closestHit(vec3 origin, vec3 dir) {
+// and intersectSphere() assumes |dir| = 1 (over a chord of 8 that is 8e-6).
+// Every other sphere's root comes from the exercise and is refined
+// (refineRoot), so that the nearest is found among exact-as-float32 roots.
+Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     dir = normalize(dir);
     Hit hit;
     hit.t = NO_HIT;
-    hit.sphere = -1;
+    hit.sphere = NO_SPHERE;
     float nearest = 3.4e38;  // FLT_MAX: any real hit is nearer
+    int sphere = NO_SPHERE;
+    vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
+    float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
-        float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
+        vec4 sphereI = u_sphereGeometry[i];
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
         if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
-        if (t > 0.0 && t < nearest) {
-            nearest = t;
-            hit.sphere = i;
+        if (i == leaving) {
+            leavingGeometry = sphereI;
+#ifdef RL_SPHERE_COUNT
+            leavingC = sphereCameraC(i);
+#endif
+        }
+        if (t > 0.0 && i != leaving) {
+            if (refinesRoot(i)) t = refineRoot(origin, dir, i, t);
+            if (t > 0.0 && t < nearest) {
+                nearest = t;
+                sphere = i;
+                geometry = sphereI;
+#ifdef RL_SPHERE_COUNT  // unrolled: a direct load; a loop would gather it for every sphere
+                cameraC = sphereCameraC(i);
+#endif
+            }
         }
     }
-    if (hit.sphere < 0) return hit;
-    hit.t = nearest;
-    hit.p = origin + nearest * dir;
-    vec3 c = sphereCenter(hit.sphere);
-    float r = sphereRadius(hit.sphere);
-    hit.n = (hit.p - c) / r;
-    if (dot(hit.n, dir) > 0.0) hit.n = -hit.n;  // hit from inside: face the ray
-    hit.magnitude = max(maxAbs(hit.p), maxAbs(c) + r);
+    if (leaving != NO_SPHERE) {
+        float t = leavingSphereHit(origin, dir, leavingGeometry);
+        if (t > 0.0 && t < nearest) {
+            nearest = t;
+            sphere = leaving;
+            geometry = leavingGeometry;
+            cameraC = leavingC;
+        }
+    }
+#ifndef RL_SPHERE_COUNT
+    if (sphere != NO_SPHERE) cameraC = sphereCameraC(sphere);
+#endif
+    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC);
+#if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
+    if (g_probeCalls == 0) g_probeFirstHit = hit;
+    if (g_probeCalls == 1) g_probeSecondOrigin = origin;
+    ++g_probeCalls;
+#endif
     return hit;
 }
 
-// True when some sphere is hit at 0 < t < tMax. Stops at the first occluder:
-// a shadow ray needs to know only whether, not where.
-bool anyHitBefore(vec3 origin, vec3 dir, float tMax) {
+// True when some sphere other than `leaving` is hit at 0 < t < tMax. Stops
+// at the first occluder: a shadow ray needs to know only whether, not where
+// (the exercise's root is not refined: it decides only against tMax). The
+// sphere a shadow ray leaves is decided before, exactly (lighting.glsl,
+// shadowVisibility): from outside it hides nothing the ray goes to, from
+// inside it hides every light outside it.
+bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
     for (int i = 0; i < sphereCount(); ++i) {
         float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
-        if (t > 0.0 && t < tMax) return true;
+        if (t > 0.0 && t < tMax && i != leaving) return true;
     }
     return false;
 }

@@ -34,14 +34,18 @@ vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
 // Exercise 04's visibility, used once both of its functions are started
 // (lightVisibility starts its ray at offsetRayOrigin). 1.0 until then.
 float shadowVisibility(Hit hit, vec3 lightPosition) {
-    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), 1.0))) return 1.0;
+    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)))) return 1.0;
+    // The sphere of the hit is convex: seen from outside it shadows nothing
+    // the shadow ray goes to (only lights with NoL > 0 get here); seen from
+    // inside (n faces the centre) it hides every light outside it and none
+    // inside. Exact, and anyHitBefore() never asks about it again.
+    vec3 centre = hit.sphereGeometry.xyz;
+    float radius = hit.sphereGeometry.w;
+    vec3 toLight = lightPosition - centre;
+    bool inside = dot(hit.p - centre, hit.n) < 0.0;
+    if (inside && dot(toLight, toLight) > radius * radius) return 0.0;
 #ifdef RL_SINGLE_SPHERE
-    // Specialised to a scene of one sphere, which is convex: seen from outside
-    // it shadows nothing; seen from inside (n faces the centre) it hides every
-    // light outside it and none inside. Exact, and no shadow ray at all.
-    vec3 toLight = lightPosition - sphereCenter(0);
-    bool inside = dot(hit.p - sphereCenter(0), hit.n) < 0.0;
-    return inside && dot(toLight, toLight) > sphereRadius(0) * sphereRadius(0) ? 0.0 : 1.0;
+    return 1.0;  // specialised to a scene of one sphere: no shadow ray at all
 #endif
     float visible = lightVisibility(hit, lightPosition);
     return isStub(visible) ? 1.0 : visible;

@@ -32,6 +32,8 @@ const int PROBE_TONEMAP = 18;
 const int PROBE_GAMMA = 19;
 const int PROBE_DISPLAY = 20;
 
+const float PROBE_WRONG_ORIGIN = -2.0;  // traceRay: a bounce that does not start on the normal (probe_cases.cpp)
+
 vec4 evaluateProbe() {
     ivec2 cell = ivec2(gl_FragCoord.xy);
     vec4 a = texelFetch(u_probeInputs, ivec2(6 * cell.x + 0, cell.y), 0);
@@ -40,7 +42,9 @@ vec4 evaluateProbe() {
     vec4 d = texelFetch(u_probeInputs, ivec2(6 * cell.x + 3, cell.y), 0);
     vec4 e = texelFetch(u_probeInputs, ivec2(6 * cell.x + 4, cell.y), 0);
     Material m = Material(a.xyz, a.w, b.x, b.y);
-    Hit hit = Hit(1.0, a.xyz, b.xyz, b.w, -1);
+    // visibility: p, n, light (c), error, sphere (NO_SPHERE: only the offset keeps the ray off the surface)
+    int sphere = int(d.w);
+    Hit hit = Hit(1.0, a.xyz, b.xyz, d.xyz, sphere, sphere >= 0 ? u_sphereGeometry[max(sphere, 0)] : vec4(0.0));
     vec4 r = vec4(0.0);
     int f = u_probeFunction;
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 1
@@ -55,7 +59,7 @@ vec4 evaluateProbe() {
     if (f == PROBE_IRRADIANCE) r.xyz = pointLightIrradiance(a.xyz, b.xyz, c.xyz, d.xyz);
 #endif
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 4
-    if (f == PROBE_OFFSET_ORIGIN) r.xyz = offsetRayOrigin(a.xyz, b.xyz, b.w);
+    if (f == PROBE_OFFSET_ORIGIN) r.xyz = offsetRayOrigin(a.xyz, b.xyz, c.xyz);
     if (f == PROBE_VISIBILITY) r.x = lightVisibility(hit, c.xyz);
 #endif
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 5
@@ -77,7 +81,18 @@ vec4 evaluateProbe() {
 #endif
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 9
     if (f == PROBE_F_ROUGHNESS) r.xyz = F_SchlickRoughness(a.xyz, a.w, b.x);
-    if (f == PROBE_TRACE) r.xyz = traceRay(a.xyz, b.xyz);
+    if (f == PROBE_TRACE) {
+        r.xyz = traceRay(a.xyz, b.xyz);
+        // The bounce must start at offsetRayOrigin(hit.p, hit.n, hit.error):
+        // pushed along the normal, not along the reflected ray. Further than a
+        // quarter of the offset from it (rounding is ~1/12 of it), the case
+        // reads PROBE_WRONG_ORIGIN, which the checker names.
+        Hit h = g_probeFirstHit;
+        if (!isStub(r.xyz) && g_probeCalls > 1 && h.t != NO_HIT) {
+            float offset = dot(abs(h.n), h.error);
+            if (length(g_probeSecondOrigin - (h.p + offset * h.n)) > 0.25 * offset) r.xyz = vec3(PROBE_WRONG_ORIGIN);
+        }
+    }
 #endif
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 10
     if (f == PROBE_TONEMAP) r.xyz = toneMap(a.xyz, int(a.w));

@@ -5,6 +5,7 @@
 #include "stub_marker.glsl"
 #include "scene.glsl"
 #include "declarations.glsl"
+#include "error_bounds.glsl"
 #include "intersect_scene.glsl"
 #include "exercises.glsl"
 #ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)

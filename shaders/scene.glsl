@@ -11,11 +11,11 @@
 #endif
 
 layout(std140) uniform SceneBlock {
-    vec4 u_sphereGeometry[RL_MAX_SPHERES];  // xyz centre, w radius (world units)
+    vec4 u_sphereGeometry[RL_MAX_SPHERES];  // xyz centre relative to the camera, w radius (scene units, docs/uniforms.md)
     vec4 u_sphereSurface[RL_MAX_SPHERES];   // rgb albedo (linear), a perceptual roughness
-    vec4 u_sphereExtra[RL_MAX_SPHERES];     // x metallic, y ao, z unused, w unused
+    vec4 u_sphereExtra[RL_MAX_SPHERES];     // x metallic, y ao, z |centre - eye|^2 - r^2 (from double), w 1: refine its roots
     vec4 u_sphereEdgeTint[RL_MAX_SPHERES];  // rgb conductor edge tint (model variants only)
-    vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position (world units)
+    vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position relative to the camera (scene units)
     vec4 u_lightIntensity[RL_MAX_LIGHTS];   // rgb colour * intensity (linear)
 };
 

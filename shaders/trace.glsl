@@ -3,7 +3,7 @@
 // first hit only (no reflections).
 
 vec3 traceFirstHitOnly(vec3 origin, vec3 dir) {
-    Hit hit = closestHit(origin, dir);
+    Hit hit = closestHit(origin, dir, NO_SPHERE);
     if (hit.t == NO_HIT) return backgroundRadiance();
     return shadeHit(hit, -dir);
 }
@@ -13,7 +13,7 @@ vec3 traceFirstHitOnly(vec3 origin, vec3 dir) {
 bool reflectionsReady() {
     Material probe = Material(vec3(0.5), 0.5, 0.0, 1.0);
     return !isStub(F_SchlickRoughness(vec3(0.04), 1.0, 0.5)) && !isStub(baseReflectance(probe)) &&
-           !isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), 1.0));
+           !isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)));
 }
 
 vec3 radianceAlong(vec3 origin, vec3 dir) {

@@ -21,7 +21,7 @@ const int VIEW_BOUNCE = 9;    // the contribution of bounce u_viewBounce alone
 // Linear values in [0, 1] for the term views (radiance views are handled by
 // main() through the display step).
 vec3 teachingView(vec3 origin, vec3 dir) {
-    Hit hit = closestHit(origin, dir);
+    Hit hit = closestHit(origin, dir, NO_SPHERE);
     if (hit.t == NO_HIT) return vec3(0.0);
     if (u_view == VIEW_NORMALS) return hit.n * 0.5 + 0.5;
     vec3 v = -dir;

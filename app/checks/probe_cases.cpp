@@ -484,7 +484,11 @@ Scene makeProbeScene() {
                  // Two facing mirrors off to the side: a ray between them
                  // bounces until max_bounces ends it.
                  sphere({9, 3, 0}, 1, {0.95, 0.95, 0.95}, 0.05, 1),
-                 sphere({13, 3, 0}, 1, {0.9, 0.8, 0.5}, 0.05, 1)};
+                 sphere({13, 3, 0}, 1, {0.9, 0.8, 0.5}, 0.05, 1),
+                 // A receiver and an occluder scaled by 1e-3, in the air far
+                 // from the rest: a light next to the occluder (exercise 04).
+                 sphere({-6, 4, -4}, 5e-4, {0.8, 0.8, 0.8}, 0.5, 0),
+                 sphere({-6, 4.0025, -4}, 5e-4, {0.8, 0.8, 0.8}, 0.5, 0)};
     Light key;
     key.position = {1, 6, 2};
     key.intensity = 60;
@@ -499,106 +503,211 @@ Scene makeProbeScene() {
     return s;
 }
 
+// float32's unit roundoff and gamma_k, as in shaders/error_bounds.glsl.
+constexpr double kUnitRoundoff = 0x1.0p-24;
+double roundingGamma(double k) { return k * kUnitRoundoff / (1 - k * kUnitRoundoff); }
+
+// Hit.error of a hit on a sphere of radius r with normal n at p, as
+// closestHit() computes it (error_bounds.glsl, centre form):
+// gamma_12 (|p| + r |n|).
+vec3 hitError(vec3 p, vec3 n, double r) {
+    dvec3 e = roundingGamma(12) * (glm::abs(dvec3(p)) + r * glm::abs(dvec3(n)));
+    return vec3(e);
+}
+
+// The exercise's offset in double: p + dot(|n|, e) n.
+dvec3 offsetOrigin(dvec3 p, dvec3 n, dvec3 e) { return p + glm::dot(glm::abs(n), e) * n; }
+
+// Inputs of the visibility probe (shaders/probe.glsl): a p, b n, c light,
+// d.xyz Hit.error, d.w Hit.sphere (what the shader gets); in[16] the sphere p
+// truly lies on (for the expected value only).
+constexpr int kTrueSphere = 16;
+
+// The geometric truth (reference-model.md): is the segment from the exact
+// surface point to the light free of spheres? p is taken back onto its sphere
+// in double; a sphere is convex, so its own sphere blocks the light only past
+// its far root -2 (p - c).l when the segment goes into it.
+bool visibleInTruth(const Scene& scene, int own, dvec3 p, dvec3 light) {
+    const Sphere& home = scene.spheres[own];
+    p = home.center + home.radius * glm::normalize(p - home.center);
+    dvec3 toLight = light - p;
+    double distance = glm::length(toLight);
+    if (distance == 0.0) return true;
+    dvec3 l = toLight / distance;
+    for (int j = 0; j < int(scene.spheres.size()); ++j) {
+        double t = j == own ? -2.0 * glm::dot(p - home.center, l)
+                            : R::intersectSphere(p, l, scene.spheres[j].center, scene.spheres[j].radius);
+        if (t > 0.0 && t < distance) return false;
+    }
+    return true;
+}
+
+// Visibility as a student's mistaken shadow ray sees it, in double from the
+// point p as the shader has it: `origin` where the ray starts, tMax where it
+// stops, the sphere it starts on skipped only when `leaving` is a sphere.
+double mistakenVisibility(const Scene& scene, const ProbeCase& c, dvec3 origin, double shorten) {
+    dvec3 toLight = get(c, 8) - origin;
+    double distance = glm::length(toLight);
+    dvec3 l = toLight / distance;
+    int leaving = int(f(c, 15));
+    for (int j = 0; j < int(scene.spheres.size()); ++j) {
+        const Sphere& s = scene.spheres[j];
+        double t;
+        if (j == leaving) {
+            double b = glm::dot(origin - s.center, l);
+            t = b >= 0 ? -1.0 : -2.0 * b;
+        } else {
+            t = R::intersectSphere(origin, l, s.center, s.radius);
+        }
+        if (t > 0.0 && t < distance - shorten) return 0.0;
+    }
+    return 1.0;
+}
+
 std::vector<ProbeSpec> shadowProbes() {
-    ProbeSpec o{ProbeFunction::OffsetOrigin, "offsetRayOrigin", "offsetRayOrigin(p, n, magnitude)", 3};
+    ProbeSpec o{ProbeFunction::OffsetOrigin, "offsetRayOrigin", "offsetRayOrigin(p, n, pError)", 3};
     Random rng(404);
     for (double scale : {1e-3, 1.0, 1e3, 1e5}) {
         for (int k = 0; k < 10; ++k) {
             ProbeCase c;
             vec3 p = float(scale) * vec3(float(rng.range(-1, 1)), float(rng.range(-1, 1)), float(rng.range(-1, 1)));
+            vec3 n = rng.unitVector();
             put(c, 0, p);
-            put(c, 4, rng.unitVector());
-            c.in[7] = float(scale * rng.range(1, 3));
-            c.group = scale == 1e-3 ? "tiny scene (magnitude 1e-3)"
+            put(c, 4, n);
+            put(c, 8, hitError(p, n, scale * rng.range(1, 3)));  // a sphere of the scene's size
+            c.group = scale == 1e-3 ? "tiny scene (1e-3)"
                       : scale == 1 ? "unit scene" : scale == 1e3 ? "large scene (1e3)" : "huge scene (1e5)";
             o.cases.push_back(c);
         }
     }
-    o.expected = [](const ProbeCase& c) { return value(R::offsetRayOrigin(get(c, 0), get(c, 4), f(c, 7))); };
-    // The offset is RAY_OFFSET_RELATIVE * magnitude = 1.9e-6 magnitude; p + offset
-    // rounds to ~1 ulp of |p| <= magnitude. A quarter of the offset separates a
-    // right answer (error <= 0.06 of it) from a missing or fixed offset.
-    o.tolerance = [](const ProbeCase& c) { return std::make_pair(0.25 * R::kRayOffsetRelative * f(c, 7), 0.0); };
+    o.expected = [](const ProbeCase& c) { return value(offsetOrigin(get(c, 0), get(c, 4), get(c, 8))); };
+    // The offset d = dot(|n|, e) >= gamma_12 r > 12 u max|p| (r >= |p| above);
+    // p_i + d n_i rounds by at most u |p_i| more. A quarter of d plus 2 u max|p|
+    // (at most 0.42 d) keeps a right answer and rejects a missing offset, an
+    // offset off the normal (>= d / sqrt(3) in some component) or a fixed one.
+    o.tolerance = [](const ProbeCase& c) {
+        dvec3 p = get(c, 0);
+        double d = glm::dot(glm::abs(get(c, 4)), get(c, 8));
+        return std::make_pair(0.25 * d + 2 * kUnitRoundoff * std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))), 0.0);
+    };
     o.describe = [](const ProbeCase& c) {
-        return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " magnitude=" + fmt(f(c, 7));
+        return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " pError=" + fmt(get(c, 8));
     };
+    const std::string formula = "origin = p + dot(abs(n), pError) * n";
     o.mistakes = {
-        {"shadow acne: rays start exactly on the surface", "push the origin along n: p + n * RAY_OFFSET_RELATIVE * magnitude",
+        {"shadow acne: rays start exactly on the surface", "push the origin along n past the error bound: " + formula,
          [](const ProbeCase& c) { return value(get(c, 0)); }},
+        {"the origin is pushed along the error vector, not along the normal",
+         "the offset goes along n; its length is the error bound's extent along n: " + formula,
+         [](const ProbeCase& c) { return value(get(c, 0) + get(c, 8)); }},
+        {"the origin is pushed into the surface", "n faces the side the ray leaves to: add the offset, " + formula,
+         [](const ProbeCase& c) { return value(get(c, 0) - glm::dot(glm::abs(get(c, 4)), get(c, 8)) * get(c, 4)); }},
     };
-    o.mistakes.push_back({"the offset follows |p| alone, not the sphere: acne on big spheres near the origin",
-                          "use hit.magnitude, which includes the centre and radius: p + n * RAY_OFFSET_RELATIVE * magnitude",
-                          [](const ProbeCase& c) {
-                              dvec3 p = get(c, 0);
-                              double size = std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z)));
-                              return value(R::offsetRayOrigin(p, get(c, 4), size));
-                          }});
     for (double epsilon : {1e-2, 1e-3, 1e-4, 1e-5})  // the usual fixed epsilons
         o.mistakes.push_back({"a fixed offset of " + fmt(epsilon) + ": too large for a tiny scene (light leaks), too small "
                               "for a huge one (acne)",
-                              "scale the offset with the size of the numbers: p + n * RAY_OFFSET_RELATIVE * magnitude",
+                              "the offset follows the hit point's error bound, not a constant: " + formula,
                               [epsilon](const ProbeCase& c) { return value(get(c, 0) + epsilon * get(c, 4)); }});
-    o.groupHints = {{"tiny scene (magnitude 1e-3)",
-                     "a fixed epsilon is too large for a tiny scene: scale the offset with magnitude"},
-                    {"huge scene (1e5)", "a fixed epsilon is too small for a huge scene: scale the offset with magnitude"}};
+    o.groupHints = {{"tiny scene (1e-3)", "a fixed epsilon is too large for a tiny scene: use the error bound pError"},
+                    {"huge scene (1e5)", "a fixed epsilon is too small for a huge scene: use the error bound pError"}};
 
     ProbeSpec v{ProbeFunction::Visibility, "lightVisibility", "lightVisibility(hit, lightPosition)", 1};
     v.needsScene = true;
     Scene scene = makeProbeScene();
-    auto addHit = [&](const R::Hit& hit, dvec3 light, const std::string& group) {
+    // A probe hit: p on sphere `own` (or pushed `depth` into it, as far as
+    // its error bound allows), Hit.sphere = `leaving`.
+    auto addHit = [&](int own, dvec3 outward, dvec3 light, int leaving, double depth, const std::string& group) {
+        const Sphere& sp = scene.spheres[own];
+        dvec3 n = glm::normalize(outward);
+        vec3 p = vec3(sp.center + sp.radius * n);
+        vec3 e = hitError(p, vec3(n), sp.radius);
+        p = vec3(dvec3(p) - depth * glm::dot(glm::abs(n), dvec3(e)) * n);
         ProbeCase c;
-        put(c, 0, vec3(hit.p));
-        put(c, 4, vec3(hit.n));
-        c.in[7] = float(hit.magnitude);
+        put(c, 0, p);
+        put(c, 4, vec3(n));
         put(c, 8, vec3(light));
+        put(c, 12, e);
+        c.in[15] = float(leaving);
+        c.in[kTrueSphere] = float(own);
         c.group = group;
         v.cases.push_back(c);
     };
-    // The hit on sphere i in direction `outward` from its centre.
-    auto hitOn = [&](int i, dvec3 outward) {
-        const Sphere& sp = scene.spheres[i];
-        R::Hit hit;
-        hit.n = glm::normalize(outward);
-        hit.p = sp.center + sp.radius * hit.n;
-        hit.magnitude = std::max(std::max(std::fabs(hit.p.x), std::max(std::fabs(hit.p.y), std::fabs(hit.p.z))),
-                                 std::max(std::fabs(sp.center.x), std::max(std::fabs(sp.center.y), std::fabs(sp.center.z))) + sp.radius);
-        return hit;
-    };
-    for (int k = 0; k < 40; ++k) {  // camera rays onto the scene, lit by one light or the other
+    for (int k = 0; k < 60; ++k) {  // camera rays onto the scene, lit by one light or the other
         dvec3 origin(rng.range(-4, 4), rng.range(2, 5), 8);
         dvec3 target(rng.range(-3, 3), rng.range(0, 1.5), rng.range(-1, 1));
         R::Hit hit;
-        if (R::closestHit(scene, origin, glm::normalize(target - origin), hit))
-            addHit(hit, k % 2 ? scene.lights[0].position : scene.lights[1].position, "scene point");
+        if (!R::closestHit(scene, origin, glm::normalize(target - origin), hit)) continue;
+        dvec3 outward = hit.p - scene.spheres[hit.sphere].center;
+        dvec3 light = k % 2 ? scene.lights[0].position : scene.lights[1].position;
+        // The framework asks only for lights in front of the surface (NoL > 0, lighting.glsl).
+        if (glm::dot(light - hit.p, outward) <= 0.0) continue;
+        addHit(hit.sphere, outward, light, hit.sphere, 0.0, "scene point");
     }
     for (int k = 0; k < 8; ++k) {  // ground right beside the red sphere's contact point, light straight above: shadow
         double a = rng.range(0, 2 * R::kPi), d = rng.range(0.1, 0.6);
-        addHit(hitOn(0, dvec3(d * std::cos(a), 100, d * std::sin(a))), {0, 6, 0}, "under an occluder");
+        addHit(0, dvec3(d * std::cos(a), 100, d * std::sin(a)), {0, 6, 0}, 0, 0.0, "under an occluder");
     }
     for (int k = 0; k < 8; ++k) {  // red sphere facing the gold one, the light in between: lit
-        dvec3 towards = scene.spheres[2].center - scene.spheres[1].center;
-        R::Hit hit = hitOn(1, towards + 0.1 * dvec3(rng.unitVector()));
-        double t = R::intersectSphere(hit.p, hit.n, scene.spheres[2].center, scene.spheres[2].radius);
-        if (t > 0) addHit(hit, hit.p + rng.range(0.2, 0.8) * t * hit.n, "occluder beyond the light");
+        dvec3 towards = glm::normalize(scene.spheres[2].center - scene.spheres[1].center + 0.1 * dvec3(rng.unitVector()));
+        dvec3 p = scene.spheres[1].center + scene.spheres[1].radius * towards;
+        double t = R::intersectSphere(p, towards, scene.spheres[2].center, scene.spheres[2].radius);
+        if (t > 0) addHit(1, towards, p + rng.range(0.2, 0.8) * t * towards, 1, 0.0, "occluder beyond the light");
     }
+    // Grazing light over the ground (radius 100), nothing in the way, p as far
+    // inside the ground as its error bound allows, and Hit.sphere = NO_SPHERE:
+    // only a push along n gets the ray out (one along l stays inside).
+    for (int k = 0; k < 12; ++k) {
+        dvec3 outward(rng.range(5, 7), 100, rng.range(-1.5, 1.5));
+        dvec3 n = glm::normalize(outward);
+        dvec3 l = glm::normalize(dvec3(rng.around(vec3(n), rng.range(0.002, 0.02))));
+        dvec3 p = scene.spheres[0].center + 100.0 * n;
+        addHit(0, outward, p + rng.range(0.5, 2.0) * l, -1, 0.9, "grazing light on a large ground");
+    }
+    // The cluster scaled by 1e-3 (spheres 5 and 6): the light sits just inside
+    // the occluder, 2e-5 to 8e-4 past its near side: a shadow ray shortened
+    // by a fixed 1e-3 (or 1e-4) before the light misses the occluder.
+    for (double gap : {2e-5, 2e-4, 8e-4})
+        for (int k = 0; k < 3; ++k) {
+            const Sphere& occluder = scene.spheres[6];
+            dvec3 outward = dvec3(0, 1, 0) + 0.2 * dvec3(rng.range(-1, 1), 0, rng.range(-1, 1));
+            dvec3 p = scene.spheres[5].center + scene.spheres[5].radius * glm::normalize(outward);
+            dvec3 l = glm::normalize(occluder.center - p);
+            double entry = R::intersectSphere(p, l, occluder.center, occluder.radius);
+            addHit(5, outward, p + (entry + gap) * l, 5, 0.0, "light next to an occluder (scene scaled by 1e-3)");
+        }
     v.expected = [scene](const ProbeCase& c) {
-        R::Hit hit;
-        hit.p = get(c, 0);
-        hit.n = get(c, 4);
-        hit.magnitude = f(c, 7);
-        return value(R::lightVisible(scene, hit, get(c, 8)) ? 1.0 : 0.0);
+        return value(visibleInTruth(scene, int(f(c, kTrueSphere)), get(c, 0), get(c, 8)) ? 1.0 : 0.0);
     };
     v.tolerance = [](const ProbeCase&) { return std::make_pair(1e-6, 0.0); };  // 0 or 1 exactly
-    v.describe = [](const ProbeCase& c) { return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " light=" + fmt(get(c, 8)); };
+    v.describe = [](const ProbeCase& c) {
+        return "p=" + fmt(get(c, 0)) + " n=" + fmt(get(c, 4)) + " light=" + fmt(get(c, 8)) + " error=" + fmt(get(c, 12)) +
+               " sphere=" + fmt(f(c, 15));
+    };
+    auto origin = [](const ProbeCase& c) { return offsetOrigin(get(c, 0), get(c, 4), get(c, 12)); };
     v.mistakes = {
         {"spheres beyond the light cast shadows", "only occluders with t < distance to the light count",
+         [scene, origin](const ProbeCase& c) { return value(mistakenVisibility(scene, c, origin(c), -1e30)); }},
+        {"shadow acne under grazing light: the shadow ray starts along l, not along n",
+         "start at offsetRayOrigin(hit.p, hit.n, hit.error): along the normal, whatever the ray's direction",
          [scene](const ProbeCase& c) {
-             dvec3 o = R::offsetRayOrigin(get(c, 0), get(c, 4), f(c, 7));
-             return value(R::anyHitBefore(scene, o, glm::normalize(get(c, 8) - o), 1e30) ? 0.0 : 1.0);
+             dvec3 p = get(c, 0), l = glm::normalize(get(c, 8) - p);
+             return value(mistakenVisibility(scene, c, p + glm::dot(glm::abs(get(c, 4)), get(c, 12)) * l, 0.0));
          }},
+        {"shadow acne: the shadow ray starts at hit.p", "start the shadow ray at offsetRayOrigin(hit.p, hit.n, hit.error)",
+         [scene](const ProbeCase& c) { return value(mistakenVisibility(scene, c, get(c, 0), 0.0)); }},
     };
+    for (double epsilon : {1e-3, 1e-4})
+        v.mistakes.push_back({"lights next to an occluder shine through it: the shadow ray stops " + fmt(epsilon) +
+                                  " before the light",
+                              "tMax is the distance to the light itself: a fixed margin is the whole scene at scale 1e-3",
+                              [scene, origin, epsilon](const ProbeCase& c) {
+                                  return value(mistakenVisibility(scene, c, origin(c), epsilon));
+                              }});
     v.groupHints = {{"occluder beyond the light", "stop the shadow ray at the light: tMax = distance to the light"},
-                    {"scene point", "start the shadow ray at offsetRayOrigin(hit.p, hit.n, hit.magnitude), not at hit.p"}};
+                    {"grazing light on a large ground", "offset along hit.n (offsetRayOrigin), not along the light direction"},
+                    {"light next to an occluder (scene scaled by 1e-3)",
+                     "do not shorten the shadow ray: tMax = distance to the light"},
+                    {"scene point", "start the shadow ray at offsetRayOrigin(hit.p, hit.n, hit.error), not at hit.p"}};
     return {o, v};
 }
 
@@ -941,12 +1050,42 @@ std::vector<ProbeSpec> cookTorranceProbes() {
 
 // ---- 09 reflections ----------------------------------------------------------------------
 
+// The nearest hit from o along unit d, the sphere `leaving` handled as the
+// framework does (intersect_scene.glsl): skipped when the ray leaves its
+// outside, its far root from inside. Returns the sphere, -1 for none.
+int closestHitLeaving(const Scene& scene, dvec3 o, dvec3 d, int leaving, R::Hit& hit) {
+    hit.sphere = -1;
+    hit.t = 1e300;
+    for (int i = 0; i < int(scene.spheres.size()); ++i) {
+        const Sphere& s = scene.spheres[i];
+        double t = R::intersectSphere(o, d, s.center, s.radius);
+        if (i == leaving) {
+            double b = glm::dot(o - s.center, d);
+            t = b >= 0 ? -1.0 : -b + std::sqrt(std::max(0.0, b * b - (glm::dot(o - s.center, o - s.center) - s.radius * s.radius)));
+        }
+        if (t > 0 && t < hit.t) {
+            hit.t = t;
+            hit.sphere = i;
+        }
+    }
+    if (hit.sphere < 0) return -1;
+    const Sphere& s = scene.spheres[hit.sphere];
+    hit.p = o + hit.t * d;
+    hit.n = glm::normalize(hit.p - s.center);
+    if (glm::dot(hit.n, d) > 0) hit.n = -hit.n;
+    auto maxAbs = [](dvec3 v) { return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))); };
+    hit.magnitude = std::max(maxAbs(hit.p), maxAbs(s.center) + s.radius);  // the CPU reference's own shadow offset
+    return hit.sphere;
+}
+
 // A local trace loop with switches for the typical mistakes of exercise 09.
 dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, bool swapReflect) {
     dvec3 radiance(0), throughput(1);
+    int leaving = -1;
     for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
         R::Hit hit;
-        if (!R::closestHit(scene, origin, dir, hit)) {
+        dir = glm::normalize(dir);  // closestHit() renormalises
+        if (closestHitLeaving(scene, origin, dir, leaving, hit) < 0) {
             radiance += throughput * scene.render.background;
             break;
         }
@@ -954,8 +1093,9 @@ dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, 
         const Material& m = scene.spheres[hit.sphere].material;
         double NoV = std::clamp(glm::dot(hit.n, -dir), 1e-4, 1.0);
         if (attenuate) throughput *= R::F_SchlickRoughness(R::baseReflectance(m), NoV, m.roughness);
-        origin = R::offsetRayOrigin(hit.p, hit.n, hit.magnitude);
-        dir = swapReflect ? glm::normalize(hit.n - 2 * glm::dot(dir, hit.n) * dir) : glm::reflect(dir, hit.n);
+        origin = hit.p;
+        dir = swapReflect ? hit.n - 2 * glm::dot(dir, hit.n) * dir : glm::reflect(dir, hit.n);
+        leaving = hit.sphere;
     }
     return radiance;
 }
@@ -1029,6 +1169,20 @@ std::vector<ProbeSpec> reflectionProbes() {
          "reflect(I, N) takes the incident direction first: reflect(dir, hit.n)",
          [scene](const ProbeCase& c) { return value(traceVariant(scene, get(c, 0), get(c, 4), true, true)); }},
     };
+    // probe.glsl marks a case whose bounce starts off offsetRayOrigin(hit.p,
+    // hit.n, hit.error) with PROBE_WRONG_ORIGIN (-2): every ray that hits
+    // something bounces (maxBounces = 3), so the mistake marks each of them.
+    tr.mistakes.push_back({"the bounce starts off the normal (pushed along the reflected ray): the probe reads -2",
+                           "continue from offsetRayOrigin(hit.p, hit.n, hit.error): along the normal, whatever the new direction",
+                           [scene](const ProbeCase& c) {
+                               // Off by |r - n| times the offset: marked where that is over a quarter.
+                               R::Hit hit;
+                               dvec3 d = glm::normalize(get(c, 4));
+                               if (closestHitLeaving(scene, get(c, 0), d, -1, hit) < 0 ||
+                                   glm::length(glm::reflect(d, hit.n) - hit.n) <= 0.25)
+                                   return value(R::traceRadiance(scene, get(c, 0), get(c, 4)));
+                               return value(dvec3(-2.0));
+                           }});
     tr.groupHints = {{"metal sphere (bounces)", "check the bounce: origin offset, reflect(dir, n), throughput"},
                      {"between two facing mirrors", "stop after the primary hit and maxBounces() bounces"}};
     return {fr, tr};

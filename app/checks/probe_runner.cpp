@@ -44,7 +44,7 @@ std::vector<std::array<float, 4>> runProbe(const ShaderProgram& program, const P
     setFrameUniforms(program, s, frame);
     if (scene) {
         block = std::make_unique<SceneUniformBlock>();
-        block->upload(*scene);
+        block->upload(*scene, framePosition(frame));  // probe inputs are in the same coordinates
         block->bind(program);
     }
     gl::ActiveTexture(GL_TEXTURE0);

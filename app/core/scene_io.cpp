@@ -1,5 +1,7 @@
 #include "core/scene_io.h"
 
+#include "core/float_range.h"
+
 #include "core/error.h"
 
 #include <glm/geometric.hpp>
@@ -292,6 +294,9 @@ LoadedScene parseScene(const std::string& text, const std::string& origin) {
     if (s.lights.size() > size_t(kMaxLights))
         top.fail("lights has " + std::to_string(s.lights.size()) + " entries, at most " +
                  std::to_string(kMaxLights) + " are supported");
+    // Finite in double is not enough: the shader computes in float32.
+    std::string range = floatRangeProblem(s);
+    if (!range.empty()) throw Error(origin + ": " + range);
     return out;
 }
 

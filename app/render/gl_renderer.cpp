@@ -22,7 +22,7 @@ GlRenderer::~GlRenderer() {
 
 void GlRenderer::setScene(const Scene& scene) {
     scene_ = scene;
-    sceneBlock_.upload(scene);
+    uploaded_ = false;  // uploaded by draw(), relative to the frame's camera
 }
 
 void GlRenderer::resize(int width, int height) {
@@ -50,6 +50,12 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
     gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     gl::Viewport(0, 0, frame.width, frame.height);
     setFrameUniforms(program, scene_, frame);
+    glm::dvec3 eye = framePosition(frame);
+    if (!uploaded_ || eye != uploadedEye_) {  // the live view's camera moves: the block follows it
+        sceneBlock_.upload(scene_, eye);
+        uploaded_ = true;
+        uploadedEye_ = eye;
+    }
     sceneBlock_.bind(program);
     gl::BindVertexArray(vertexArray_);
     gl::DrawArrays(GL_TRIANGLES, 0, 3);

@@ -35,6 +35,8 @@ private:
     void resize(int width, int height);
     Scene scene_;
     SceneUniformBlock sceneBlock_;
+    bool uploaded_ = false;          // sceneBlock_ holds scene_ relative to uploadedEye_
+    glm::dvec3 uploadedEye_{0.0};
     GLuint vertexArray_ = 0;
     GLuint framebuffer_ = 0;
     GLuint targets_[2] = {0, 0};

@@ -1,6 +1,7 @@
 #include "render/scene_uniforms.h"
 
 #include "core/error.h"
+#include "core/float_range.h"
 #include "render/bounce_cutoff.h"
 
 #include <glm/geometric.hpp>
@@ -46,19 +47,32 @@ SceneUniformBlock::~SceneUniformBlock() {
     if (buffer_) gl::DeleteBuffers(1, &buffer_);
 }
 
-void SceneUniformBlock::upload(const Scene& scene) {
+void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye) {
+    // Camera-relative, in double until the last step (docs/numerics.md): a
+    // scene far from the world origin, or a camera far from the scene, then
+    // loses in float32 only the rounding of what the camera sees.
+    ShaderUnits units = shaderUnits(scene, eye);
+    double unit = units.unit, area = unit * unit;  // powers of two: exact
     SceneBlockData data{};
     for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
         const Sphere& s = scene.spheres[i];
-        data.sphereGeometry[i] = glm::vec4(glm::vec3(s.center), float(s.radius));
+        glm::dvec3 centre = (s.center - eye) / unit;
+        double radius = s.radius / unit;
+        // |oc|^2 - r^2 of every camera ray, as (|oc| - r)(|oc| + r): no cancellation
+        // when the camera is near a huge sphere (error_bounds.glsl, sphereRoots).
+        double distance = glm::length(centre);
+        double cameraC = (distance - radius) * (distance + radius);
+        data.sphereGeometry[i] = glm::vec4(glm::vec3(centre), float(radius));
         data.sphereSurface[i] = glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness));
-        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), 0.0f, 0.0f);
+        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), float(cameraC),
+                                        refinesRoots(scene, i) ? 1.0f : 0.0f);
         data.sphereEdgeTint[i] = glm::vec4(glm::vec3(s.material.edgeTint), 0.0f);
     }
     for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
         const Light& l = scene.lights[i];
-        data.lightPosition[i] = glm::vec4(glm::vec3(l.position), 1.0f);
-        data.lightIntensity[i] = glm::vec4(glm::vec3(l.color * l.intensity), 0.0f);
+        glm::dvec3 intensity = units.lightsTooClose ? glm::dvec3(0.0) : l.color * l.intensity / area;
+        data.lightPosition[i] = glm::vec4(glm::vec3((l.position - eye) / unit), 1.0f);
+        data.lightIntensity[i] = glm::vec4(glm::vec3(intensity), 0.0f);
     }
     gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
     gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
@@ -105,9 +119,18 @@ FrameSettings frameFromScene(const Scene& scene) {
 void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSettings& frame) {
     const RenderSettings& r = scene.render;
     gl::UseProgram(p.id());
-    glm::mat4 camera(frame.cameraToWorld);
+    // Camera-relative (the scene block is uploaded relative to this position),
+    // with tan(fov_y / 2), in double, folded into right and up: the spec's
+    // x r + y u + f with x, y computed at tan = 1 (u_fovY = pi/2) points the
+    // same way, and a fov near 180 degrees no longer rounds past 90 in float.
+    double t = std::tan(0.5 * frame.fovYRadians);
+    glm::dmat4 view = frame.cameraToWorld;
+    view[0] *= t;
+    view[1] *= t;
+    view[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    glm::mat4 camera(view);
     gl::UniformMatrix4fv(p.uniform("u_cameraToWorld"), 1, GL_FALSE, glm::value_ptr(camera));
-    gl::Uniform1f(p.uniform("u_fovY"), float(frame.fovYRadians));
+    gl::Uniform1f(p.uniform("u_fovY"), float(0.5 * 3.14159265358979323846));
     gl::Uniform2f(p.uniform("u_resolution"), float(frame.width), float(frame.height));
     gl::Uniform1i(p.uniform("u_spp"), r.spp);
     gl::Uniform1i(p.uniform("u_sphereCount"), int(scene.spheres.size()));

@@ -22,7 +22,10 @@ public:
     SceneUniformBlock(const SceneUniformBlock&) = delete;
     SceneUniformBlock& operator=(const SceneUniformBlock&) = delete;
 
-    void upload(const Scene& scene);   // spheres and lights
+    // Spheres and lights relative to `eye` (the camera position), computed in
+    // double and rounded to float32 last, with each sphere's |centre - eye|^2
+    // - r^2 (docs/uniforms.md). The frame drawn must be seen from `eye`.
+    void upload(const Scene& scene, const glm::dvec3& eye);
     void bind(const ShaderProgram& program) const;
 
 private:
@@ -42,6 +45,9 @@ struct FrameSettings {
     int viewBounce = 0;
 };
 FrameSettings frameFromScene(const Scene& scene);
+
+// The camera position of a frame: what SceneUniformBlock::upload() needs.
+inline glm::dvec3 framePosition(const FrameSettings& frame) { return glm::dvec3(frame.cameraToWorld[3]); }
 
 // Sets every plain uniform of the ray tracer for `scene` and `frame`.
 void setFrameUniforms(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame);

@@ -12,6 +12,8 @@
 // which runs both sides of every branch under a mask.
 #include "render/shader_config.h"
 
+#include "core/float_range.h"
+
 namespace rl {
 
 ShaderDefines specialisationDefines(const Scene& scene) {
@@ -30,6 +32,18 @@ ShaderDefines specialisationDefines(const Scene& scene) {
     // One sphere is convex: it can shadow only points seen from inside it,
     // which needs no shadow ray (lighting.glsl). No lights: no shadow rays anyway.
     if (spheres == 1) d["RL_SINGLE_SPHERE"] = "1";
+
+    // The spheres whose roots closestHit() refines (error_bounds.glsl): as a
+    // constant mask the loop over the spheres, unrolled, drops the refinement
+    // for every other sphere (on llvmpipe it would run masked for each).
+    long mask = 0;
+    bool fits = true;
+    for (int i = 0; i < spheres; ++i)
+        if (refinesRoots(scene, std::size_t(i))) {
+            if (i < 31) mask |= 1L << i;
+            else fits = false;
+        }
+    if (fits) d["RL_REFINE_SPHERES"] = std::to_string(mask);
 
     // Stopping the bounces early (trace.glsl) needs a bound on what a path can
     // bring back, derived for the reference model only (render/bounce_cutoff.h).

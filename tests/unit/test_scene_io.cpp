@@ -117,6 +117,34 @@ TEST(SceneIo, BadValueNamesTheFieldPath) {
     EXPECT_EQ(errorOf(R"({"render": {"width": 0}})"), "scenes/x.json: render.width must be between 1 and 16384");
 }
 
+// Issue #10: finite in double is not enough, the shader computes in float32.
+// Each value float32 cannot carry is rejected with its field and the limit.
+TEST(SceneIo, ValuesBeyondFloat32AreRejectedWithTheLimit) {
+    const std::string beyond = ", beyond float32's largest value 3.40282e+38 (the shader computes in float32)";
+    EXPECT_EQ(errorOf(R"({"render": {"ambient": 1e39}})"), "scenes/x.json: render.ambient is 1e+39" + beyond);
+    EXPECT_EQ(errorOf(R"({"render": {"exposure": 1e39}})"), "scenes/x.json: render.exposure is 1e+39" + beyond);
+    EXPECT_EQ(errorOf(R"({"render": {"gamma": 1e39}})"), "scenes/x.json: render.gamma is 1e+39" + beyond);
+    EXPECT_EQ(errorOf(R"({"render": {"background": [0, 1e39, 0]}})"), "scenes/x.json: render.background is 1e+39" + beyond);
+    EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 1, -3], "intensity": 1e39}], "spheres": [{"center": [0, 0, -3]}]})"),
+              "scenes/x.json: lights[0].intensity is 1e+39" + beyond);
+    EXPECT_EQ(errorOf(R"({"spheres": [{"center": [0, 0, -3]}, {"center": [1, 0, -3], "radius": 1e-25}]})"),
+              "scenes/x.json: spheres[1].radius is 1e-25, too small for float32: its square is below float32's smallest "
+              "normal value 1.17549e-38");
+    EXPECT_EQ(errorOf(R"({"camera": {"fov_y": 1e-14}})"),
+              "scenes/x.json: camera.fov_y is 1e-14 degrees, below 1.15e-13, where the pixel directions underflow float32");
+}
+
+TEST(SceneIo, ExtremeButRenderableScenesLoad) {
+    // A fov whose float32 half angle would round past 90 degrees (the camera
+    // folds tan, computed in double, into its basis), and a scene scaled by
+    // 1e20 whose intensities (x 1e40) fit float32 in the shader's unit.
+    EXPECT_EQ(errorOf(R"({"camera": {"fov_y": 179.9999982}})"), "(no error)");
+    EXPECT_EQ(errorOf(R"({"camera": {"position": [0, 0, 3e20], "target": [0, 0, 0]},
+                          "lights": [{"position": [0, 1e20, 2e20], "intensity": 4e40}],
+                          "spheres": [{"center": [0, 0, 0], "radius": 1e20}]})"),
+              "(no error)");
+}
+
 TEST(SceneIo, TooManySpheresOrLightsIsAnError) {
     std::string spheres = "{\"spheres\": [";
     for (int i = 0; i < kMaxSpheres + 1; ++i) spheres += (i ? ",{}" : "{}");

@@ -1,0 +1,111 @@
+// error_bounds.glsl: where a hit point can be, and the sphere a secondary ray
+// leaves. The one place that knows about float32 rounding of ray/sphere hits
+// (pbrt-v4, Pharr, Jakob and Humphreys, "Physically Based Rendering", 4th ed.,
+// section 6.8, "Managing Rounding Error"); docs/numerics.md derives every
+// bound. Exercise 04's offsetRayOrigin() turns Hit.error into the one offset.
+//
+// Coordinates are camera-relative (the host subtracts the eye in double before
+// float32, docs/uniforms.md): the camera sits at the origin, so a hit near it
+// is made of small numbers whatever the scene's position in the world.
+
+// u = 2^-24, the unit roundoff of float32: a correctly rounded operation on x
+// is off by at most u |x|.
+const float UNIT_ROUNDOFF = 5.9604644775390625e-8;
+
+// gamma_k = k u / (1 - k u) (Higham; pbrt-v4's gamma(n)): bounds the relative
+// error of k chained roundings.
+float roundingGamma(float k) { return k * UNIT_ROUNDOFF / (1.0 - k * UNIT_ROUNDOFF); }
+
+// Precomputed by the host in double for each sphere: |centre - eye|^2 - r^2,
+// the constant term of every camera ray's quadratic (scene.glsl, u_sphereExtra.z).
+float sphereCameraC(int i) { return u_sphereExtra[i].z; }
+
+// Whether closestHit() refines the exercise's roots on sphere i: the huge
+// spheres of the scene (radius at least REFINE_RADIUS_RATIO times the
+// smallest), the only ones whose |o - c|^2 - r^2 the exercise's float32
+// cancels badly (app/render/scene_uniforms.cpp sets the flag; a specialised
+// shader gets the set as the constant mask RL_REFINE_SPHERES, so the other
+// spheres pay nothing on llvmpipe).
+bool refinesRoot(int i) {
+#ifdef RL_REFINE_SPHERES
+    return i < 31 && ((RL_REFINE_SPHERES >> i) & 1) != 0;
+#else
+    return u_sphereExtra[i].w != 0.0;
+#endif
+}
+
+// The exercise's root t (intersectSphere, 02) refined by one Newton step on
+// g(t) = t^2 + 2 b t + C with C from sphereC(): the step converges to the
+// root t is near, so every choice the exercise makes (hit or miss, near or
+// far root) stands, and its position becomes what float32 must lose. Huge
+// spheres near the camera need it: |o - c|^2 - r^2 in float32 keeps
+// ulp(|o - c|^2) of it (1e3 for a ground of radius 1e5), which moves a hit
+// 0.35 away by 1%; the step leaves t to g's rounding over |g'| = 2 |t + b|.
+// The step is taken only where g rounds less than the exercise's C did,
+// ~u |o - c|^2: a far small sphere (t (t + 2b) ~ |o - c|^2 cancels in g too)
+// keeps the exercise's stable root.
+float refineRoot(vec3 o, vec3 d, int i, float t) {
+    vec3 f = o - sphereCenter(i);
+    float b = dot(f, d);
+    float r = sphereRadius(i);
+    vec3 c = sphereCenter(i);
+    float errorFromEye = abs(sphereCameraC(i)) + 2.0 * dot(abs(o), abs(c)) + dot(o, o);
+    float errorG = abs(t) * abs(t + 2.0 * b) + errorFromEye;
+    if (errorG >= 0.25 * dot(f, f)) return t;
+    float g = t * (t + 2.0 * b) + (sphereCameraC(i) - 2.0 * dot(o, c) + dot(o, o));
+    float step = g / (2.0 * (t + b));
+    return abs(step) < 0.5 * abs(t) ? t - step : t;
+}
+
+// The sphere a secondary ray leaves (its origin lies on it, pushed off by
+// offsetRayOrigin): a sphere is convex, so a ray leaving its outside
+// ((o - c).d >= 0) cannot hit it again, and one leaving its inside hits it
+// exactly once more, at the far root -b + sqrt(b^2 - C), C ~ 0. Exact,
+// whatever the offset: no self-intersection, no contact shadow or reflected
+// silhouette hidden behind an offset.
+// `geometry` is the sphere's centre and radius (closestHit() picks them up in
+// its loop: a dynamic index into the uniform block costs a per-lane gather
+// on llvmpipe, about 5% of a frame here).
+float leavingSphereHit(vec3 o, vec3 d, vec4 geometry) {
+    vec3 f = o - geometry.xyz;
+    float b = dot(f, d);
+    float far = -b + sqrt(max(b * b - (dot(f, f) - geometry.w * geometry.w), 0.0));
+    return b < 0.0 ? far : NO_HIT;
+}
+
+// The hit at o + t d on sphere i, reprojected onto the sphere, with the
+// componentwise bound on its distance from the exact surface point (Hit.error).
+// Two reprojections; the one with the smaller bound along n is kept:
+//   centre form    p' = c + r n,  n = normalize(p - c):
+//                  e = gamma_12 (|p'| + r |n|)             (small or far spheres)
+//   residual form  p' = p - n s,  s = (C_eye - 2 p.c + |p|^2) / 2r:
+//                  e = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
+//                  (a huge sphere near the camera, where c + r n would carry
+//                  ulp(|c|): 0.008 for a ground of radius 1e5)
+// Both include the rounding of the later p' + offset n (u |p'|).
+Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC) {
+    const float GAMMA_2 = 2.0 * UNIT_ROUNDOFF / (1.0 - 2.0 * UNIT_ROUNDOFF);
+    const float GAMMA_10 = 10.0 * UNIT_ROUNDOFF / (1.0 - 10.0 * UNIT_ROUNDOFF);
+    const float GAMMA_12 = 12.0 * UNIT_ROUNDOFF / (1.0 - 12.0 * UNIT_ROUNDOFF);
+    Hit hit;
+    hit.t = t;
+    hit.sphere = i;
+    hit.sphereGeometry = geometry;
+    vec3 c = geometry.xyz;
+    float r = geometry.w;
+    vec3 p = o + t * d;
+    vec3 v = p - c;
+    float inverseLength = inversesqrt(dot(v, v));
+    vec3 n = v * inverseLength;
+    float pp = dot(p, p);
+    float halfInverseRadius = 0.5 / r;
+    // Along n: the residual form's bound, and the centre form's (|c + r n| <= |c| + r).
+    float depthError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+    bool residualForm = depthError < GAMMA_12 * (maxAbs(c) + 2.0 * r);
+    // Both forms move p along n onto the sphere: by -s, or to c + r n.
+    hit.p = residualForm ? p - n * ((cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius) : c + r * n;
+    vec3 an = abs(n);
+    hit.error = residualForm ? depthError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
+    hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
+    return hit;
+}
