@@ -177,7 +177,7 @@ TEST_P(TeachingViewTest, RendersFiniteAndTheWindowShowsIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, TeachingViewTest,
-                         ::testing::Values("final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals",
+                         ::testing::Values("final", "d", "g", "f", "fnv", "diffuse", "specular", "ndotl", "shadow", "normals",
                                            "bounce0", "bounce1", "bounce2"));
 
 TEST_F(ViewTest, NumberKeysSelectTheViews) {
