@@ -605,3 +605,28 @@ TEST_F(LectureTest, SavingWritesOnlyWhatChanged) {
     EXPECT_EQ(c.position, predicted.camera().position) << "shortest round-trip numbers read back exactly";
     EXPECT_EQ(c.up, predicted.camera().up);
 }
+
+// ---- recording ---------------------------------------------------------------------------
+
+// `raylab record --orbit 90`: the first frame is the scene's camera, the last
+// the turntable turned by 90 degrees, both as `raylab render` draws them.
+TEST_F(LectureTest, RecordRendersATurntableOrbitFrameByFrame) {
+    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "4", "--orbit", "90"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (int k = 0; k < 4; ++k) EXPECT_TRUE(fs::exists(dir / "clip" / ("frame-000" + std::to_string(k) + ".png")));
+    RunResult h = runRaylab({"render", lectureScene(), "--size", "96x54", "-o", "first.png"}, env, dir.path());
+    ASSERT_EQ(h.status, 0) << h.err;
+    const DisplayImage first = shot("clip/frame-0000.png"), last = shot("clip/frame-0003.png");
+    EXPECT_LE(comparePictures(first, shot("first.png")).offFraction, 0.005) << "frame 0: the scene's camera";
+    Scene scene = loadSceneFile(lectureScene()).scene;
+    Trackball turned(scene.camera, 96, 54);
+    turned.beginDrag({48, 27}, Trackball::Mode::Turntable);
+    turned.drag({48 + 54 * 90.0 / 180.0, 27});
+    scene.camera = turned.camera();
+    saveSceneFile(scene, (dir / "turned.json").string());
+    h = runRaylab({"render", (dir / "turned.json").string(), "--size", "96x54", "-o", "turned.png"}, env, dir.path());
+    ASSERT_EQ(h.status, 0) << h.err;
+    EXPECT_LE(comparePictures(last, shot("turned.png")).offFraction, 0.005) << "frame 3: turned by 90 degrees";
+    EXPECT_GT(comparePictures(first, last).offFraction, 0.2) << "the orbit moved the camera";
+}
