@@ -36,6 +36,8 @@ void addViewCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "Print the median frame time at exit");
     cmd->add_flag("--fullscreen", options->fullscreen, "Start fullscreen");
     cmd->add_flag("--no-panel", options->hidePanel, "Start with the panel hidden (Tab shows it)");
+    cmd->add_flag("--side-by-side", options->sideBySide,
+                  "With --compare or --compare-model: two full pictures side by side (X toggles)");
     cmd->add_flag("--no-captions", options->hideCaptions,
                   "Start without the caption and colour bar on the picture (K shows them)");
     cmd->add_option("--ui-scale", options->uiScale,

@@ -46,7 +46,7 @@ CaptionLayer::~CaptionLayer() {
 }
 
 void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std::vector<OverlaySegment>& rays,
-                        int width, int height, float uiScale) {
+                        const std::vector<OverlayLabel>& labels, int width, int height, float uiScale) {
     if (width <= 0 || height <= 0) return;
     ContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
@@ -62,6 +62,12 @@ void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std:
     for (const OverlaySegment& r : rays) {
         draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), IM_COL32(0, 0, 0, 200), 4 * l.scale);
         draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), r.colour, 2 * l.scale);
+    }
+    for (const OverlayLabel& label : labels) {
+        const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(l.fontSize, FLT_MAX, 0, label.text.c_str());
+        draw->AddRectFilled(ImVec2(label.x, label.y), ImVec2(label.x + size.x + 2 * l.pad, label.y + size.y + 2 * l.pad),
+                            kBox, 4 * l.scale);
+        draw->AddText(ImGui::GetFont(), l.fontSize, ImVec2(label.x + l.pad, label.y + l.pad), kTitle, label.text.c_str());
     }
     if (!showCaption) {
         ImGui::Render();

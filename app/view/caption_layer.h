@@ -25,8 +25,9 @@ public:
     // Draws into the bound default framebuffer of width x height pixels.
     // Leaves the current ImGui context (the panel's) as it found it.
     // `rays` are drawn first, under the caption. `showCaption` false: the rays only.
-    void draw(const ViewCaption& caption, bool showCaption, const std::vector<OverlaySegment>& rays, int width,
-              int height, float uiScale);
+    // `labels` (side by side) on dark boxes.
+    void draw(const ViewCaption& caption, bool showCaption, const std::vector<OverlaySegment>& rays,
+              const std::vector<OverlayLabel>& labels, int width, int height, float uiScale);
 
 private:
     ImGuiContext* context_ = nullptr;

@@ -53,6 +53,7 @@ const std::vector<KeyBinding>& keyBindings() {
         {GLFW_KEY_PAGE_UP, false, Action::PreviousPreset, 0, "PageUp", "previous preset scene"},
         {GLFW_KEY_PAGE_DOWN, false, Action::NextPreset, 0, "PageDown", "next preset scene"},
         {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (--compare, --compare-model)"},
+        {GLFW_KEY_X, false, Action::ToggleSideBySide, 0, "X", "side by side on / off: two full pictures (--compare, --compare-model)"},
         {GLFW_KEY_LEFT, false, Action::DividerLeft, 0, "Left", "move the wipe divider left"},
         {GLFW_KEY_RIGHT, false, Action::DividerRight, 0, "Right", "move the wipe divider right"},
         {GLFW_KEY_F11, false, Action::ToggleFullscreen, 0, "F11", "fullscreen on / off"},

@@ -28,6 +28,7 @@ enum class Action {
     PreviousPreset,
     NextPreset,
     ToggleCompare,  // the wipe, when --compare is given
+    ToggleSideBySide,  // two full pictures side by side, when --compare is given
     DividerLeft,
     DividerRight,
     ToggleFullscreen,

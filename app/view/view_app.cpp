@@ -144,6 +144,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     state_.savePath = defaultSavePath(scene_.path());  // never the course file itself
     state_.showPanel = !options_.hidePanel;
     state_.showCaptions = !options_.hideCaptions;
+    state_.sideBySide = options_.sideBySide && sides_.size() == 2;
     framesLeft_ = options_.frames;
     if (options_.frames > 0) state_.continuous = true;  // every frame renders: the median is the renderer's
     if (options_.fullscreen) window_->toggleFullscreen();
@@ -196,8 +197,9 @@ void ViewApp::frame() {
     }
     picture_->present(fbWidth_, fbHeight_);
     const std::vector<OverlaySegment> rays = pickedRays();
-    if (state_.showCaptions || !rays.empty())
-        captions_->draw(currentCaption(), state_.showCaptions, rays, fbWidth_, fbHeight_, ui_->scale());
+    const std::vector<OverlayLabel> labels = sideBySideLabels();
+    if (state_.showCaptions || !rays.empty() || !labels.empty())
+        captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_, ui_->scale());
     if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
     pendingShot_.clear();
 
@@ -295,7 +297,10 @@ void ViewApp::renderPicture(bool fullResolution) {
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
     timer_->begin(double(frame.width) * frame.height);
     try {
-        picture_->render(left, right, frame, split);
+        if (sideBySideActive())
+            picture_->renderSideBySide(left, right, frame);
+        else
+            picture_->render(left, right, frame, split);
         runtimeError_.clear();
     } catch (const Error& e) {
         if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -444,7 +449,7 @@ void ViewApp::openPreset(int index) {
 ViewCaption ViewApp::currentCaption() const {
     const Scene& scene = scene_.scene();
     ViewCaption c = viewCaption(state_.view, state_.viewBounce, scene, sides_[0].model.value_or(scene.model));
-    if (wipeActive() && sides_[1].model) {  // --compare-model: name both sides' models
+    if ((wipeActive() || sideBySideActive()) && sides_[1].model) {  // --compare-model: name both sides' models
         const std::string right = viewCaption(state_.view, state_.viewBounce, scene, *sides_[1].model).model;
         if (right != c.model) c.model = "left: " + c.model + "  |  right: " + right;
     }
@@ -491,6 +496,22 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
             if (!l.facesAway) segment(b.p, scene.lights[std::size_t(l.light)].position, l.shadowed ? kShadowed : kLit);
     }
     return out;
+}
+
+std::vector<OverlayLabel> ViewApp::sideBySideLabels() const {
+    if (!sideBySideActive()) return {};
+    const float s = ui_->scale(), margin = 10 * s;
+    // Framebuffer pixels per window unit (the panel is laid out in window units).
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();
+    float leftX = margin;
+    if (state_.showPanel) {  // right of the panel (or its strip): never under it
+        const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
+        const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
+        const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
+        leftX = std::max(leftX, float(panelRight * perUnit.x));
+    }
+    return {{leftX, margin, sides_[0].program->label()},
+            {float(fbWidth_ / 2) + margin, margin, sides_[1].program->label()}};
 }
 
 std::string ViewApp::windowTitle() const {

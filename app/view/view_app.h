@@ -78,7 +78,8 @@ private:
     int currentPreset() const;
     ViewCaption currentCaption() const;
     std::string windowTitle() const;
-    std::vector<OverlaySegment> pickedRays() const;  // the asked pixel's rays, projected by the current camera  // "raylab view - SCENE - IMPLEMENTATIONS"
+    std::vector<OverlaySegment> pickedRays() const;
+    std::vector<OverlayLabel> sideBySideLabels() const;  // the two names, clear of the panel  // the asked pixel's rays, projected by the current camera  // "raylab view - SCENE - IMPLEMENTATIONS"
     int bounceViewLimit() const;  // max bounces + 1: one past the limit shows black
 
     // -- input and actions (view_app_input.cpp)
@@ -94,7 +95,8 @@ private:
     glm::dvec2 toPixels(glm::dvec2 screen) const;  // window (screen) coordinates to framebuffer pixels
     glm::dvec2 toWindowUnits() const;              // framebuffer pixels -> window units: the factor per axis
     double dividerPixel() const;                   // the wipe divider in framebuffer pixels
-    bool wipeActive() const { return sides_.size() == 2 && state_.wipe; }
+    bool wipeActive() const { return sides_.size() == 2 && state_.wipe && !state_.sideBySide; }
+    bool sideBySideActive() const { return sides_.size() == 2 && state_.sideBySide; }
     void cameraMoved();
     // Ask a pixel: the CPU reference's terms at `pixel` (framebuffer, top-left origin).
     void pickPixel(glm::dvec2 pixel);

@@ -320,6 +320,14 @@ void ViewApp::perform(Action action, int argument) {
             state_.wipe = !state_.wipe;
             dirty_ = true;
             break;
+        case Action::ToggleSideBySide:
+            if (sides_.size() < 2) {
+                toast("no side by side: start with --compare DIR or --compare-model MODEL");
+                break;
+            }
+            state_.sideBySide = !state_.sideBySide;
+            dirty_ = true;
+            break;
         case Action::DividerLeft:
         case Action::DividerRight:
             state_.divider =

@@ -55,6 +55,12 @@ struct CaptionLayout {
 };
 CaptionLayout captionLayout(int width, int height, float uiScale);
 
+// A name over the picture (side by side), top-left corner at (x, y) framebuffer pixels.
+struct OverlayLabel {
+    float x, y;
+    std::string text;
+};
+
 // A line drawn over the picture (the asked pixel's rays), framebuffer pixels.
 struct OverlaySegment {
     float x0, y0, x1, y1;

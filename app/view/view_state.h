@@ -25,6 +25,7 @@ struct ViewState {
     bool revealPicked = false;       // the panel opens that sphere once
     bool turntable = false;          // T: left drag orbits as a turntable (no roll) instead of the arcball
     bool wipe = false;               // split screen between --impl (left) and --compare (right)
+    bool sideBySide = false;         // X: two full pictures side by side instead of the wipe
     double divider = 0.5;            // wipe position, fraction of the width from the left
     bool continuous = false;         // render every frame even when nothing changed (fps measurements)
     bool adaptiveResolution = true;  // render fewer pixels while the camera moves

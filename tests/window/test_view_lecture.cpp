@@ -630,3 +630,56 @@ TEST_F(LectureTest, RecordRendersATurntableOrbitFrameByFrame) {
     EXPECT_LE(comparePictures(last, shot("turned.png")).offFraction, 0.005) << "frame 3: turned by 90 degrees";
     EXPECT_GT(comparePictures(first, last).offFraction, 0.2) << "the orbit moved the camera";
 }
+
+// ---- side by side ------------------------------------------------------------------------
+
+// --side-by-side --compare-model blinn-phong: the left half is the scene as
+// `raylab render` draws it at half the width, the right half the same scene
+// with Blinn-Phong; the names sit on the picture, right of the panel.
+TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
+    const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
+    // 960 wide: the panel (340 px) leaves room for the left label in the left half.
+    const int kWidth = 960;
+    writeText(dir / "script.txt", "wait 2\nscreenshot both.png\nscreenshot both-ui.png ui\nquit\n");
+    RunResult r = runRaylab({"view", row, "--size", "960x270", "--no-captions", "--side-by-side", "--compare-model",
+                             "blinn-phong", "--ui-scale", "1", "--script", "script.txt"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    Scene blinn = loadSceneFile(row).scene;
+    blinn.model.blinnPhong = true;
+    saveSceneFile(blinn, (dir / "blinn.json").string());
+    const std::string half = std::to_string(kWidth / 2) + "x" + std::to_string(kHeight);
+    ASSERT_EQ(runRaylab({"render", row, "--size", half, "-o", "left.png"}, env, dir.path()).status, 0);
+    ASSERT_EQ(runRaylab({"render", (dir / "blinn.json").string(), "--size", half, "-o", "right.png"}, env, dir.path())
+                  .status,
+              0);
+    const DisplayImage both = shot("both.png");
+    // The labels sit at the top: compare below them.
+    auto below = [](const DisplayImage& image, int rows) {
+        DisplayImage out{image.width, image.height - rows, {}};
+        out.rgb.assign(image.rgb.begin() + std::ptrdiff_t(rows) * image.width * 3, image.rgb.end());
+        return out;
+    };
+    const int labelRows = 40;
+    EXPECT_LE(comparePictures(below(columns(both, 0, kWidth / 2), labelRows), below(shot("left.png"), labelRows))
+                  .offFraction,
+              0.005)
+        << "left: the scene's model, the full picture at half the width";
+    EXPECT_LE(comparePictures(below(columns(both, kWidth / 2, kWidth), labelRows), below(shot("right.png"), labelRows))
+                  .offFraction,
+              0.005)
+        << "right: Blinn-Phong";
+    // The left label starts right of the panel (340 px wide at scale 1, at most 45% of 480).
+    const PanelRect panel = panelRect(kWidth, kHeight, 1);
+    // The label is where the picture differs from the plain render in the
+    // top rows: its leftmost column must be right of the panel.
+    const DisplayImage left = shot("left.png");
+    int leftmost = kWidth;
+    for (int y = 0; y < labelRows; ++y)
+        for (int x = 0; x < kWidth / 2; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(both.at(x, y)[c]) - int(left.at(x, y)[c])) > 40) leftmost = std::min(leftmost, x);
+    ASSERT_LT(leftmost, kWidth / 2) << "no label on the left picture";
+    EXPECT_GE(leftmost, int(panel.x + panel.width)) << "the left label sits under the panel";
+    maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
+}
