@@ -313,7 +313,6 @@ void ViewApp::renderPicture(bool fullResolution) {
 
 void ViewApp::drawUi(ViewRequests& requests) {
     ui_->beginFrame();
-    takePendingPresses();  // ImGui has now seen the presses at the cursor's current position
     const float scale = ui_->scale();
     PanelInfo info;
     const GLubyte* renderer = gl::GetString(GL_RENDERER);

@@ -84,9 +84,8 @@ private:
 
     // -- input and actions (view_app_input.cpp)
     void installCallbacks();
-    // Mouse presses of the last events, decided once ImGui has seen them
-    // (after beginFrame): the panel's, or the picture's.
-    void takePendingPresses();
+    // A press from the window system: the panel's, an asked pixel, or the camera's.
+    void onPress(int button, int mods, glm::dvec2 pixel);
     void onKey(int key, int action, int mods);
     void onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript);
     void onCursor(glm::dvec2 pixel);
@@ -145,11 +144,6 @@ private:
     bool draggingDivider_ = false;
     int dragButton_ = -1;        // the mouse button of the trackball drag, -1 = none
     static constexpr int kMouseButtons = 3;  // left, right, middle (GLFW's numbering)
-    bool pendingPress_[kMouseButtons] = {};           // pressed, not yet decided
-    glm::dvec2 pendingPressAt_[kMouseButtons] = {};   // where
-    bool releaseBeforeDecision_[kMouseButtons] = {};  // released too before the decision
-    glm::dvec2 releaseAt_[kMouseButtons] = {};
-    int pendingMods_[kMouseButtons] = {};             // GLFW_MOD_ bits of the press
     bool panelOwnsButton_[kMouseButtons] = {};  // pressed on the panel: everything until the release is the panel's
     glm::dvec2 cursor_{0.0};     // framebuffer pixels, from the last motion event
     std::string runtimeError_;   // a GL error while drawing, shown like a shader error

@@ -60,26 +60,19 @@ struct ViewAppCallbacks {
     static void key(GLFWwindow* w, int key, int, int action, int mods) { appOf(w)->onKey(key, action, mods); }
     // The press happens where the last motion event put the cursor: asking
     // the window system now (glfwGetCursorPos) would give where the mouse is
-    // by the time a slow frame lets the events through. Whether it belongs
-    // to the panel is decided after this frame's ImGui::NewFrame, which sees
-    // the press at the cursor's current position (takePendingPresses); the
-    // previous frame's hover state is stale when the pointer has just
-    // arrived on the panel.
+    // by the time a slow frame lets the events through. It belongs to the
+    // panel when that point lies on a window of the last frame drawn (what
+    // the user saw under the pointer; ImGui's own hover state is polled at
+    // NewFrame and is stale when the pointer has just arrived), and then so
+    // does everything up to its release.
     static void button(GLFWwindow* w, int button, int action, int mods) {
         ViewApp* app = appOf(w);
         if (button < 0 || button >= ViewApp::kMouseButtons) return;
         if (action == GLFW_PRESS) {
-            app->pendingPress_[button] = true;
-            app->pendingMods_[button] = mods;
-            app->pendingPressAt_[button] = app->cursor_;
+            app->onPress(button, mods, app->cursor_);
             return;
         }
-        if (app->pendingPress_[button]) {  // pressed and released between two frames: decide the press first
-            app->releaseBeforeDecision_[button] = true;
-            app->releaseAt_[button] = app->cursor_;
-            return;
-        }
-        if (app->panelOwnsButton_[button]) {  // a press on the panel: its release is the panel's too
+        if (app->panelOwnsButton_[button]) {  // a press on the panel (or a pick): its release is not the camera's
             app->panelOwnsButton_[button] = false;
             return;
         }
@@ -96,23 +89,15 @@ struct ViewAppCallbacks {
     }
 };
 
-void ViewApp::takePendingPresses() {
-    for (int b = 0; b < kMouseButtons; ++b) {
-        if (!pendingPress_[b]) continue;
-        pendingPress_[b] = false;
-        // On a window the user saw under the pointer, or ImGui holds the
-        // mouse (a text field, an open combo): the panel's.
-        const glm::dvec2 at = pendingPressAt_[b] * toWindowUnits();
-        if (ui_->isOverUi(at.x, at.y) || ui_->wantsMouse()) {
-            panelOwnsButton_[b] = !releaseBeforeDecision_[b];  // kept until the release
-        } else if (b == GLFW_MOUSE_BUTTON_LEFT && ((pendingMods_[b] & GLFW_MOD_CONTROL) || state_.pickMode)) {
-            pickPixel(pendingPressAt_[b]);  // ask the pixel; the camera stays
-            panelOwnsButton_[b] = !releaseBeforeDecision_[b];  // its release is no drag's end
-        } else {
-            onMouseButton(b, true, pendingPressAt_[b], false);
-            if (releaseBeforeDecision_[b]) onMouseButton(b, false, releaseAt_[b], false);
-        }
-        releaseBeforeDecision_[b] = false;
+void ViewApp::onPress(int button, int mods, glm::dvec2 pixel) {
+    const glm::dvec2 at = pixel * toWindowUnits();
+    if (ui_->isOverUi(at.x, at.y) || ui_->wantsMouse()) {  // the panel's (or a text field's, an open combo's)
+        panelOwnsButton_[button] = true;
+    } else if (button == GLFW_MOUSE_BUTTON_LEFT && ((mods & GLFW_MOD_CONTROL) || state_.pickMode)) {
+        pickPixel(pixel);  // ask the pixel; the camera stays
+        panelOwnsButton_[button] = true;
+    } else {
+        onMouseButton(button, true, pixel, false);
     }
 }
 
