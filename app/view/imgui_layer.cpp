@@ -45,7 +45,9 @@ void ImGuiLayer::endFrame() {
     ImGui::Render();
     windows_.clear();
     for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
-        if (w->LastFrameActive == ImGui::GetFrameCount() && !w->Hidden)  // begun this frame, collapsed or not
+        // Begun this frame (collapsed or not), shown, and not ImGui's implicit
+        // "Debug##Default" window, which is never drawn but spans 400x400.
+        if (w->LastFrameActive == ImGui::GetFrameCount() && !w->Hidden && !w->IsFallbackWindow)
             windows_.push_back({w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y});
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

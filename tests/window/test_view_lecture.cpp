@@ -686,3 +686,20 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     EXPECT_GE(leftmost, int(panel.x + panel.width)) << "the left label sits under the panel";
     maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
 }
+
+// Ctrl+click through the X server asks the pixel (and leaves the camera alone).
+TEST_F(LectureTest, CtrlClickAsksThePixel) {
+    Process viewer({RAYLAB_BINARY, "view", lectureScene(), "--size", kSize, "--no-panel", "--no-captions"}, env,
+                   dir.path());
+    RunResult found = xdotool({"search", "--sync", "--onlyvisible", "--name", "raylab view"}, env, dir.path());
+    ASSERT_EQ(found.status, 0) << found.err;
+    const std::string window = found.out.substr(0, found.out.find('\n'));
+    RunResult input = xdotool({"mousemove", "--window", window, "268", "122", "keydown", "ctrl", "click", "1",
+                               "keyup", "ctrl", "sleep", "0.5", "key", "q"},
+                              env, dir.path());
+    ASSERT_EQ(input.status, 0) << input.err;
+    RunResult r = viewer.wait(std::chrono::seconds(60));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("raylab: ask a pixel at (268, 122)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("spheres[3] (of 6)"), std::string::npos) << "the blue sphere: " << r.out;
+}
