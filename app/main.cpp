@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     rl::addBenchCommand(app);
 #ifdef RAYLAB_WITH_GLFW
     rl::addViewCommand(app);
+    rl::addRecordCommand(app);
 #else
     app.add_subcommand("view", "The live window (not in this build)")->allow_extras()->callback([] {
         throw rl::Error("view: this build has no window support (RAYLAB_WITH_GLFW=OFF); use `raylab render`");

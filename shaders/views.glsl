@@ -10,13 +10,22 @@ uniform int u_viewBounce;  // for VIEW_BOUNCE: 0 = primary hit, 1 = first reflec
 const int VIEW_FINAL = 0;     // the picture
 const int VIEW_D = 1;         // GGX D, shown as D / (1 + D)
 const int VIEW_G = 2;         // Smith G
-const int VIEW_F = 3;         // Schlick F (rgb)
+const int VIEW_F = 3;         // Schlick F(v.h) of the key light (rgb), log display (fresnelDisplay)
 const int VIEW_DIFFUSE = 4;   // diffuse radiance of all lights (through the display step)
 const int VIEW_SPECULAR = 5;  // specular radiance of all lights (through the display step)
 const int VIEW_NDOTL = 6;     // n.l of the key light
 const int VIEW_SHADOW = 7;    // 1 where the key light is visible, 0 in its shadow
 const int VIEW_NORMALS = 8;   // n * 0.5 + 0.5
 const int VIEW_BOUNCE = 9;    // the contribution of bounce u_viewBounce alone
+const int VIEW_F_NOV = 10;    // F(n.v) = F_SchlickRoughness: the mirror bounce's weight (rgb), log display
+
+// The F views show log10(F) from 0.01 (black) to 1 (white): a dielectric's
+// 0.04 is 0.30 (visible on a projector), the grazing rim reaches 1. The
+// window's colour bar (app/view/view_caption.cpp) labels the same mapping.
+vec3 fresnelDisplay(vec3 F) {
+    const float kLowest = 0.01;  // two decades: below 1% nothing reflects visibly
+    return clamp(log(max(F, vec3(kLowest))) / log(10.0) / 2.0 + 1.0, 0.0, 1.0);
+}
 
 // Linear values in [0, 1] for the term views (radiance views are handled by
 // main() through the display step).
@@ -70,13 +79,20 @@ vec3 teachingView(vec3 origin, vec3 dir) {
 #endif
         return vec3(isStub(G) ? 0.0 : G);
     }
-    if (u_view == VIEW_F) {
+    if (u_view == VIEW_F || u_view == VIEW_F_NOV) {
+        // F(v.h) weighs the highlight of the key light and does not depend on
+        // n; F(n.v) is the throughput factor of the mirror bounce (exercise
+        // 09, every model variant) and brightens towards the rims.
+        if (u_view == VIEW_F_NOV) {
+            vec3 Fr = F_SchlickRoughness(baseReflectance(m), NoV, m.roughness);
+            return isStub(Fr) ? vec3(0.0) : fresnelDisplay(Fr);
+        }
 #ifdef RL_MODEL_VARIANTS
         vec3 F = modelF(baseReflectance(m), sphereEdgeTint(hit.sphere), dot(v, h));
 #else
         vec3 F = F_Schlick(baseReflectance(m), dot(v, h));
 #endif
-        return isStub(F) ? vec3(0.0) : F;
+        return isStub(F) ? vec3(0.0) : fresnelDisplay(F);
     }
     return vec3(0.0);
 }

@@ -53,18 +53,29 @@ void Trackball::setViewport(int width, int height) {
 }
 
 void Trackball::reset() {
-    // The spec's basis: f = normalize(target - position), r = normalize(cross(f, up)), u = cross(r, f).
     const Camera& c = sceneCamera_;
-    glm::dvec3 f = glm::normalize(c.target - c.position);
-    glm::dvec3 r = glm::normalize(glm::cross(f, c.up));
+    const double distance = glm::length(c.target - c.position);
+    minDistance_ = kMinDistanceFraction * distance;
+    maxDistance_ = kMaxDistanceFactor * distance;
+    setView(c);
+}
+
+bool Trackball::setView(const Camera& c) {
+    // The spec's basis: f = normalize(target - position), r = normalize(cross(f, up)), u = cross(r, f).
+    const glm::dvec3 toTarget = c.target - c.position;
+    const double distance = glm::length(toTarget);
+    if (!(distance > 0.0) || !std::isfinite(distance)) return false;
+    glm::dvec3 f = toTarget / distance;
+    glm::dvec3 side = glm::cross(f, c.up);
+    if (!(glm::length(side) > kParallelUpTolerance * glm::length(c.up))) return false;
+    glm::dvec3 r = glm::normalize(side);
     glm::dvec3 u = glm::cross(r, f);
     orientation_ = glm::normalize(glm::quat_cast(glm::dmat3(r, u, -f)));
     target_ = c.target;
-    distance_ = glm::length(c.target - c.position);
-    fovYRadians_ = glm::radians(c.fovYDegrees);
-    minDistance_ = kMinDistanceFraction * distance_;
-    maxDistance_ = kMaxDistanceFactor * distance_;
+    distance_ = distance;
+    fovYRadians_ = glm::radians(sceneCamera_.fovYDegrees);  // the field of view stays the scene's
     dragging_ = false;
+    return true;
 }
 
 glm::dvec3 Trackball::pointOnBall(glm::dvec2 windowPixel) const {
@@ -93,7 +104,29 @@ void Trackball::beginDrag(glm::dvec2 windowPixel, Mode mode) {
 
 void Trackball::drag(glm::dvec2 windowPixel) {
     if (!dragging_ || !finite(windowPixel)) return;
-    if (mode_ == Mode::Rotate) {
+    if (mode_ == Mode::Turntable) {
+        // Elevation e and heading about U (the scene file's up): a move of
+        // (dx, dy) pixels turns the scene by dx pi/height about U and tilts it
+        // by dy pi/height about the camera's right, so the point under the
+        // cursor follows it (the camera turns the other way). The camera's up
+        // is rebuilt from U every time: no roll, whatever the start was.
+        const double perPixel = 3.14159265358979323846 / height_;
+        const glm::dvec2 moved = windowPixel - startPixel_;
+        const glm::dvec3 U = glm::normalize(sceneCamera_.up);
+        const glm::dvec3 f0 = startOrientation_ * glm::dvec3(0.0, 0.0, -1.0);
+        glm::dvec3 heading = f0 - glm::dot(f0, U) * U;
+        if (glm::length(heading) < kParallelUpTolerance)  // looking straight along U: head along the camera's up
+            heading = startOrientation_ * glm::dvec3(0.0, glm::dot(f0, U) > 0 ? -1.0 : 1.0, 0.0);
+        heading = glm::normalize(heading - glm::dot(heading, U) * U);
+        const double limit = 0.5 * 3.14159265358979323846 - kTurntablePolarMarginRadians;
+        const double elevation =
+            std::clamp(std::asin(std::clamp(glm::dot(f0, U), -1.0, 1.0)) - moved.y * perPixel, -limit, limit);
+        heading = glm::angleAxis(-moved.x * perPixel, U) * heading;
+        const glm::dvec3 f = std::cos(elevation) * heading + std::sin(elevation) * U;
+        const glm::dvec3 r = glm::normalize(glm::cross(f, U));
+        const glm::dvec3 u = glm::cross(r, f);
+        orientation_ = glm::normalize(glm::quat_cast(glm::dmat3(r, u, -f)));
+    } else if (mode_ == Mode::Rotate) {
         // Shoemake's q = [p0 . p1, p0 x p1]: unit for unit p0, p1, and a turn
         // about p0 x p1 by twice the arc from p0 to p1. It turns the scene as
         // seen from the camera; the camera turns the other way, by conj(q)

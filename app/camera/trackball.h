@@ -29,8 +29,11 @@ namespace rl {
 class Trackball {
 public:
     enum class Mode {
-        Rotate,  // left button: orbit about the target
-        Pan,     // right or middle button: move position and target in the view plane
+        Rotate,     // left button: orbit about the target (arcball)
+        Pan,        // right or middle button: move position and target in the view plane
+        Turntable,  // left button, turntable orbit: yaw about the scene's up, pitch about the
+                    // camera's right; the horizon stays level (no roll), the pitch stops short
+                    // of the poles
     };
 
     // Throws rl::Error when position == target or up is parallel to the view
@@ -54,6 +57,11 @@ public:
 
     // Back to the scene file's camera (ends any drag).
     void reset();
+    // Jumps to `camera` (a named camera of the live view; ends any drag);
+    // reset() still goes back to the scene file's; the field of view stays
+    // the scene file's. False, and no change,
+    // for a camera without a view direction or with up along it.
+    bool setView(const Camera& camera);
 
     // The current view. `up` is orthonormal to the view direction, so the
     // spec's camera formulas give the same basis as cameraToWorld*().
@@ -74,6 +82,10 @@ public:
     // One wheel notch brings the camera 10% closer: 7 notches halve the
     // distance, fine enough to place the camera, quick enough to cross a scene.
     static constexpr double kDollyPerStep = 0.9;
+    // Turntable: a drag over the window's height turns half a turn, as a
+    // drag across the arcball does; the pitch stays 1 degree off the poles,
+    // where yaw about up and the view direction would coincide.
+    static constexpr double kTurntablePolarMarginRadians = 0.017453292519943295;
 
 private:
     // Settings from the scene file, restored by reset().

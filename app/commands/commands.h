@@ -11,6 +11,7 @@ void addCheckCommand(CLI::App& app);
 void addGradeCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
+void addRecordCommand(CLI::App& app);
 
 // Shared option parsing.
 struct Size {

@@ -103,7 +103,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
-    cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, diffuse, specular, ndotl, shadow, normals, bounceK")
+    cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");
     cmd->add_flag("--generic", options->generic, "Use the generic shader, not one specialised to the scene");

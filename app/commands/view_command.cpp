@@ -1,7 +1,7 @@
 // raylab view [SCENE] [--impl DIR] [--compare DIR] [--compare-model blinn-phong|pbr]
 //             [--size WxH] [--view NAME]
 //             [--frames N [--screenshot out.png]] [--script FILE] [--stats]
-//             [--fullscreen] [--no-panel] [--ui-scale S]
+//             [--fullscreen] [--no-panel] [--no-captions] [--ui-scale S]
 // The live window (app/view/view_app.h); compiled only with RAYLAB_WITH_GLFW
 // (main.cpp says so otherwise). docs/lecture.md is the user's guide.
 #include "commands/commands.h"
@@ -25,7 +25,7 @@ void addViewCommand(CLI::App& app) {
         ->check(CLI::IsMember({"blinn-phong", "pbr"}));
     cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT (default: the scene's size)");
     cmd->add_option("--view", options->view,
-                    "Teaching view at start: final, d, g, f, diffuse, specular, ndotl, shadow, normals, bounceK")
+                    "Teaching view at start: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     CLI::Option* frames = cmd->add_option("--frames", options->frames,
                                           "Render N frames (after the --script, if any), print timings, exit")
@@ -36,6 +36,10 @@ void addViewCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "Print the median frame time at exit");
     cmd->add_flag("--fullscreen", options->fullscreen, "Start fullscreen");
     cmd->add_flag("--no-panel", options->hidePanel, "Start with the panel hidden (Tab shows it)");
+    cmd->add_flag("--side-by-side", options->sideBySide,
+                  "With --compare or --compare-model: two full pictures side by side (X toggles)");
+    cmd->add_flag("--no-captions", options->hideCaptions,
+                  "Start without the caption and colour bar on the picture (K shows them)");
     cmd->add_option("--ui-scale", options->uiScale,
                     "Panel and text scale, e.g. 2 for a projector (default: the screen's)")
         ->check(CLI::Range(0.5, 4.0));

@@ -86,7 +86,7 @@ void SceneUniformBlock::bind(const ShaderProgram& program) const {
 }
 
 namespace {
-const char* const kViewNames[] = {"final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce"};
+const char* const kViewNames[] = {"final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce", "fnv"};
 }
 
 View parseView(const std::string& name, int& bounce) {
@@ -99,7 +99,7 @@ View parseView(const std::string& name, int& bounce) {
         return View::Bounce;
     }
     throw Error("--view: unknown view '" + name +
-                "' (expected final, d, g, f, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
+                "' (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
 }
 
 std::string viewName(View view, int bounce) {

@@ -33,8 +33,9 @@ private:
 };
 
 // Teaching views of shaders/views.glsl; VIEW_FINAL is the picture.
-enum class View { Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce };
-View parseView(const std::string& name, int& bounce);  // "final", "d", ..., "bounce2"; throws rl::Error
+// FresnelNoV ("fnv") is F(n.v), the mirror bounce's weight, beside F (F(v.h)).
+enum class View { Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce, FresnelNoV };
+View parseView(const std::string& name, int& bounce);  // "final", "d", ..., "bounce2", "fnv"; throws rl::Error
 std::string viewName(View view, int bounce = 0);
 
 struct FrameSettings {

@@ -18,7 +18,11 @@ double AdaptiveResolution::scale(bool moving, int fullWidth, int fullHeight) con
     const double fullMs = msPerPixel_ * double(fullWidth) * double(fullHeight);
     if (fullMs <= kMovingBudgetMs) return 1.0;
     const double s = std::sqrt(kMovingBudgetMs / fullMs);  // both sides shrink: cost goes with s^2
-    return std::clamp(std::floor(s / kStep) * kStep, kMinScale, 1.0);
+    // The largest power of kStepRatio not above s (1e-9: s exactly a power stays that power).
+    const double steps = std::ceil(std::log(s) / std::log(kStepRatio) - 1e-9);
+    const double quantised = std::pow(kStepRatio, steps);
+    const double floor = std::min(1.0, double(kMinRows) / std::max(fullHeight, 1));
+    return std::clamp(quantised, floor, 1.0);
 }
 
 }  // namespace rl

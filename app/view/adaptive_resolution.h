@@ -11,12 +11,14 @@ public:
     // While moving, aim for 30 frames a second: the rate at which a drag
     // still feels attached to the mouse.
     static constexpr double kMovingBudgetMs = 1000.0 / 30.0;
-    // Never below a quarter of the width: spheres stay recognisable and the
-    // upscaled picture still shows where a highlight goes.
-    static constexpr double kMinScale = 0.25;
-    // Scales are multiples of 1/8, so small changes in the measured cost do
-    // not reallocate the render targets every frame.
-    static constexpr double kStep = 0.125;
+    // As low as the budget needs, but never fewer than 36 rows: at 1080p
+    // that is 1/30 of the height, and a lecture-scene sphere is still ~4 rows
+    // tall, enough to follow the drag (llvmpipe at 1080p needs ~1/9).
+    static constexpr int kMinRows = 36;
+    // Scales are powers of 1/sqrt(2) (each step halves the pixels), so small
+    // changes in the measured cost do not reallocate the render targets
+    // every frame, and a slow machine reaches its scale in a few steps.
+    static constexpr double kStepRatio = 0.70710678118654752;
 
     bool enabled = true;  // panel: "lower resolution while moving"
 

@@ -1,6 +1,7 @@
 #include "view/imgui_layer.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the windows' rectangles (isOverUi)
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
@@ -42,6 +43,12 @@ void ImGuiLayer::beginFrame() {
 
 void ImGuiLayer::endFrame() {
     ImGui::Render();
+    windows_.clear();
+    for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+        // Begun this frame (collapsed or not), shown, and not ImGui's implicit
+        // "Debug##Default" window, which is never drawn but spans 400x400.
+        if (w->LastFrameActive == ImGui::GetFrameCount() && !w->Hidden && !w->IsFallbackWindow)
+            windows_.push_back({w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y});
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
@@ -51,6 +58,12 @@ void ImGuiLayer::setScale(float scale) {
     style = baseStyle();
     style.ScaleAllSizes(scale_);
     ImGui::GetIO().FontGlobalScale = scale_;
+}
+
+bool ImGuiLayer::isOverUi(double x, double y) const {
+    for (const Rect& r : windows_)
+        if (x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) return true;
+    return false;
 }
 
 bool ImGuiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }

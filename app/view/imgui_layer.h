@@ -2,6 +2,8 @@
 // scale for projectors (font and every size scaled together).
 #pragma once
 
+#include <vector>
+
 struct GLFWwindow;
 
 namespace rl {
@@ -28,10 +30,20 @@ public:
 
     // True while ImGui uses the mouse (over the panel) or the keyboard (a text field).
     bool wantsMouse() const;
+    // True when (x, y), in window units, lies on a window of the last frame
+    // drawn (the panel, a popup, the help, the error box): what the user saw
+    // under the pointer when pressing. ImGui 1.86's GLFW backend polls the
+    // cursor only at NewFrame, so ImGui's own hover state can be stale by the
+    // time a press made in the same instant as a move is handled.
+    bool isOverUi(double x, double y) const;
     bool wantsKeyboard() const;
 
 private:
     float scale_ = 1.0f;
+    struct Rect {
+        float x0, y0, x1, y1;
+    };
+    std::vector<Rect> windows_;  // the visible windows of the last frame
 };
 
 }  // namespace rl

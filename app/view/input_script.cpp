@@ -109,6 +109,10 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
             c.kind = K::Divider;
             c.value = r.number("a fraction of the width");
             if (c.value < 0 || c.value > 1) r.fail("divider must be between 0 and 1");
+        } else if (verb == "pick") {
+            c.kind = K::Pick;
+            c.to.x = r.number("a pixel x");
+            c.to.y = r.number("a pixel y");
         } else if (verb == "resize") {
             c.kind = K::Resize;
             c.to.x = r.integer("a width", 1);
@@ -126,7 +130,7 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
         } else {
             r.fail(
                 "unknown command '" + verb +
-                "' (expected wait, sleep, wait-reload, drag, scroll, key, view, divider, resize, screenshot or quit)");
+                "' (expected wait, sleep, wait-reload, drag, scroll, key, view, divider, pick, resize, screenshot or quit)");
         }
         r.end();
         out.push_back(c);

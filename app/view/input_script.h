@@ -17,6 +17,8 @@
 //   key R                       press a key (names as in the help: R, 6, F11, Ctrl+S, Up)
 //   view normals                select a teaching view by name (as render --view)
 //   divider 0.3                 put the wipe divider at 30% of the width
+//   pick 200 150                ask the pixel at (200,150) (as Ctrl+click): its terms from
+//                               the CPU reference, printed and shown in the panel
 //   resize 320 240              set the window size (screen coordinates)
 //   screenshot out.png [ui]     write the picture (or, with `ui`, the whole window)
 //   quit                        exit now (status 0, or 1 while an error is shown)
@@ -32,13 +34,13 @@
 namespace rl {
 
 struct ScriptCommand {
-    enum class Kind { Wait, Sleep, WaitReload, Drag, Scroll, Key, View, Divider, Resize, Screenshot, Quit };
+    enum class Kind { Wait, Sleep, WaitReload, Drag, Scroll, Key, View, Divider, Pick, Resize, Screenshot, Quit };
     Kind kind = Kind::Wait;
     int line = 0;                   // in the script file, for messages
     int count = 0;                  // Wait: frames; Drag: steps; Scroll: steps
     double seconds = 0;             // Sleep, WaitReload
     double value = 0;               // Divider
-    glm::dvec2 from{0.0}, to{0.0};  // Drag; Resize uses `to` as the size
+    glm::dvec2 from{0.0}, to{0.0};  // Drag; Resize uses `to` as the size, Pick as the pixel
     int button = 0;                 // Drag: 0 left, 1 right, 2 middle (GLFW's numbering)
     std::string text;               // Key: the key name; View: the view name; Screenshot: the file
     bool withUi = false;            // Screenshot

@@ -12,8 +12,13 @@ namespace rl {
 enum class Action {
     ToggleHelp,
     TogglePanel,
+    ToggleCaptions,  // the caption and colour bar drawn on the picture
+    ToggleOrbit,     // left drag: arcball <-> turntable (no roll)
+    TogglePickMode,  // a left click asks the pixel (Ctrl+click always does)
+    RecallCamera,    // argument: 1..8, the named camera F1..F8
+    StoreCamera,     // argument: 1..8
     ResetCamera,
-    SetView,     // argument: the view number 0..9
+    SetView,     // argument: the view number 0..10 (rl::View)
     BounceDown,  // the k of view 9 (bounce k)
     BounceUp,
     ExposureDown,
@@ -23,6 +28,7 @@ enum class Action {
     PreviousPreset,
     NextPreset,
     ToggleCompare,  // the wipe, when --compare is given
+    ToggleSideBySide,  // two full pictures side by side, when --compare is given
     DividerLeft,
     DividerRight,
     ToggleFullscreen,

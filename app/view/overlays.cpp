@@ -5,6 +5,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace rl {
 namespace {
@@ -41,21 +43,32 @@ void drawHelpOverlay(bool& open) {
     if (ImGui::Begin(
             "Keys and mouse (H or Escape closes)", &open,
             ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
-        // The second column starts after the longest key or mouse input, plus two spaces.
-        float column = 0;
-        for (const MouseBinding& m : mouseBindings()) column = std::max(column, ImGui::CalcTextSize(m.input).x);
-        for (const KeyBinding& k : keyBindings()) column = std::max(column, ImGui::CalcTextSize(k.keys).x);
-        column += ImGui::CalcTextSize("  ").x + ImGui::GetStyle().WindowPadding.x;
-        for (const MouseBinding& m : mouseBindings()) {
-            ImGui::TextUnformatted(m.input);
-            ImGui::SameLine(column);
-            ImGui::TextUnformatted(m.what);
-        }
-        ImGui::Separator();
-        for (const KeyBinding& k : keyBindings()) {
-            ImGui::TextUnformatted(k.keys);
-            ImGui::SameLine(column);
-            ImGui::TextUnformatted(k.what);
+        // Every row: the input, what it does. Keys with no text of their own
+        // (F2..F8) are listed under the first of their group.
+        std::vector<std::pair<const char*, const char*>> rows;
+        for (const MouseBinding& m : mouseBindings()) rows.push_back({m.input, m.what});
+        for (const KeyBinding& k : keyBindings())
+            if (*k.what) rows.push_back({k.keys, k.what});
+        // As many column pairs as it takes to fit the window's height (a
+        // projector at UI scale 2 or 3 has room for ~20 lines): the help
+        // never scrolls where it can spread sideways.
+        const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+        const float available = viewport->Size.y * kMaxHelpSize - 4 * rowHeight;  // title and padding
+        const int perColumn = std::max(1, int(available / rowHeight));
+        const int groups = std::clamp((int(rows.size()) + perColumn - 1) / perColumn, 1, 3);
+        const int perGroup = (int(rows.size()) + groups - 1) / groups;
+        if (ImGui::BeginTable("##help", 2 * groups, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_PadOuterX)) {
+            for (int r = 0; r < perGroup; ++r) {
+                ImGui::TableNextRow();
+                for (int g = 0; g < groups; ++g) {
+                    const int index = g * perGroup + r;
+                    ImGui::TableNextColumn();
+                    if (index < int(rows.size())) ImGui::TextUnformatted(rows[std::size_t(index)].first);
+                    ImGui::TableNextColumn();
+                    if (index < int(rows.size())) ImGui::TextUnformatted(rows[std::size_t(index)].second);
+                }
+            }
+            ImGui::EndTable();
         }
     }
     ImGui::End();

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <type_traits>
@@ -20,6 +21,7 @@ constexpr float kMinGamma = 1.0f;         // 1 = no encoding ("gamma off"); belo
 constexpr float kMaxGamma = 3.0f;         // beyond any real display's 2.2-2.6
 constexpr float kMaxIntensity = 1000.0f;  // W-like units: the lecture scene's key light is 40
 constexpr int kSppChoices[] = {1, 4, 9, 16};  // square numbers, as the spec requires
+constexpr float kMaxPanelFraction = 0.45f;    // of the window's width: the picture keeps the larger part
 
 const ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;  // typed values obey the range too
 
@@ -84,8 +86,10 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out) {
             }
         ImGui::EndCombo();
     }
+    ImGui::Checkbox("caption and colour bar (K)", &state.showCaptions);
     if (state.view == View::Bounce) {
-        if (ImGui::SliderInt("bounce k", &state.viewBounce, 0, std::max(scene.render.maxBounces, 0), "%d", kClamp))
+        // One past max bounces: "beyond the limit it is black", shown live.
+        if (ImGui::SliderInt("bounce k", &state.viewBounce, 0, std::max(scene.render.maxBounces, 0) + 1, "%d", kClamp))
             out.redraw = true;
     }
 }
@@ -150,7 +154,19 @@ void modelSection(Scene& scene, ViewRequests& out) {
     }
 }
 
-void materialsSection(Scene& scene, ViewRequests& out) {
+void pickedSection(ViewState& state) {
+    if (state.pickedText.empty()) return;
+    if (state.revealPicked) ImGui::SetNextItemOpen(true);
+    if (!ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)")) return;
+    // Its own scrolling box: two lights and two bounces are ~25 lines.
+    ImGui::BeginChild("##picked", ImVec2(0, 12 * ImGui::GetTextLineHeightWithSpacing()), true,
+                      ImGuiWindowFlags_HorizontalScrollbar);
+    ImGui::TextUnformatted(state.pickedText.c_str());
+    ImGui::EndChild();
+}
+
+void materialsSection(Scene& scene, ViewState& state, ViewRequests& out) {
+    if (state.revealPicked && state.pickedSphere >= 0) ImGui::SetNextItemOpen(true);
     if (!ImGui::CollapsingHeader("Materials")) return;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         Material& m = scene.spheres[i].material;
@@ -158,7 +174,15 @@ void materialsSection(Scene& scene, ViewRequests& out) {
         ImVec4 swatch(float(m.albedo.x), float(m.albedo.y), float(m.albedo.z), 1.0f);
         ImGui::ColorButton("##swatch", swatch, ImGuiColorEditFlags_NoTooltip);
         ImGui::SameLine();
-        if (ImGui::TreeNode("sphere", "sphere %zu  rough %.2f  metal %.2f", i + 1, m.roughness, m.metallic)) {
+        const bool picked = int(i) == state.pickedSphere;
+        if (picked && state.revealPicked) {
+            ImGui::SetNextItemOpen(true);
+            ImGui::SetScrollHereY();
+        }
+        // The asked pixel's sphere is selected: highlighted, and marked.
+        // Named as the scene file's errors name them (spheres[0] is the first).
+        if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "spheres[%zu]  rough %.2f  metal %.2f%s",
+                              i, m.roughness, m.metallic, picked ? "  <- asked pixel" : "")) {
             out.sceneEdited |= editColour("albedo", m.albedo);
             out.sceneEdited |= editDouble("roughness", m.roughness, 0.0f, 1.0f);
             out.sceneEdited |= editDouble("metallic", m.metallic, 0.0f, 1.0f);
@@ -174,7 +198,7 @@ void lightsSection(Scene& scene, ViewRequests& out) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& l = scene.lights[i];
         ImGui::PushID(int(i));
-        if (ImGui::TreeNode("light", "light %zu%s", i + 1, i == 0 ? "  (key light of the term views)" : "")) {
+        if (ImGui::TreeNode("light", "lights[%zu]%s", i, i == 0 ? "  (key light of the term views)" : "")) {
             out.sceneEdited |= editPosition("position", l.position);
             out.sceneEdited |= editColour("colour", l.color);
             out.sceneEdited |=
@@ -218,6 +242,7 @@ void compareSection(ViewState& state, const PanelInfo& info, ViewRequests& out) 
 }
 
 void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
+    if (state.askOverwrite) ImGui::SetNextItemOpen(true);
     if (!ImGui::CollapsingHeader("Scene file")) return;
     ImGui::TextWrapped("%s", info.scenePath.empty() ? "embedded default scene" : info.scenePath.c_str());
     char path[512];
@@ -225,6 +250,23 @@ void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
     if (ImGui::InputText("save as", path, sizeof path)) state.savePath = path;
     ImGui::Checkbox("with the current view as its camera", &state.saveCamera);
     if (ImGui::Button("Save (Ctrl+S)")) out.save = true;
+    ImGui::TextDisabled("only changed values are written; the file's layout stays");
+    if (state.askOverwrite) ImGui::OpenPopup("Overwrite a bundled scene?");
+    if (ImGui::BeginPopupModal("Overwrite a bundled scene?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted(state.savePath.c_str());
+        ImGui::TextUnformatted("is a scene of the course (scenes/). Write over it?");
+        if (ImGui::Button("Overwrite")) {
+            out.saveConfirmed = true;
+            state.askOverwrite = false;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) {
+            state.askOverwrite = false;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
 }
 
 void interfaceSection(const PanelInfo& info, ViewRequests& out) {
@@ -241,26 +283,85 @@ void interfaceSection(const PanelInfo& info, ViewRequests& out) {
 
 }  // namespace
 
+PanelRect panelRect(float windowWidth, float windowHeight, float uiScale) {
+    const float s = uiScale;
+    PanelRect r;
+    r.x = 10 * s;
+    r.y = 10 * s;
+    // 340 px at scale 1 fits the label column (9 em) and a usable slider;
+    // never more than kMaxPanelFraction of the window, so the picture stays
+    // the larger part even at UI scale 3 on 1280x720.
+    r.width = std::min(340 * s, kMaxPanelFraction * windowWidth);
+    r.height = std::max(1.0f, windowHeight - 20 * s);
+    return r;
+}
+
+namespace {
+// The presenter's strip: the panel folded to one column of buttons at the
+// left edge (the views by key, unfold), so the picture has the room.
+void drawStrip(ViewState& state, float s, ViewRequests& out) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 10 * s, viewport->Pos.y + 10 * s), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(viewport->Size.x, viewport->Size.y - 20 * s));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove;
+    if (ImGui::Begin("##strip", nullptr, flags)) {
+        if (ImGui::Button(">>")) state.panelStrip = false;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("unfold the panel");
+        for (const KeyBinding& b : keyBindings()) {
+            if (b.action != Action::SetView) continue;
+            const bool current = int(state.view) == b.argument;
+            if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+            if (ImGui::Button(b.keys, ImVec2(ImGui::GetFrameHeight() * 1.4f, 0))) {
+                state.view = View(b.argument);
+                out.redraw = true;
+            }
+            if (current) ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.what);
+        }
+    }
+    ImGui::End();
+}
+}  // namespace
+
 ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info) {
     ViewRequests out;
     if (!state.showPanel) return out;
-    // 10 px from the top-left corner, 340 px wide (the labels and sliders
-    // fit at any UI scale) and the window's height; the picture stays
-    // visible to the right, and the user can move and resize the panel.
+    if (state.panelStrip) {
+        drawStrip(state, info.uiScale, out);
+        return out;
+    }
     const float s = info.uiScale;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(10 * s, 10 * s), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(340 * s, viewport->Size.y - 20 * s), ImGuiCond_Once);
+    const PanelRect rect = panelRect(viewport->Size.x, viewport->Size.y, s);
+    // Placed again whenever the UI scale or the window size changes (the
+    // user's own moves and resizes last until then): a panel sized for the
+    // old scale would clip its widgets or leave the window.
+    const bool relayout = state.panelLayoutScale != s || state.panelLayoutWidth != viewport->Size.x ||
+                          state.panelLayoutHeight != viewport->Size.y;
+    const ImGuiCond when = relayout ? ImGuiCond_Always : ImGuiCond_Once;
+    state.panelLayoutScale = s;
+    state.panelLayoutWidth = viewport->Size.x;
+    state.panelLayoutHeight = viewport->Size.y;
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + rect.x, viewport->Pos.y + rect.y), when);
+    ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height), when);
     if (ImGui::Begin("raylab  (H: keys, Tab: hide)", &state.showPanel)) {
-        // Widgets take what is left after a label column of ~9 characters.
-        ImGui::PushItemWidth(-9.0f * ImGui::GetFontSize());
+        // Widgets take what is left after a label column of ~9 characters,
+        // and never less than 6 characters (at UI scale 3 on 1280 px the
+        // panel is 576 px: 351 for the labels, 200 for the widgets).
+        if (ImGui::SmallButton("<< strip")) state.panelStrip = true;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("fold the panel to a narrow strip (presenter layout)");
+        ImGui::PushItemWidth(std::max(6.0f * ImGui::GetFontSize(),
+                                      ImGui::GetContentRegionAvail().x - 9.0f * ImGui::GetFontSize()));
         frameSection(state, info);
         viewSection(state, scene, out);
         compareSection(state, info, out);
         displaySection(scene, out);
         renderSection(scene, out);
         modelSection(scene, out);
-        materialsSection(scene, out);
+        pickedSection(state);
+        materialsSection(scene, state, out);
+        state.revealPicked = false;
         lightsSection(scene, out);
         presetsSection(scene, fromFile, info, out);
         sceneSection(state, info, out);

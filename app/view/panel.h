@@ -26,6 +26,15 @@ struct PanelInfo {
     std::string status;  // the last save or screenshot, one line
 };
 
+// Where the panel starts, in window (ImGui) units: top left, 340 x the UI
+// scale wide but at most 45% of the window, the window's height less the
+// margins. drawPanel() puts it back there when the scale or the window size
+// changes.
+struct PanelRect {
+    float x = 0, y = 0, width = 0, height = 0;
+};
+PanelRect panelRect(float windowWidth, float windowHeight, float uiScale);
+
 // Draws the panel (when state.showPanel) and returns what the user asked for.
 ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info);
 

@@ -13,8 +13,17 @@ namespace {
 std::vector<fs::path> jsonFilesIn(const fs::path& dir) {
     std::vector<fs::path> out;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(dir, ec))
-        if (entry.is_regular_file(ec) && entry.path().extension() == ".json") out.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        // Scenes only: not the JSON Schema of the scene format, not the
+        // named cameras stored beside a scene (named_cameras.h).
+        const std::string name = entry.path().filename().string();
+        const auto endsWith = [&](const std::string& tail) {
+            return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+        };
+        if (entry.is_regular_file(ec) && entry.path().extension() == ".json" && !endsWith(".schema.json") &&
+            !endsWith(".cameras.json"))
+            out.push_back(entry.path());
+    }
     std::sort(out.begin(), out.end());
     return out;
 }

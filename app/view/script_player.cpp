@@ -57,6 +57,7 @@ bool ScriptPlayer::start(ScriptTarget& target) {
         case K::Key: target.scriptKey(keys_[next_]); return true;
         case K::View: target.scriptView(views_[next_].first, views_[next_].second); return true;
         case K::Divider: target.scriptDivider(c.value); return true;
+        case K::Pick: target.scriptPick(c.to); return true;
         case K::Resize: target.scriptResize(int(c.to.x), int(c.to.y)); return true;
         case K::Screenshot: target.scriptScreenshot(c.text, c.withUi); return true;
         case K::Quit: target.scriptQuit(); return true;

@@ -22,6 +22,7 @@ public:
     virtual void scriptKey(const KeyBinding& binding) = 0;
     virtual void scriptView(View view, int bounce) = 0;
     virtual void scriptDivider(double fraction) = 0;
+    virtual void scriptPick(glm::dvec2 pixel) = 0;
     virtual void scriptResize(int width, int height) = 0;
     virtual void scriptScreenshot(const std::string& file, bool withUi) = 0;
     virtual void scriptQuit() = 0;

@@ -9,8 +9,24 @@ void SplitPicture::setScene(const Scene& scene) {
     for (GlRenderer& side : sides_) side.setScene(scene);
 }
 
+void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgram* right,
+                                    const FrameSettings& frame) {
+    sideBySide_ = true;
+    width_ = frame.width;
+    height_ = frame.height;
+    split_ = std::max(1, frame.width / 2);
+    const ShaderProgram* programs[2] = {left, right};
+    for (int i = 0; i < 2; ++i) {
+        FrameSettings half = frame;
+        half.width = i == 0 ? split_ : std::max(1, frame.width - split_);
+        drawn_[i] = programs[i] != nullptr;
+        if (drawn_[i]) sides_[i].draw(*programs[i], half);
+    }
+}
+
 void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame,
                           int splitX) {
+    sideBySide_ = false;
     width_ = frame.width;
     height_ = frame.height;
     split_ = std::clamp(splitX, 0, width_);
@@ -34,7 +50,8 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     if (width_ == 0 || height_ == 0) return;
     const bool sameSize = width_ == windowWidth && height_ == windowHeight;
     const int windowSplit = int(std::lround(double(split_) * windowWidth / width_));
-    const int src0[2] = {0, split_}, src1[2] = {split_, width_};
+    const int src0[2] = {0, sideBySide_ ? 0 : split_},
+              src1[2] = {split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
     const int dst0[2] = {0, windowSplit}, dst1[2] = {windowSplit, windowWidth};
     for (int i = 0; i < 2; ++i) {
         if (!drawn_[i]) continue;

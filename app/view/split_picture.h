@@ -19,6 +19,12 @@ public:
     // program (none has built yet) leaves its side black.
     void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX);
 
+    // Side by side: two full pictures, each `frame.width / 2` wide (the
+    // right one takes the odd column), the same camera; present() puts them
+    // in the left and right halves of the window.
+    void renderSideBySide(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame);
+    bool sideBySide() const { return sideBySide_; }
+
     // Copies the last render to the default framebuffer's back buffer,
     // stretched to windowWidth x windowHeight (bilinear when upscaling).
     void present(int windowWidth, int windowHeight) const;
@@ -30,6 +36,7 @@ private:
     GlRenderer sides_[2];
     bool drawn_[2] = {false, false};
     int width_ = 0, height_ = 0, split_ = 0;
+    bool sideBySide_ = false;
 };
 
 }  // namespace rl

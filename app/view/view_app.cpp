@@ -10,20 +10,41 @@
 #include "view/overlays.h"
 #include "view/panel.h"
 #include "view/presets.h"
+#include "view/scene_patch.h"
 #include "view/screenshot.h"
 
 #define GLFW_INCLUDE_NONE  // gl_api.h declares the GL functions
 #include <GLFW/glfw3.h>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
 namespace rl {
 namespace {
+
+std::string readTextFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot be read");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) throw Error(path + ": cannot be written");
+}
 
 // After the camera's last change, keep the low resolution this long before
 // refining: mouse-wheel notches and drag events arrive every 10-50 ms, and
@@ -75,8 +96,8 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     WindowSettings settings;
     settings.width = options_.width > 0 ? options_.width : scene_.scene().render.width;
     settings.height = options_.height > 0 ? options_.height : scene_.scene().render.height;
-    settings.title = "raylab view - " + sceneName(scene_.path()) + " - " + implementationLabel(impls[0]) +
-                     (impls.size() > 1 ? " | " + implementationLabel(impls[1]) : "");
+    implementationsTitle_ = implementationLabel(impls[0]) + (impls.size() > 1 ? " | " + implementationLabel(impls[1]) : "");
+    settings.title = windowTitle();
     settings.vsync = options_.frames == 0;  // timing runs measure the renderer, not the display
     window_ = std::make_unique<GlfwWindowContext>(settings);
     window_->framebufferSize(fbWidth_, fbHeight_);
@@ -89,6 +110,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     glfwGetWindowContentScale(window_->window(), &contentScale, nullptr);
 #endif
     ui_->setScale(options_.uiScale > 0 ? options_.uiScale : contentScale);
+    captions_ = std::make_unique<CaptionLayer>();
 
     picture_ = std::make_unique<SplitPicture>();
     timer_ = std::make_unique<GpuTimer>();
@@ -116,9 +138,13 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
 
     presets_ = presetScenes();
+    cameras_ = std::make_unique<NamedCameras>(namedCamerasFile(scene_.path()));
+    if (!cameras_->error().empty()) std::cerr << "raylab: warning: " << cameras_->error() << "\n";
     state_.wipe = sides_.size() == 2;
-    state_.savePath = scene_.path().empty() ? "scene.json" : scene_.path();
+    state_.savePath = defaultSavePath(scene_.path());  // never the course file itself
     state_.showPanel = !options_.hidePanel;
+    state_.showCaptions = !options_.hideCaptions;
+    state_.sideBySide = options_.sideBySide && sides_.size() == 2;
     framesLeft_ = options_.frames;
     if (options_.frames > 0) state_.continuous = true;  // every frame renders: the median is the renderer's
     if (options_.fullscreen) window_->toggleFullscreen();
@@ -170,6 +196,10 @@ void ViewApp::frame() {
         rendered = true;
     }
     picture_->present(fbWidth_, fbHeight_);
+    const std::vector<OverlaySegment> rays = pickedRays();
+    const std::vector<OverlayLabel> labels = sideBySideLabels();
+    if (state_.showCaptions || !rays.empty() || !labels.empty())
+        captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_, ui_->scale());
     if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
     pendingShot_.clear();
 
@@ -248,7 +278,7 @@ void ViewApp::sceneChanged(bool cameraChanged) {
     picture_->setScene(scene_.scene());
     if (cameraChanged)
         trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
-    state_.viewBounce = std::clamp(state_.viewBounce, 0, std::max(scene_.scene().render.maxBounces, 0));
+    state_.viewBounce = std::clamp(state_.viewBounce, 0, bounceViewLimit());
     dirty_ = true;
 }
 
@@ -267,7 +297,10 @@ void ViewApp::renderPicture(bool fullResolution) {
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
     timer_->begin(double(frame.width) * frame.height);
     try {
-        picture_->render(left, right, frame, split);
+        if (sideBySideActive())
+            picture_->renderSideBySide(left, right, frame);
+        else
+            picture_->render(left, right, frame, split);
         runtimeError_.clear();
     } catch (const Error& e) {
         if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -318,7 +351,7 @@ void ViewApp::handleRequests(const ViewRequests& r) {
     if (r.sceneEdited) sceneChanged(false);
     if (r.redraw) dirty_ = true;
     if (r.openPreset >= 0) openPreset(r.openPreset);
-    if (r.save) saveScene();
+    if (r.save || r.saveConfirmed) saveScene(r.saveConfirmed);
     if (r.resetCamera) perform(Action::ResetCamera, 0);
     if (r.screenshot) perform(Action::Screenshot, 0);
     if (r.screenshotWithUi) perform(Action::ScreenshotWithUi, 0);
@@ -339,21 +372,51 @@ void ViewApp::writeScreenshot(const std::string& file, bool withUi) {
     }
 }
 
-void ViewApp::saveScene() {
+void ViewApp::saveScene(bool confirmed) {
+    const std::string target = state_.savePath;
+    if (isBundledScene(target) && !confirmed) {  // a course file: only after "overwrite" in the panel
+        state_.askOverwrite = true;
+        state_.showPanel = true;
+        status_ = target + " is a bundled scene: confirm in the panel, or save as another file";
+        std::cout << "raylab: " << status_ << std::endl;
+        toast(status_);
+        return;
+    }
     Scene scene = scene_.scene();
-    if (state_.saveCamera) scene.camera = trackball_->camera();
+    // The camera only when it moved: an untouched trackball rebuilds the
+    // file's camera from its quaternion (up orthonormalised), which is not
+    // a change the lecturer made.
+    const Camera fileCamera = scene_.fromFile().camera;
+    const bool moved = !sameCamera(trackball_->camera(), Trackball(fileCamera, 1, 1).camera());
+    scene.camera = state_.saveCamera && moved ? trackball_->camera() : fileCamera;
     try {
+        std::string text;
+        if (!scene_.path().empty()) {  // the file's own text, changed values patched in place
+            const std::string original = readTextFile(scene_.path());
+            try {
+                text = patchSceneText(original, parseScene(original, scene_.path()).scene, scene);
+            } catch (const Error& e) {  // not patchable (edited elsewhere into something else): written whole
+                std::cerr << "raylab: warning: " << scene_.path() << ": " << e.what() << "; the scene is written whole"
+                          << std::endl;
+                text.clear();
+            }
+        }
         // Written next to the target and renamed over it: the file watcher
-        // (and any editor) never sees a half-written scene.
-        const std::string temporary = state_.savePath + ".saving";
-        saveSceneFile(scene, temporary);
+        // (and any editor) never sees a half-written scene. (The lead moves
+        // this to app/core's shared atomic write on merge.)
+        const std::string temporary = target + ".saving";
+        if (text.empty())
+            saveSceneFile(scene, temporary);
+        else
+            writeTextFile(temporary, text);
         std::error_code ec;
-        fs::rename(temporary, state_.savePath, ec);
+        fs::rename(temporary, target, ec);
         if (ec) {
             fs::remove(temporary, ec);
-            throw Error(state_.savePath + ": cannot write the scene (" + ec.message() + ")");
+            throw Error(target + ": cannot write the scene (" + ec.message() + ")");
         }
-        status_ = "saved " + state_.savePath;
+        state_.askOverwrite = false;
+        status_ = "saved " + target + (moved && state_.saveCamera ? " (with the moved camera)" : "");
         std::cout << "raylab: " << status_ << std::endl;
     } catch (const Error& e) {
         status_ = e.what();
@@ -372,10 +435,89 @@ void ViewApp::openPreset(int index) {
     }
     if (!sceneWatcher_) sceneWatcher_ = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
     sceneWatcher_->watch({path});
-    state_.savePath = path;
+    state_.savePath = defaultSavePath(path);
+    cameras_ = std::make_unique<NamedCameras>(namedCamerasFile(path));
+    picked_.reset();  // another scene: the asked pixel's spheres are gone
+    state_.pickedText.clear();
+    state_.pickedSphere = -1;
+    glfwSetWindowTitle(window_->window(), windowTitle().c_str());  // the title names the scene on screen
     sceneChanged(true);
     toast(presetTitle(presets_[std::size_t(index)]));
 }
+
+ViewCaption ViewApp::currentCaption() const {
+    const Scene& scene = scene_.scene();
+    ViewCaption c = viewCaption(state_.view, state_.viewBounce, scene, sides_[0].model.value_or(scene.model));
+    if ((wipeActive() || sideBySideActive()) && sides_[1].model) {  // --compare-model: name both sides' models
+        const std::string right = viewCaption(state_.view, state_.viewBounce, scene, *sides_[1].model).model;
+        if (right != c.model) c.model = "left: " + c.model + "  |  right: " + right;
+    }
+    return c;
+}
+
+std::vector<OverlaySegment> ViewApp::pickedRays() const {
+    std::vector<OverlaySegment> out;
+    if (!picked_ || fbWidth_ <= 0 || fbHeight_ <= 0) return out;
+    const Scene& scene = scene_.scene();
+    const Camera camera = trackball_->camera();
+    const glm::dvec3 f = glm::normalize(camera.target - camera.position);
+    const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
+    const glm::dvec3 u = glm::cross(r, f);
+    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
+    const double aspect = double(fbWidth_) / fbHeight_;
+    // Points closer than this along the view direction are clipped away:
+    // a ray from the camera itself projects to no point.
+    const double nearPlane = 1e-3 * glm::length(camera.target - camera.position);
+    auto segment = [&](glm::dvec3 a, glm::dvec3 b, unsigned colour) {
+        glm::dvec3 ca(glm::dot(a - camera.position, r), glm::dot(a - camera.position, u), glm::dot(a - camera.position, f));
+        glm::dvec3 cb(glm::dot(b - camera.position, r), glm::dot(b - camera.position, u), glm::dot(b - camera.position, f));
+        if (ca.z < nearPlane && cb.z < nearPlane) return;
+        if (ca.z < nearPlane) ca += (cb - ca) * ((nearPlane - ca.z) / (cb.z - ca.z));
+        if (cb.z < nearPlane) cb += (ca - cb) * ((nearPlane - cb.z) / (ca.z - cb.z));
+        auto toPixel = [&](glm::dvec3 c) {
+            return glm::dvec2((c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * fbWidth_,
+                              (1.0 - c.y / (c.z * tanHalf)) * 0.5 * fbHeight_);
+        };
+        const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
+        out.push_back({float(pa.x), float(pa.y), float(pb.x), float(pb.y), colour});
+    };
+    // Colours: primary and reflected rays yellow / cyan, shadow rays green
+    // when the light is visible, red when a sphere blocks it.
+    const unsigned kPrimary = 0xFF40E0FFu, kReflected = 0xFFFFE040u, kLit = 0xFF40FF60u, kShadowed = 0xFF4040FFu;
+    for (const ref::BounceTerms& b : picked_->chain) {
+        const unsigned colour = b.depth == 0 ? kPrimary : kReflected;
+        if (!b.hit) {  // leaves the scene: as long as the camera's distance to its target
+            segment(b.origin, b.origin + b.dir * glm::length(camera.target - camera.position), colour);
+            continue;
+        }
+        segment(b.origin, b.p, colour);
+        for (const ref::LightTerms& l : b.lights)
+            if (!l.facesAway) segment(b.p, scene.lights[std::size_t(l.light)].position, l.shadowed ? kShadowed : kLit);
+    }
+    return out;
+}
+
+std::vector<OverlayLabel> ViewApp::sideBySideLabels() const {
+    if (!sideBySideActive()) return {};
+    const float s = ui_->scale(), margin = 10 * s;
+    // Framebuffer pixels per window unit (the panel is laid out in window units).
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();
+    float leftX = margin;
+    if (state_.showPanel) {  // right of the panel (or its strip): never under it
+        const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
+        const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
+        const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
+        leftX = std::max(leftX, float(panelRight * perUnit.x));
+    }
+    return {{leftX, margin, sides_[0].program->label()},
+            {float(fbWidth_ / 2) + margin, margin, sides_[1].program->label()}};
+}
+
+std::string ViewApp::windowTitle() const {
+    return "raylab view - " + sceneName(scene_.path()) + " - " + implementationsTitle_;
+}
+
+int ViewApp::bounceViewLimit() const { return std::max(scene_.scene().render.maxBounces, 0) + 1; }
 
 int ViewApp::currentPreset() const {
     if (scene_.path().empty()) return -1;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "camera/trackball.h"
+#include "view/caption_layer.h"
 #include "gl/context_glfw.h"
 #include "view/adaptive_resolution.h"
 #include "view/file_watcher.h"
@@ -15,10 +16,13 @@
 #include "view/imgui_layer.h"
 #include "view/live_program.h"
 #include "view/live_scene.h"
+#include "view/named_cameras.h"
 #include "view/script_player.h"
 #include "view/split_picture.h"
 #include "view/view_options.h"
 #include "view/view_state.h"
+
+#include "reference/pixel_breakdown.h"
 
 #include <chrono>
 #include <filesystem>
@@ -64,25 +68,37 @@ private:
     void drawUi(ViewRequests& requests);
     void handleRequests(const ViewRequests& requests);
     void writeScreenshot(const std::string& file, bool withUi);
-    void saveScene();
+    // Writes the edited scene to state_.savePath; a bundled scene only when `confirmed`.
+    void saveScene(bool confirmed = false);
     void openPreset(int index);
     bool moving() const;
     std::vector<std::string> errors() const;
     void toast(const std::string& message);
     void printStats() const;
     int currentPreset() const;
+    ViewCaption currentCaption() const;
+    std::string windowTitle() const;
+    std::vector<OverlaySegment> pickedRays() const;
+    std::vector<OverlayLabel> sideBySideLabels() const;  // the two names, clear of the panel  // the asked pixel's rays, projected by the current camera  // "raylab view - SCENE - IMPLEMENTATIONS"
+    int bounceViewLimit() const;  // max bounces + 1: one past the limit shows black
 
     // -- input and actions (view_app_input.cpp)
     void installCallbacks();
+    // A press from the window system: the panel's, an asked pixel, or the camera's.
+    void onPress(int button, int mods, glm::dvec2 pixel);
     void onKey(int key, int action, int mods);
     void onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript);
     void onCursor(glm::dvec2 pixel);
     void onScroll(double steps);
     void perform(Action action, int argument);
     glm::dvec2 toPixels(glm::dvec2 screen) const;  // window (screen) coordinates to framebuffer pixels
+    glm::dvec2 toWindowUnits() const;              // framebuffer pixels -> window units: the factor per axis
     double dividerPixel() const;                   // the wipe divider in framebuffer pixels
-    bool wipeActive() const { return sides_.size() == 2 && state_.wipe; }
+    bool wipeActive() const { return sides_.size() == 2 && state_.wipe && !state_.sideBySide; }
+    bool sideBySideActive() const { return sides_.size() == 2 && state_.sideBySide; }
     void cameraMoved();
+    // Ask a pixel: the CPU reference's terms at `pixel` (framebuffer, top-left origin).
+    void pickPixel(glm::dvec2 pixel);
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
@@ -91,6 +107,7 @@ private:
     void scriptKey(const KeyBinding& binding) override;
     void scriptView(View view, int bounce) override;
     void scriptDivider(double fraction) override;
+    void scriptPick(glm::dvec2 pixel) override;
     void scriptResize(int width, int height) override;
     void scriptScreenshot(const std::string& file, bool withUi) override;
     void scriptQuit() override;
@@ -104,11 +121,13 @@ private:
     std::vector<std::filesystem::path> presets_;
     std::unique_ptr<GlfwWindowContext> window_;
     std::unique_ptr<ImGuiLayer> ui_;
+    std::unique_ptr<CaptionLayer> captions_;
     std::vector<Side> sides_;  // [0] = --impl (left), [1] = --compare (right)
     std::unique_ptr<FileWatcher> sceneWatcher_;
     std::unique_ptr<SplitPicture> picture_;
     std::unique_ptr<GpuTimer> timer_;
     std::unique_ptr<Trackball> trackball_;
+    std::unique_ptr<NamedCameras> cameras_;  // F1..F8 (named_cameras.h)
 
     // State of the running window.
     ViewState state_;
@@ -124,11 +143,15 @@ private:
     bool quit_ = false;
     bool draggingDivider_ = false;
     int dragButton_ = -1;        // the mouse button of the trackball drag, -1 = none
+    static constexpr int kMouseButtons = 3;  // left, right, middle (GLFW's numbering)
+    bool panelOwnsButton_[kMouseButtons] = {};  // pressed on the panel: everything until the release is the panel's
     glm::dvec2 cursor_{0.0};     // framebuffer pixels, from the last motion event
     std::string runtimeError_;   // a GL error while drawing, shown like a shader error
     std::string pendingShot_;    // picture screenshot to write this frame
     std::string pendingUiShot_;  // window screenshot to write this frame
     std::string status_;         // last save / screenshot, for the panel
+    std::string implementationsTitle_;
+    std::optional<ref::PixelTerms> picked_;  // the last asked pixel, its rays drawn over the picture  // the implementations' part of the window title
     std::string toast_;
     Clock::time_point toastUntil_{};
 };

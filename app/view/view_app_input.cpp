@@ -2,6 +2,7 @@
 // handful of functions, and the actions of the key table (key_bindings.h).
 #include "view/view_app.h"
 
+#include "core/error.h"
 #include "view/screenshot.h"
 
 #define GLFW_INCLUDE_NONE
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <string>
 
 namespace rl {
@@ -58,10 +60,23 @@ struct ViewAppCallbacks {
     static void key(GLFWwindow* w, int key, int, int action, int mods) { appOf(w)->onKey(key, action, mods); }
     // The press happens where the last motion event put the cursor: asking
     // the window system now (glfwGetCursorPos) would give where the mouse is
-    // by the time a slow frame lets the events through.
-    static void button(GLFWwindow* w, int button, int action, int) {
+    // by the time a slow frame lets the events through. It belongs to the
+    // panel when that point lies on a window of the last frame drawn (what
+    // the user saw under the pointer; ImGui's own hover state is polled at
+    // NewFrame and is stale when the pointer has just arrived), and then so
+    // does everything up to its release.
+    static void button(GLFWwindow* w, int button, int action, int mods) {
         ViewApp* app = appOf(w);
-        app->onMouseButton(button, action == GLFW_PRESS, app->cursor_, false);
+        if (button < 0 || button >= ViewApp::kMouseButtons) return;
+        if (action == GLFW_PRESS) {
+            app->onPress(button, mods, app->cursor_);
+            return;
+        }
+        if (app->panelOwnsButton_[button]) {  // a press on the panel (or a pick): its release is not the camera's
+            app->panelOwnsButton_[button] = false;
+            return;
+        }
+        app->onMouseButton(button, false, app->cursor_, false);
     }
     static void cursor(GLFWwindow* w, double x, double y) {
         ViewApp* app = appOf(w);
@@ -73,6 +88,18 @@ struct ViewAppCallbacks {
         if (!app->ui_->wantsMouse()) app->onScroll(y);
     }
 };
+
+void ViewApp::onPress(int button, int mods, glm::dvec2 pixel) {
+    const glm::dvec2 at = pixel * toWindowUnits();
+    if (ui_->isOverUi(at.x, at.y) || ui_->wantsMouse()) {  // the panel's (or a text field's, an open combo's)
+        panelOwnsButton_[button] = true;
+    } else if (button == GLFW_MOUSE_BUTTON_LEFT && ((mods & GLFW_MOD_CONTROL) || state_.pickMode)) {
+        pickPixel(pixel);  // ask the pixel; the camera stays
+        panelOwnsButton_[button] = true;
+    } else {
+        onMouseButton(button, true, pixel, false);
+    }
+}
 
 void ViewApp::installCallbacks() {
     GLFWwindow* w = window_->window();
@@ -91,6 +118,12 @@ glm::dvec2 ViewApp::toPixels(glm::dvec2 screen) const {
     glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
     // Screen coordinates to framebuffer pixels (they differ on HiDPI screens).
     return {screen.x * fbWidth_ / std::max(windowWidth, 1), screen.y * fbHeight_ / std::max(windowHeight, 1)};
+}
+
+glm::dvec2 ViewApp::toWindowUnits() const {
+    int windowWidth = 1, windowHeight = 1;
+    glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+    return {double(windowWidth) / std::max(fbWidth_, 1), double(windowHeight) / std::max(fbHeight_, 1)};
 }
 
 double ViewApp::dividerPixel() const { return state_.divider * fbWidth_; }
@@ -128,7 +161,7 @@ void ViewApp::onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fro
     }
     Trackball::Mode mode;
     if (button == GLFW_MOUSE_BUTTON_LEFT)
-        mode = Trackball::Mode::Rotate;
+        mode = state_.turntable ? Trackball::Mode::Turntable : Trackball::Mode::Rotate;
     else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE)
         mode = Trackball::Mode::Pan;
     else
@@ -148,6 +181,22 @@ void ViewApp::onCursor(glm::dvec2 pixel) {
     }
 }
 
+void ViewApp::pickPixel(glm::dvec2 pixel) {
+    const int i = int(std::floor(pixel.x)), row = int(std::floor(pixel.y));
+    if (i < 0 || row < 0 || i >= fbWidth_ || row >= fbHeight_) return;
+    try {
+        Camera camera = trackball_->camera();
+        picked_ = ref::explainPixel(scene_.scene(), camera, fbWidth_, fbHeight_, i, fbHeight_ - 1 - row);
+        state_.pickedText = ref::formatPixelTerms(scene_.scene(), *picked_);
+        state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
+        state_.revealPicked = true;
+        std::cout << "raylab: ask a pixel at (" << i << ", " << row << ") from the top left\n"
+                  << state_.pickedText << std::flush;
+    } catch (const Error& e) {
+        std::cerr << "raylab: error: " << e.what() << std::endl;
+    }
+}
+
 void ViewApp::onScroll(double steps) {
     trackball_->zoom(steps);
     cameraMoved();
@@ -159,6 +208,40 @@ void ViewApp::perform(Action action, int argument) {
     switch (action) {
         case Action::ToggleHelp: state_.showHelp = !state_.showHelp; break;
         case Action::TogglePanel: state_.showPanel = !state_.showPanel; break;
+        case Action::ToggleCaptions: state_.showCaptions = !state_.showCaptions; break;
+        case Action::TogglePickMode:
+            state_.pickMode = !state_.pickMode;
+            if (!state_.pickMode) picked_.reset();  // leaving the mode clears the drawn rays
+            toast(state_.pickMode ? "pick mode: click a pixel (I leaves)" : "pick mode off");
+            break;
+        case Action::RecallCamera: {
+            const std::string name = "F" + std::to_string(argument);
+            const auto camera = cameras_->get(name);
+            if (camera && trackball_->setView(*camera)) {
+                dragButton_ = -1;
+                cameraMoved();
+                toast("camera " + name);
+            } else {
+                toast("no camera " + name + " yet: Ctrl+" + name + " stores the current view");
+            }
+            break;
+        }
+        case Action::StoreCamera: {
+            const std::string name = "F" + std::to_string(argument);
+            try {
+                cameras_->set(name, trackball_->camera());
+                toast("camera " + name + " stored in " + cameras_->file());
+                std::cout << "raylab: camera " << name << " stored in " << cameras_->file() << std::endl;
+            } catch (const Error& e) {
+                std::cerr << "raylab: error: " << e.what() << std::endl;
+                toast(e.what());
+            }
+            break;
+        }
+        case Action::ToggleOrbit:
+            state_.turntable = !state_.turntable;
+            toast(state_.turntable ? "left drag: turntable (no roll)" : "left drag: arcball");
+            break;
         case Action::ResetCamera:
             trackball_->reset();
             dirty_ = true;
@@ -170,9 +253,10 @@ void ViewApp::perform(Action action, int argument) {
         case Action::BounceDown:
         case Action::BounceUp:
             state_.view = View::Bounce;
-            state_.viewBounce = std::clamp(state_.viewBounce + (action == Action::BounceUp ? 1 : -1), 0,
-                                           std::max(render.maxBounces, 0));
-            toast("view: bounce " + std::to_string(state_.viewBounce));
+            state_.viewBounce =
+                std::clamp(state_.viewBounce + (action == Action::BounceUp ? 1 : -1), 0, bounceViewLimit());
+            toast("view: bounce " + std::to_string(state_.viewBounce) +
+                  (state_.viewBounce > render.maxBounces ? " (beyond max bounces: black)" : ""));
             dirty_ = true;
             break;
         case Action::ExposureDown:
@@ -221,6 +305,14 @@ void ViewApp::perform(Action action, int argument) {
             state_.wipe = !state_.wipe;
             dirty_ = true;
             break;
+        case Action::ToggleSideBySide:
+            if (sides_.size() < 2) {
+                toast("no side by side: start with --compare DIR or --compare-model MODEL");
+                break;
+            }
+            state_.sideBySide = !state_.sideBySide;
+            dirty_ = true;
+            break;
         case Action::DividerLeft:
         case Action::DividerRight:
             state_.divider =
@@ -263,6 +355,7 @@ void ViewApp::scriptDivider(double fraction) {
     state_.divider = fraction;
     dirty_ = true;
 }
+void ViewApp::scriptPick(glm::dvec2 pixel) { pickPixel(pixel); }
 void ViewApp::scriptResize(int width, int height) { glfwSetWindowSize(window_->window(), width, height); }
 void ViewApp::scriptScreenshot(const std::string& file, bool withUi) {
     (withUi ? pendingUiShot_ : pendingShot_) = file;

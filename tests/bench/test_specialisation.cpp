@@ -63,7 +63,9 @@ Scene load(const fs::path& path) { return loadSceneFile(path.string()).scene; }
 std::vector<fs::path> jsonFilesIn(const fs::path& dir) {
     std::vector<fs::path> out;
     for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path().extension() == ".json") out.push_back(entry.path());
+        // Scenes only: scenes/scene.schema.json is the format's JSON Schema.
+        if (entry.path().extension() == ".json" && entry.path().filename() != "scene.schema.json")
+            out.push_back(entry.path());
     std::sort(out.begin(), out.end());
     return out;
 }

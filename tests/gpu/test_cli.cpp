@@ -121,7 +121,7 @@ TEST(Cli, UnwritableOutputIsOneClearError) {
 
 TEST(Cli, EveryTeachingViewRendersWithoutNaN) {
     fs::path dir = test::freshTempDir("cli_views");
-    for (std::string view : {"final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce0",
+    for (std::string view : {"final", "d", "g", "f", "fnv", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce0",
                              "bounce1", "bounce2"}) {
         std::string pfm = (dir / (view + ".pfm")).string();
         auto r = test::runRaylab("render --size 48x36 --view " + view + " -o " + (dir / (view + ".png")).string() +

@@ -283,3 +283,48 @@ TEST(Trackball, DegenerateCamerasAreRefused) {
     parallel.up = parallel.target - parallel.position;
     EXPECT_THROW(Trackball(parallel, kW, kH), rl::Error);
 }
+
+// ---- turntable orbit ---------------------------------------------------------------------
+
+// After any turntable drag, arcball-rolled start or not, the camera's right
+// axis is horizontal (perpendicular to the scene's up): the horizon is level.
+TEST(Turntable, NeverRolls) {
+    Trackball t(sceneCamera(), kW, kH);
+    t.beginDrag(kCentre + glm::dvec2(-200, 50), Mode::Rotate);  // roll it first with the arcball
+    t.drag(kCentre + glm::dvec2(150, 200));
+    t.endDrag();
+    const glm::dvec3 U = glm::normalize(sceneCamera().up);
+    std::mt19937 rng(14);  // seeded: the same drags every run
+    std::uniform_real_distribution<double> pixel(-400, 400);
+    for (int i = 0; i < 20; ++i) {
+        t.beginDrag(kCentre, Mode::Turntable);
+        t.drag(kCentre + glm::dvec2(pixel(rng), pixel(rng)));
+        t.endDrag();
+        const Camera c = t.camera();
+        const glm::dvec3 right = glm::normalize(glm::cross(forwardOf(c), c.up));
+        EXPECT_NEAR(glm::dot(right, U), 0.0, 1e-12) << "drag " << i << ": the right axis left the horizon";
+        EXPECT_GT(glm::dot(c.up, U), 0.0) << "drag " << i << ": upside down";
+        EXPECT_NEAR(glm::length(c.target - c.position), glm::length(sceneCamera().target - sceneCamera().position),
+                    1e-9);
+    }
+}
+
+// A horizontal drag over the window's height turns the camera half a turn
+// about the scene's up, keeping its elevation; the direction of the turn
+// makes the scene follow the cursor (a point in front of the target moves right).
+TEST(Turntable, HorizontalDragYawsAboutUp) {
+    Camera level;
+    level.position = {0, 0, 4};
+    level.target = {0, 0, 0};
+    level.up = {0, 1, 0};
+    level.fovYDegrees = 50;
+    Trackball t(level, kW, kH);
+    t.beginDrag(kCentre, Mode::Turntable);
+    t.drag(kCentre + glm::dvec2(kH / 4.0, 0));  // a quarter of the height: 45 degrees
+    const Camera c = t.camera();
+    expectNear(c.position, glm::dvec3(-4 * std::sin(kPi / 4), 0, 4 * std::cos(kPi / 4)), 1e-9,
+               "the camera orbits left, so the scene turns right");
+    t.drag(kCentre + glm::dvec2(0, -kH));  // up by the whole height: pitch stops at the pole margin
+    const double elevation = std::asin(glm::dot(forwardOf(t.camera()), glm::dvec3(0, 1, 0)));
+    EXPECT_NEAR(elevation, kPi / 2 - Trackball::kTurntablePolarMarginRadians, 1e-9);
+}

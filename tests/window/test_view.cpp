@@ -53,7 +53,7 @@ protected:
     // `raylab view --script` with the given script text; expects exit 0.
     RunResult view(const std::string& script, std::vector<std::string> extra = {}) {
         writeText(dir / "script.txt", script);
-        std::vector<std::string> args = {"view", lectureScene(), "--size", kSize, "--script", "script.txt"};
+        std::vector<std::string> args = {"view", lectureScene(), "--size", kSize, "--no-captions", "--script", "script.txt"};
         args.insert(args.end(), extra.begin(), extra.end());
         return runRaylab(args, env, dir.path());
     }
@@ -75,7 +75,7 @@ void expectSamePicture(const DisplayImage& got, const DisplayImage& expected, co
 }  // namespace
 
 TEST_F(ViewTest, WindowPictureMatchesHeadlessRender) {
-    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--frames", "3", "--screenshot", "window.png"},
+    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--frames", "3", "--screenshot", "window.png"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
     EXPECT_NE(v.out.find("median"), std::string::npos) << "--frames prints the median frame time: " << v.out;
@@ -169,7 +169,7 @@ TEST_P(TeachingViewTest, RendersFiniteAndTheWindowShowsIt) {
     for (float v : radiance.rgb) nonFinite += std::isfinite(v) ? 0 : 1;
     EXPECT_EQ(nonFinite, 0) << view << ": NaN or Inf in the radiance";
 
-    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--view", view, "--frames", "1", "--screenshot",
+    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--view", view, "--frames", "1", "--screenshot",
                              "window-" + view + ".png"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
@@ -177,7 +177,7 @@ TEST_P(TeachingViewTest, RendersFiniteAndTheWindowShowsIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, TeachingViewTest,
-                         ::testing::Values("final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals",
+                         ::testing::Values("final", "d", "g", "f", "fnv", "diffuse", "specular", "ndotl", "shadow", "normals",
                                            "bounce0", "bounce1", "bounce2"));
 
 TEST_F(ViewTest, NumberKeysSelectTheViews) {
@@ -192,7 +192,7 @@ TEST_F(ViewTest, NumberKeysSelectTheViews) {
 // The same drag and keys through the X server (xdotool), not the script:
 // GLFW's callbacks, the screen-to-pixel conversion, P (screenshot) and Q.
 TEST_F(ViewTest, RealMouseAndKeysThroughTheWindowSystem) {
-    Process viewer({RAYLAB_BINARY, "view", lectureScene(), "--size", kSize, "--no-panel", "--view", "normals"}, env,
+    Process viewer({RAYLAB_BINARY, "view", lectureScene(), "--size", kSize, "--no-panel", "--no-captions", "--view", "normals"}, env,
                    dir.path());
     auto xdotool = [&](std::vector<std::string> args) {
         args.insert(args.begin(), "xdotool");
@@ -236,7 +236,7 @@ TEST_F(ViewTest, RealMouseAndKeysThroughTheWindowSystem) {
 TEST_F(ViewTest, BlinnPhongWipeAgainstPbr) {
     const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
     writeText(dir / "script.txt", "divider 0.5\nwait 1\nscreenshot wipe.png\nquit\n");
-    RunResult v = runRaylab({"view", row, "--size", kSize, "--compare-model", "blinn-phong", "--script", "script.txt"},
+    RunResult v = runRaylab({"view", row, "--size", kSize, "--no-captions", "--compare-model", "blinn-phong", "--script", "script.txt"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
     Scene blinnPhong = loadSceneFile(row).scene;

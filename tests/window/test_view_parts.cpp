@@ -146,7 +146,15 @@ TEST(AdaptiveResolution, ShrinksOnlyWhileMovingAndOnlyWhenSlow) {
     EXPECT_EQ(a.scale(true, 640, 480), 1.0);
     AdaptiveResolution slow;
     slow.record(AdaptiveResolution::kMovingBudgetMs * 1000, pixels);
-    EXPECT_DOUBLE_EQ(slow.scale(true, 640, 480), AdaptiveResolution::kMinScale);
+    EXPECT_DOUBLE_EQ(slow.scale(true, 640, 480), AdaptiveResolution::kMinRows / 480.0) << "as low as needed";
+    // 1080p on llvmpipe (2.7 s a frame, the figure): below the old
+    // quarter-width floor, at the budget: (s^2 * 2700 ms) <= 33 ms.
+    AdaptiveResolution llvmpipe;
+    llvmpipe.record(2700, 1920.0 * 1080.0);
+    const double s = llvmpipe.scale(true, 1920, 1080);
+    EXPECT_LT(s, 0.25);
+    EXPECT_LE(s * s * 2700, AdaptiveResolution::kMovingBudgetMs);
+    EXPECT_GT(s * s * 2700 * 2, AdaptiveResolution::kMovingBudgetMs * 0.99) << "one step more would have fitted";
     AdaptiveResolution fast;
     fast.record(AdaptiveResolution::kMovingBudgetMs / 2, pixels);
     EXPECT_EQ(fast.scale(true, 640, 480), 1.0) << "fast enough: never drops";

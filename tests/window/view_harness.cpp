@@ -51,12 +51,13 @@ int waitFor(pid_t pid, std::chrono::milliseconds timeout) {
 
 }  // namespace
 
-Xvfb::Xvfb() {
+Xvfb::Xvfb(int width, int height) {
     int fds[2];
     if (pipe(fds) != 0) throw Error("pipe failed");
     // -displayfd: Xvfb picks a free display number and writes it to the fd
     // once it accepts connections, so parallel tests never collide.
-    std::vector<std::string> args = {"Xvfb",      "-displayfd", std::to_string(fds[1]), "-screen", "0", "1280x1024x24",
+    const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
+    std::vector<std::string> args = {"Xvfb", "-displayfd", std::to_string(fds[1]), "-screen", "0", screen,
                                      "-nolisten", "tcp"};
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);

@@ -16,10 +16,10 @@
 
 namespace rl::wintest {
 
-// Xvfb on a free display (-displayfd), 1280x1024x24; stopped by the destructor.
+// Xvfb on a free display (-displayfd), 1280x1024x24 unless told; stopped by the destructor.
 class Xvfb {
 public:
-    Xvfb();
+    explicit Xvfb(int width = 1280, int height = 1024);
     ~Xvfb();
     Xvfb(const Xvfb&) = delete;
     Xvfb& operator=(const Xvfb&) = delete;

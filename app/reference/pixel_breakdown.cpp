@@ -1,0 +1,157 @@
+#include "reference/pixel_breakdown.h"
+
+#include "core/error.h"
+#include "reference/brdf_reference.h"
+#include "reference/cpu_reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace rl::ref {
+namespace {
+
+using glm::dvec3;
+
+double modelD(const ShadingModel& m, dvec3 n, dvec3 h, double alpha) {
+    return m.distribution == DistributionModel::Beckmann ? D_Beckmann(n, h, alpha) : D_GGX(n, h, alpha);
+}
+double modelG(const ShadingModel& m, double NoV, double NoL, const Material& mat) {
+    switch (m.geometry) {
+        case GeometryModel::SmithGGXSeparable: return G_SmithGGXSeparable(NoV, NoL, ggxAlpha(mat.roughness));
+        case GeometryModel::SmithGGXCorrelated: return G_SmithGGXCorrelated(NoV, NoL, ggxAlpha(mat.roughness));
+        default: return G_SchlickGGX(NoV, NoL, mat.roughness);
+    }
+}
+dvec3 modelF(const ShadingModel& m, const Material& mat, double VoH) {
+    switch (m.fresnel) {
+        case FresnelModel::Dielectric: return F_Dielectric(baseReflectance(mat), VoH);
+        case FresnelModel::Conductor: return F_Conductor(baseReflectance(mat), mat.edgeTint, VoH);
+        default: return F_Schlick(baseReflectance(mat), VoH);
+    }
+}
+
+LightTerms lightTerms(const Scene& scene, const Hit& hit, dvec3 v, int index) {
+    const Light& light = scene.lights[std::size_t(index)];
+    const Material& m = scene.spheres[std::size_t(hit.sphere)].material;
+    LightTerms t;
+    t.light = index;
+    const dvec3 toLight = light.position - hit.p;
+    t.distance = glm::length(toLight);
+    t.l = t.distance > 0 ? toLight / t.distance : hit.n;
+    t.h = glm::normalize(t.l + v);
+    t.NoL = std::clamp(glm::dot(hit.n, t.l), 0.0, 1.0);
+    t.NoH = glm::dot(hit.n, t.h);
+    t.VoH = glm::dot(v, t.h);
+    const double NoV = std::clamp(glm::dot(hit.n, v), kMinNoV, 1.0);
+    t.D = modelD(scene.model, hit.n, t.h, ggxAlpha(m.roughness));
+    t.G = modelG(scene.model, NoV, t.NoL, m);
+    t.F = modelF(scene.model, m, t.VoH);
+    t.E = pointLightIrradiance(hit.p, hit.n, light.position, light.color * light.intensity);
+    // As directLight(): no shadow ray where the light adds nothing.
+    t.facesAway = t.E == dvec3(0.0);
+    if (t.facesAway) return t;
+    t.shadowed = !lightVisible(scene, hit, light.position);
+    if (t.shadowed) return t;
+    t.diffuse = diffuseBRDF(hit.n, v, t.l, m, scene.model) * t.E;
+    t.specular = specularBRDF(hit.n, v, t.l, m, scene.model) * t.E;
+    return t;
+}
+
+std::string num(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return text;
+}
+std::string vec(dvec3 v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+
+}  // namespace
+
+PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int height, int i, int j) {
+    if (i < 0 || j < 0 || i >= width || j >= height)
+        throw Error("pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") is outside the " +
+                    std::to_string(width) + "x" + std::to_string(height) + " picture");
+    PixelTerms out;
+    out.i = i;
+    out.j = j;
+    const CameraBasis basis = cameraBasis(camera);
+    dvec3 dir = cameraRayDirection(glm::dvec2(i + 0.5, j + 0.5), glm::dvec2(width, height), basis.fovYRadians,
+                                   basis.right, basis.up, basis.forward);
+    dvec3 origin = basis.position;
+    dvec3 throughput(1.0);
+    // traceRadiance(), step by step (cpu_reference.cpp).
+    for (int depth = 0; depth <= scene.render.maxBounces; ++depth) {
+        BounceTerms b;
+        b.depth = depth;
+        b.origin = origin;
+        b.dir = dir;
+        b.throughput = throughput;
+        Hit hit;
+        if (!closestHit(scene, origin, dir, hit)) {
+            b.contribution = throughput * scene.render.background;
+            out.radiance += b.contribution;
+            out.chain.push_back(b);
+            break;
+        }
+        const Material& m = scene.spheres[std::size_t(hit.sphere)].material;
+        b.hit = true;
+        b.sphere = hit.sphere;
+        b.material = m;
+        b.p = hit.p;
+        b.n = hit.n;
+        b.t = hit.t;
+        b.v = -dir;
+        for (int l = 0; l < int(scene.lights.size()); ++l) b.lights.push_back(lightTerms(scene, hit, b.v, l));
+        b.ambient = scene.render.ambient * m.albedo * m.ao;
+        b.shaded = shadeHit(scene, hit, b.v);
+        b.contribution = throughput * b.shaded;
+        out.radiance += b.contribution;
+        b.NoV = std::clamp(glm::dot(hit.n, b.v), kMinNoV, 1.0);
+        b.Fr = F_SchlickRoughness(baseReflectance(m), b.NoV, m.roughness);
+        throughput *= b.Fr;
+        origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+        dir = glm::reflect(dir, hit.n);
+        out.chain.push_back(b);
+    }
+    Scene atSize = scene;
+    atSize.render.width = width;
+    atSize.render.height = height;
+    out.pixelRadiance = pixelRadiance(atSize, basis, i, j);
+    out.display = displayEncode(out.pixelRadiance, scene.render);
+    return out;
+}
+
+std::string formatPixelTerms(const Scene& scene, const PixelTerms& t) {
+    std::ostringstream s;
+    s << "pixel (" << t.i << ", " << t.j << ") from the bottom left, CPU reference (double), the centre ray:\n";
+    for (const BounceTerms& b : t.chain) {
+        const std::string at = b.depth == 0 ? "primary hit" : "bounce " + std::to_string(b.depth);
+        s << at << ": throughput " << vec(b.throughput) << "\n";
+        if (!b.hit) {
+            s << "  no hit: background " << vec(scene.render.background) << ", contribution " << vec(b.contribution)
+              << "\n";
+            continue;
+        }
+        const Material& m = b.material;
+        s << "  spheres[" << b.sphere << "] (of " << scene.spheres.size() << "): albedo " << vec(m.albedo)
+          << ", roughness " << num(m.roughness) << ", metallic " << num(m.metallic) << ", ao " << num(m.ao) << "\n";
+        s << "  t " << num(b.t) << "  p " << vec(b.p) << "  n " << vec(b.n) << "  v " << vec(b.v) << "\n";
+        for (const LightTerms& l : b.lights) {
+            s << "  lights[" << l.light << "]: l " << vec(l.l) << "  h " << vec(l.h) << "\n";
+            s << "    NoL " << num(l.NoL) << "  NoH " << num(l.NoH) << "  VoH " << num(l.VoH) << "  D " << num(l.D)
+              << "  G " << num(l.G) << "  F " << vec(l.F) << "\n";
+            s << "    E " << vec(l.E) << (l.facesAway ? "  faces away (no light)" : l.shadowed ? "  SHADOWED" : "  lit")
+              << "  diffuse " << vec(l.diffuse) << "  specular " << vec(l.specular) << "\n";
+        }
+        s << "  ambient " << vec(b.ambient) << "  shaded " << vec(b.shaded) << "  contribution " << vec(b.contribution)
+          << "\n";
+        s << "  NoV " << num(b.NoV) << "  Fr " << vec(b.Fr) << " (the next throughput factor)\n";
+    }
+    s << "radiance " << vec(t.radiance) << " (centre ray)  pixel " << vec(t.pixelRadiance) << " ("
+      << scene.render.spp << " spp)  display " << vec(t.display) << "\n";
+    return s.str();
+}
+
+}  // namespace rl::ref
