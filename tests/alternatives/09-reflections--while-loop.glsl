@@ -19,9 +19,10 @@ vec3 F_SchlickRoughness(vec3 F0, float NoV, float roughness) {
 vec3 traceRay(vec3 origin, vec3 dir) {
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
+    int leaving = NO_SPHERE;  // the sphere the ray starts on: none for the camera
     int hits = 0;
     while (hits <= maxBounces()) {
-        Hit hit = closestHit(origin, dir);
+        Hit hit = closestHit(origin, dir, leaving);
         if (hit.t == NO_HIT) {
             radiance += throughput * backgroundRadiance();
             break;
@@ -30,8 +31,9 @@ vec3 traceRay(vec3 origin, vec3 dir) {
         Material m = sphereMaterial(hit.sphere);
         float NoV = clamp(dot(hit.n, -dir), 1e-4, 1.0);
         throughput *= F_SchlickRoughness(baseReflectance(m), NoV, m.roughness);
-        origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
+        origin = offsetRayOrigin(hit.p, hit.n, hit.error);
         dir = reflect(dir, hit.n);
+        leaving = hit.sphere;
         hits++;
     }
     return radiance;
