@@ -608,6 +608,9 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
     fs::permissions(root / "run_autograder", fs::perms::owner_all);
     fs::create_directories(root / "source" / "build" / "bin");
     fs::create_symlink(RAYLAB_BINARY, root / "source" / "build" / "bin" / "raylab");
+    // source/ stands for the checkout: its ./raylab wrapper, the sources read
+    // from this repository (RAYLAB_ROOT below).
+    fs::copy_file(rl::sourceRoot() / "raylab", root / "source" / "raylab");
     auto three = solutionFiles();
     for (auto it = three.begin(); it != three.end();)
         it = it->first < "04" ? std::next(it) : three.erase(it);
@@ -617,7 +620,7 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
     writeZip(root / "submission" / "upload.zip", zipped);  // what a student's zip upload looks like
     fs::create_directories(root / "results");
     std::string command = "cd " + root.string() + " && RAYLAB_GRADESCOPE_ROOT=" + root.string() +
-                          " ./run_autograder > results/stdout 2>&1";
+                          " RAYLAB_ROOT=" + rl::sourceRoot().string() + " ./run_autograder > results/stdout 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << readText(root / "results" / "stdout");
     json results = readJson(root / "results" / "results.json");
     expectGradescopeResults(results);
