@@ -6,13 +6,13 @@
 
 #include "checks/checker.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/paths.h"
 
 #include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace rl {
@@ -31,6 +31,7 @@ struct CheckCommandOptions {
 
 int runCheck(const CheckCommandOptions& o) {
     auto start = std::chrono::steady_clock::now();
+    if (!o.json.empty()) requireOutputPath(o.json, "the JSON report");
     CheckOptions options;
     options.implDir = o.impl.empty() ? exercisesDir() : std::filesystem::path(o.impl);
     options.outputDir = o.output;
@@ -61,9 +62,8 @@ int runCheck(const CheckCommandOptions& o) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << passed << " of " << selected.size() << " exercises pass (" << int(seconds + 0.5) << " s)\n";
     if (!o.json.empty()) {
-        std::ofstream out(o.json);
-        if (!out) throw Error(o.json + ": cannot write the JSON report");
-        out << nlohmann::json{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}}.dump(2) << "\n";
+        nlohmann::json report{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}};
+        writeFileAtomic(o.json, report.dump(2) + "\n", WriteOptions{"the JSON report"});
     }
     return passed == int(selected.size()) ? 0 : 1;
 }
@@ -73,12 +73,17 @@ int runCheck(const CheckCommandOptions& o) {
 void addCheckCommand(CLI::App& app) {
     auto o = std::make_shared<CheckCommandOptions>();
     CLI::App* cmd = app.add_subcommand("check", "Check exercise implementations against the CPU reference");
-    cmd->add_option("--impl", o->impl, "Folder with the exercise files (default: exercises/)");
+    cmd->add_option("--impl", o->impl, "Folder with the exercise files (default: exercises/)")->check(notEmpty());
     cmd->add_option("-e,--exercise", o->exercises, "Exercise to check, by number or name (repeatable; default: all)");
-    cmd->add_option("--file", o->file, "Check this file as the implementation of the one --exercise");
-    cmd->add_option("--json", o->json, "Also write the results as JSON");
-    cmd->add_option("--output", o->output, "Where expected/got/diff PNGs of failing images go")->capture_default_str();
-    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")->capture_default_str();
+    cmd->add_option("--file", o->file, "Check this file as the implementation of the one --exercise")
+        ->check(notEmpty());
+    cmd->add_option("--json", o->json, "Also write the results as JSON")->check(notEmpty());
+    cmd->add_option("--output", o->output, "Where expected/got/diff PNGs of failing images go")
+        ->capture_default_str()
+        ->check(notEmpty());
+    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")
+        ->capture_default_str()
+        ->check(secondsIn(0, 86400));
     cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_flag("-v,--verbose", o->verbose, "Print every detail");
     cmd->callback([o] {

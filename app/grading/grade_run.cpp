@@ -403,7 +403,7 @@ int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& lo
     const fs::path results = root / "results" / "results.json";
     auto fallback = [&](const std::string& why) {
         nlohmann::json j = {{"score", 0}, {"output", "raylab could not grade this submission: " + why}};
-        writeFileAtomic(results, j.dump(2) + "\n");
+        writeOutputFile(results, j.dump(2) + "\n");
         log << "raylab grade --gradescope: " << why << "\n";
     };
     SubmissionEntry entry;
@@ -432,7 +432,7 @@ int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& lo
             fallback("the grader failed");
             return 0;
         }
-        writeFileAtomic(results, readWholeFile(studentDir(settings.out, entry.id) / "results.json"));
+        writeOutputFile(results, readWholeFile(studentDir(settings.out, entry.id) / "results.json"));
         log << "wrote " << results.string() << "\n";
     } catch (const Error& e) {
         fallback(e.what());

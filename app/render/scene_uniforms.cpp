@@ -1,6 +1,7 @@
 #include "render/scene_uniforms.h"
 
 #include "core/error.h"
+#include "core/message.h"
 #include "render/bounce_cutoff.h"
 
 #include <glm/geometric.hpp>
@@ -84,8 +85,8 @@ View parseView(const std::string& name, int& bounce) {
         bounce = std::stoi(name.substr(6));
         return View::Bounce;
     }
-    throw Error("--view: unknown view '" + name +
-                "' (expected final, d, g, f, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
+    throw Error("--view: unknown view " + quotedValue(name) +
+                " (expected final, d, g, f, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
 }
 
 std::string viewName(View view, int bounce) {

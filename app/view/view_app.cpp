@@ -1,6 +1,7 @@
 #include "view/view_app.h"
 
 #include "core/error.h"
+#include "core/message.h"
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -68,7 +69,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
         compareModel = ShadingModel{};  // the reference model: GGX, Schlick-GGX, Schlick, Lambert
         compareModelName = "PBR";
     } else if (!options_.compareModel.empty()) {
-        throw Error("--compare-model: unknown model '" + options_.compareModel + "' (expected blinn-phong or pbr)");
+        throw Error("--compare-model: unknown model " + quotedValue(options_.compareModel) + " (expected blinn-phong or pbr)");
     }
     if (compareModel && impls.size() == 1) impls.push_back(impls[0]);  // the same code, another model
 
@@ -343,16 +344,9 @@ void ViewApp::saveScene() {
     Scene scene = scene_.scene();
     if (state_.saveCamera) scene.camera = trackball_->camera();
     try {
-        // Written next to the target and renamed over it: the file watcher
-        // (and any editor) never sees a half-written scene.
-        const std::string temporary = state_.savePath + ".saving";
-        saveSceneFile(scene, temporary);
-        std::error_code ec;
-        fs::rename(temporary, state_.savePath, ec);
-        if (ec) {
-            fs::remove(temporary, ec);
-            throw Error(state_.savePath + ": cannot write the scene (" + ec.message() + ")");
-        }
+        // Atomic (core/file_io.h): the file watcher (and any editor) never
+        // sees a half-written scene.
+        saveSceneFile(scene, state_.savePath);
         status_ = "saved " + state_.savePath;
         std::cout << "raylab: " << status_ << std::endl;
     } catch (const Error& e) {
