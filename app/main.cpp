@@ -8,6 +8,7 @@
 #include "shader/program.h"
 
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 
 namespace {
@@ -41,7 +42,13 @@ int main(int argc, char** argv) {
         std::cerr << "raylab: error: name a command: " << commands << " (raylab --help explains them)\n";
         return kUsageError;
     }
-    if (argv[1][0] != '-' && !isCommand(argv[1])) {
+    const std::string first = argv[1];
+    if (first[0] == '-' && first != "-h" && first != "--help") {
+        std::cerr << "raylab: error: " << rl::quotedValue(first) << " before a command; expected " << commands
+                  << " first (raylab --help explains them)\n";
+        return kUsageError;
+    }
+    if (first[0] != '-' && !isCommand(argv[1])) {
         std::cerr << "raylab: error: " << rl::quotedValue(argv[1]) << " is not a command; expected " << commands << "\n";
         return kUsageError;
     }
@@ -61,6 +68,9 @@ int main(int argc, char** argv) {
         return 1;
     } catch (const rl::Error& e) {
         std::cerr << "raylab: error: " << rl::oneLine(e.what()) << "\n";
+        return 1;
+    } catch (const std::filesystem::filesystem_error& e) {  // a path the OS refuses (too long, a loop of links)
+        std::cerr << "raylab: error: " << rl::oneLine(e.path1().string()) << ": " << e.code().message() << "\n";
         return 1;
     } catch (const std::bad_alloc&) {
         std::cerr << "raylab: error: out of memory\n";

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/paths.h"
+#include "gl/context.h"
 
 #include <nlohmann/json.hpp>
 
@@ -31,13 +32,16 @@ struct CheckCommandOptions {
 
 int runCheck(const CheckCommandOptions& o) {
     auto start = std::chrono::steady_clock::now();
+    std::error_code ec;
     if (!o.json.empty()) requireOutputPath(o.json, "the JSON report");
+    parseBackend(o.backend);  // refused now, not in every exercise's worker
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+        throw Error("--output: " + o.output + " exists and is not a folder");
     CheckOptions options;
     options.implDir = o.impl.empty() ? exercisesDir() : std::filesystem::path(o.impl);
     options.outputDir = o.output;
     options.timeoutSeconds = o.timeout;
     options.backend = o.backend;
-    std::error_code ec;
     if (o.file.empty() && !std::filesystem::is_directory(options.implDir, ec))
         throw Error("--impl: " + options.implDir.string() + " is not a directory");
 

@@ -8,6 +8,7 @@
 #include "commands/commands.h"
 
 #include "core/error.h"
+#include "gl/context.h"
 #include "core/message.h"
 #include "grading/grade_run.h"
 #include "grading/merge.h"
@@ -55,6 +56,7 @@ GradeSettings settingsFrom(const GradeCommandOptions& o) {
     GradeSettings s;
     if (o.jobs < 1) throw Error("--jobs: must be at least 1");
     if (!(o.timeout > 0)) throw Error("--timeout: must be more than 0 seconds");
+    parseBackend(o.backend);  // refused now, not in every student's worker
     s.rubric = loadRubric(o.rubric.empty() ? defaultRubricPath() : std::filesystem::path(o.rubric));
     if (!o.idColumn.empty()) s.rubric.idColumn = o.idColumn;
     s.out = o.out;
@@ -107,7 +109,8 @@ void addGradeCommand(CLI::App& app) {
         ->check(secondsIn(0, 86400));
     cmd->add_option("--rubric", o->rubric, "Rubric JSON (default: grading/default-rubric.json)")->check(notEmpty());
     cmd->add_option("--id-column", o->idColumn, "Header of the id column in grades.csv (e.g. Username)");
-    cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`");
+    cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`")
+        ->check(notEmpty());
     cmd->add_flag("--force", o->force, "Grade again students already graded in OUT");
     cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_flag("--gradescope", o->gradescope,

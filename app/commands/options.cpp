@@ -16,7 +16,9 @@ namespace {
 
 // The whole text as a finite number, or false.
 bool parseNumber(const std::string& text, double& value) {
-    if (text.empty() || text.size() > 64 || std::isspace(static_cast<unsigned char>(text[0]))) return false;
+    // Decimal only: strtod would also take "0x10", "inf", "nan" and leading blanks.
+    if (text.empty() || text.size() > 64 || text.find_first_not_of("0123456789+-.eE") != std::string::npos)
+        return false;
     char* end = nullptr;
     errno = 0;
     value = std::strtod(text.c_str(), &end);

@@ -57,7 +57,8 @@ void runRender(const RenderOptions& o) {
     } else {
         Backend backend = parseBackend(o.backend);
         Implementation impl{o.impl.empty() ? solutionsDir() : std::filesystem::path(o.impl), {}};
-        if (!std::filesystem::is_directory(impl.dir))
+        std::error_code ec;
+        if (!std::filesystem::is_directory(impl.dir, ec))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
         ShaderDefines defines = shaderDefinesFor(scene, !o.generic);

@@ -133,9 +133,18 @@ void writeFileAtomic(const fs::path& path, std::string_view content, const Write
 void requireOutputPath(const fs::path& path, const char* what) {
     struct stat existing {};
     fs::path target = resolveLink(path);
-    if (!path.empty() && stat(target.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode))
-        throw Error(path.string() + ": " + withWhat("cannot write", what) + " (" + kindOf(existing.st_mode) +
-                    ", not a regular file; name a file to write)");
+    auto fail = [&](const std::string& reason) {
+        return Error(path.string() + ": " + withWhat("cannot write", what) + " (" + reason + ")");
+    };
+    if (path.empty()) throw Error(withWhat("cannot write", what) + " (the file name is empty)");
+    if (stat(target.c_str(), &existing) == 0) {
+        if (!S_ISREG(existing.st_mode)) throw fail(std::string(kindOf(existing.st_mode)) + ", not a regular file; name a file to write");
+    } else if (errno != ENOENT) {
+        throw fail(std::strerror(errno));
+    }
+    // The folder must be there and writable: found now, not after the work is done.
+    fs::path folder = target.parent_path();
+    if (access(folder.empty() ? "." : folder.c_str(), W_OK | X_OK) != 0) throw fail(std::strerror(errno));
 }
 
 std::string readRegularFile(const fs::path& path, std::uintmax_t maxBytes, const char* what) {

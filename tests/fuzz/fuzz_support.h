@@ -12,13 +12,13 @@
 namespace rl::fuzz {
 
 // RAYLAB_FUZZ_SEED, RAYLAB_FUZZ_COUNT, RAYLAB_FUZZ_SECONDS, RAYLAB_FUZZ_RUN_TIMEOUT,
-// RAYLAB_FUZZ_STRICT_SHADERS (see test_fuzz.cpp).
+// RAYLAB_FUZZ_AFTER_DIAGNOSTICS (see test_fuzz.cpp).
 struct Settings {
     std::uint64_t seed = 20261201;  // the suite's fixed seed set
     long count = 0;                 // inputs per test; 0: each test's default
     double seconds = 30;            // time budget per test (2 cores, llvmpipe: about 2 minutes for the label)
     double runTimeout = 60;         // one raylab run; a render of 16x12 takes well under a second
-    bool strictShaders = false;
+    bool afterDiagnostics = false;  // RAYLAB_FUZZ_AFTER_DIAGNOSTICS=1 (see test_fuzz.cpp)
     static Settings fromEnvironment();
 };
 
@@ -74,7 +74,7 @@ private:
 struct Invocation {
     std::vector<std::string> args;
     std::vector<std::string> outputs;  // files the command names as outputs (relative)
-    std::string culprit;               // what the error line must name ("" = anything)
+    std::vector<std::string> culprits;  // the error line must name one of them (none: anything)
     std::string description;           // for failure messages
     std::uint64_t seed = 0;
     bool mayPass = true;          // the input may be valid: exit 0 is then fine
