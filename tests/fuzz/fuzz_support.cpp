@@ -88,6 +88,13 @@ RunResult runRaylab(const fs::path& dir, const std::vector<std::string>& args, d
     if (pid == 0) {
         setpgid(0, 0);  // its own group: a timeout kills raylab's children (check's workers) too
         if (chdir(dir.c_str()) != 0) _exit(126);
+        // Under the asan preset: raylab's own memory errors and undefined behaviour still end the
+        // run with a report (a signal-free non-zero exit and a stderr the checks below refuse), but
+        // not LeakSanitizer: llvmpipe leaves 112 bytes allocated at exit from a driver library
+        // that is unloaded by then, so the report has no frames a suppression could match
+        // (tests/sanitizers/lsan.supp). The unit tests keep leak checking.
+        if (const char* asan = std::getenv("ASAN_OPTIONS"))
+            setenv("ASAN_OPTIONS", (std::string(asan) + ":detect_leaks=0").c_str(), 1);
         int null = open("/dev/null", O_RDONLY);
         dup2(null, 0);
         dup2(outFd, 1);
@@ -265,6 +272,8 @@ void expectPromise(Sandbox& box, const Invocation& run, const Settings& settings
     std::vector<std::string> problems;
     if (r.timedOut) problems.push_back("no answer within " + std::to_string(int(settings.runTimeout)) + " s (hang)");
     else if (r.signal) problems.push_back(std::string("killed by signal ") + strsignal(r.signal) + " (crash)");
+    if (r.err.find("Sanitizer") != std::string::npos || r.err.find(": runtime error: ") != std::string::npos)
+        problems.push_back("a sanitizer report (asan preset)");
     if (r.err.size() > 20000) problems.push_back("stderr is " + std::to_string(r.err.size()) + " bytes");
     if (!r.timedOut && !r.signal) {
         std::vector<std::string> lines = linesOf(r.err);
