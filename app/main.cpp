@@ -1,10 +1,27 @@
 // raylab: a teaching framework for a GLSL fragment-shader ray tracer.
 // This file only wires the subcommands (app/commands/) together and turns
-// every error into one line on stderr and a non-zero exit status.
+// every error into one line on stderr and a non-zero exit status:
+// 1 for a bad input or a failed run, 2 for a usage error, 3 for a bug.
 #include "commands/commands.h"
 #include "core/error.h"
+#include "core/message.h"
+#include "shader/program.h"
 
+#include <cstring>
+#include <filesystem>
 #include <iostream>
+
+namespace {
+
+constexpr int kUsageError = 2;  // as getopt-based tools and CLI11's own "--help" conventions
+
+bool isCommand(const char* arg) {
+    for (const char* name : {"render", "check", "grade", "bench", "view"})
+        if (std::strcmp(arg, name) == 0) return true;
+    return false;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"raylab: a GLSL ray tracer for teaching physically based rendering"};
@@ -21,17 +38,46 @@ int main(int argc, char** argv) {
         throw rl::Error("view: this build has no window support (RAYLAB_WITH_GLFW=OFF); use `raylab render`");
     });
 #endif
+    const char* commands = "render, check, grade, bench or view";
+    if (argc < 2) {
+        std::cerr << "raylab: error: name a command: " << commands << " (raylab --help explains them)\n";
+        return kUsageError;
+    }
+    const std::string first = argv[1];
+    if (first[0] == '-' && first != "-h" && first != "--help") {
+        std::cerr << "raylab: error: " << rl::quotedValue(first) << " before a command; expected " << commands
+                  << " first (raylab --help explains them)\n";
+        return kUsageError;
+    }
+    if (first[0] != '-' && !isCommand(argv[1])) {
+        std::cerr << "raylab: error: " << rl::quotedValue(argv[1]) << " is not a command; expected " << commands << "\n";
+        return kUsageError;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {
         return e.get_exit_code();  // a command's own verdict (check: 1 when an exercise fails)
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);  // usage errors: CLI11's message and its non-zero exit status
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help
+        // CLI11's message on one line; its own printer adds a second line and exits 104-114.
+        std::cerr << "raylab: error: " << rl::oneLine(e.what()) << "\n";
+        return kUsageError;
+    } catch (const rl::ShaderError& e) {
+        // A compiler's report: one "file:line: error: ..." line per error, each followed by its
+        // indented source line (app/shader/program.cpp), control characters escaped.
+        std::cerr << "raylab: error: " << rl::printableLines(e.what(), 20000) << "\n";
+        return 1;
     } catch (const rl::Error& e) {
-        std::cerr << "raylab: error: " << e.what() << "\n";
+        std::cerr << "raylab: error: " << rl::oneLine(e.what()) << "\n";
+        return 1;
+    } catch (const std::filesystem::filesystem_error& e) {  // a path the OS refuses (too long, a loop of links)
+        std::cerr << "raylab: error: " << rl::oneLine(e.path1().string()) << ": " << e.code().message() << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "raylab: error: out of memory\n";
         return 1;
     } catch (const std::exception& e) {
-        std::cerr << "raylab: internal error: " << e.what() << "\n";
+        std::cerr << "raylab: internal error: " << rl::oneLine(e.what()) << "\n";
         return 3;
     }
     return 0;

@@ -2,11 +2,19 @@
 # The whole test suite: installs what is missing (including Xvfb and
 # Chromium for the window and report tests, Slurm and MUNGE for the Slurm
 # recipe's test), builds everything (the program and every test), runs every
-# CTest entry.
-# Extra arguments go to ctest, e.g. scripts/test.sh -L unit
+# CTest entry, then builds raylab, the unit and the fuzz tests again with
+# AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/) and runs those
+# two labels there.
+# Extra arguments go to ctest, e.g. scripts/test.sh -L unit (and then the
+# sanitizer pass is left out: a subset is a quick check, not CI).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --window --slurm
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$(nproc)"
 ctest --preset default -j "$(nproc)" "$@"
+if [ "$#" -eq 0 ]; then
+    cmake --preset asan >/dev/null
+    cmake --build --preset asan -j "$(nproc)"
+    ctest --preset asan -j "$(nproc)"
+fi

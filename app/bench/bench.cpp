@@ -3,6 +3,8 @@
 #include "bench/pareto.h"
 #include "bench/textbook.h"
 #include "core/error.h"
+#include "core/message.h"
+#include "core/file_io.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -15,7 +17,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -344,7 +345,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log) {
                     std::to_string(options.referenceSpp));
     for (const std::string& s : options.sweeps)
         if (std::find(sweepNames().begin(), sweepNames().end(), s) == sweepNames().end())
-            throw Error("--sweeps: unknown group '" + s + "' (expected modes, bounces, spp, resolution, models, strategies)");
+            throw Error("--sweeps: unknown group " + quotedValue(s) + " (expected modes, bounces, spp, resolution, models, strategies)");
 
     std::vector<std::string> files = options.scenes;
     if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
@@ -543,10 +544,7 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
 }
 
 void writeTextFile(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw Error(path.string() + ": cannot write");
+    writeFileAtomic(path, text);
 }
 
 }  // namespace rl::bench

@@ -1,6 +1,7 @@
 #include "checks/exercise_registry.h"
 
 #include "core/error.h"
+#include "core/message.h"
 
 #include <cctype>
 #include <fstream>
@@ -32,7 +33,7 @@ const ExerciseInfo& findExercise(const std::string& key) {
     }
     std::string valid;
     for (const ExerciseInfo& e : allExercises()) valid += (valid.empty() ? "" : ", ") + std::to_string(e.number);
-    throw Error("--exercise: no exercise '" + key + "' (expected one of " + valid + ", or a name like 05-ggx)");
+    throw Error("--exercise: no exercise " + quotedValue(key) + " (expected one of " + valid + ", or a name like 05-ggx)");
 }
 
 std::string normalisedGlsl(const std::string& text) {

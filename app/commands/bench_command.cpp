@@ -6,6 +6,8 @@
 
 #include "bench/bench.h"
 #include "core/error.h"
+#include "core/message.h"
+#include "core/file_io.h"
 
 #include <filesystem>
 #include <iostream>
@@ -38,6 +40,8 @@ std::set<std::string> splitList(const std::string& text) {
 }
 
 void runBenchCommand(const BenchCommandOptions& o) {
+    if (!o.csv.empty()) requireOutputPath(o.csv);
+    if (!o.plot.empty()) requireOutputPath(o.plot);
     bench::Options options;
     options.scenes = o.scenes;
     Size size = parseSize(o.size);
@@ -53,7 +57,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
     else if (o.clock == "gpu") options.clock = bench::Clock::Gpu;
     else if (o.clock == "wall") options.clock = bench::Clock::Wall;
     else if (o.clock == "cpu") options.clock = bench::Clock::Cpu;
-    else throw Error("--clock: expected auto, gpu, wall or cpu, not '" + o.clock + "'");
+    else throw Error("--clock: expected auto, gpu, wall or cpu, not " + quotedValue(o.clock));
 
     std::vector<bench::Measurement> results = bench::runBench(options, std::cerr);
     std::cout << bench::formatTable(results) << "\n" << bench::formatComparisons(results);
@@ -72,16 +76,23 @@ void runBenchCommand(const BenchCommandOptions& o) {
 void addBenchCommand(CLI::App& app) {
     auto options = std::make_shared<BenchCommandOptions>();
     CLI::App* cmd = app.add_subcommand("bench", "Measure time per frame against error for shader variants and settings");
-    cmd->add_option("scenes", options->scenes, "Scene files (.json); scenes/lecture.json when omitted");
-    cmd->add_option("--csv", options->csv, "Write one CSV row per measurement to FILE");
-    cmd->add_option("--plot", options->plot, "Write error against time, Pareto front marked, as SVG to FILE");
+    cmd->add_option("scenes", options->scenes, "Scene files (.json); scenes/lecture.json when omitted")
+        ->check(notEmpty());
+    cmd->add_option("--csv", options->csv, "Write one CSV row per measurement to FILE")->check(notEmpty());
+    cmd->add_option("--plot", options->plot, "Write error against time, Pareto front marked, as SVG to FILE")
+        ->check(notEmpty());
     cmd->add_option("--size", options->size, "Size of every measurement and of the reference, WIDTHxHEIGHT")
-        ->capture_default_str();
-    cmd->add_option("--warmup", options->warmup, "Untimed frames before timing each variant")->capture_default_str();
+        ->capture_default_str()
+        ->check(sizeValue());
+    cmd->add_option("--warmup", options->warmup, "Untimed frames before timing each variant")
+        ->capture_default_str()
+        ->check(wholeNumberIn(0, 1000));
     cmd->add_option("--frames", options->frames, "Timed frames per variant (the median is reported)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(wholeNumberIn(1, 10000));
     cmd->add_option("--reference-spp", options->referenceSpp, "Samples per pixel of the converged CPU reference")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(squareNumberIn(1, 1024));
     cmd->add_option("--sweeps", options->sweeps,
                     "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all)");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();

@@ -8,7 +8,9 @@
 
 #include "checks/checker.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/paths.h"
+#include "gl/context.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +18,6 @@
 #include <chrono>
 #include <optional>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace rl {
@@ -35,12 +36,16 @@ struct CheckCommandOptions {
 
 int runCheck(const CheckCommandOptions& o) {
     auto start = std::chrono::steady_clock::now();
+    std::error_code ec;
+    if (!o.json.empty()) requireOutputPath(o.json, "the JSON report");
+    parseBackend(o.backend);  // refused now, not in every exercise's worker
+    if (std::filesystem::exists(o.output, ec) && !std::filesystem::is_directory(o.output, ec))
+        throw Error("--output: " + o.output + " exists and is not a folder");
     CheckOptions options;
     options.implDir = o.impl.empty() ? exercisesDir() : std::filesystem::path(o.impl);
     options.outputDir = o.output;
     options.timeoutSeconds = o.timeout;
     options.backend = o.backend;
-    std::error_code ec;
     if (o.file.empty() && !std::filesystem::is_directory(options.implDir, ec))
         throw Error("--impl: " + options.implDir.string() + " is not a directory");
 
@@ -80,11 +85,9 @@ int runCheck(const CheckCommandOptions& o) {
     std::cout << passed << " of " << selected.size() << " exercises pass"
               << (togetherOk ? "" : "; the files do not compile together") << " (" << int(seconds + 0.5) << " s)\n";
     if (!o.json.empty()) {
-        std::ofstream out(o.json);
-        if (!out) throw Error(o.json + ": cannot write the JSON report");
         nlohmann::json report{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}};
         if (together) report["together"] = toJson(*together);
-        out << report.dump(2) << "\n";
+        writeFileAtomic(o.json, report.dump(2) + "\n", WriteOptions{"the JSON report"});
     }
     return passed == int(selected.size()) && togetherOk ? 0 : 1;
 }
@@ -94,12 +97,17 @@ int runCheck(const CheckCommandOptions& o) {
 void addCheckCommand(CLI::App& app) {
     auto o = std::make_shared<CheckCommandOptions>();
     CLI::App* cmd = app.add_subcommand("check", "Check exercise implementations against the CPU reference");
-    cmd->add_option("--impl", o->impl, "Folder with the exercise files (default: exercises/)");
+    cmd->add_option("--impl", o->impl, "Folder with the exercise files (default: exercises/)")->check(notEmpty());
     cmd->add_option("-e,--exercise", o->exercises, "Exercise to check, by number or name (repeatable; default: all)");
-    cmd->add_option("--file", o->file, "Check this file as the implementation of the one --exercise");
-    cmd->add_option("--json", o->json, "Also write the results as JSON");
-    cmd->add_option("--output", o->output, "Where expected/got/diff PNGs of failing images go")->capture_default_str();
-    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")->capture_default_str();
+    cmd->add_option("--file", o->file, "Check this file as the implementation of the one --exercise")
+        ->check(notEmpty());
+    cmd->add_option("--json", o->json, "Also write the results as JSON")->check(notEmpty());
+    cmd->add_option("--output", o->output, "Where expected/got/diff PNGs of failing images go")
+        ->capture_default_str()
+        ->check(notEmpty());
+    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")
+        ->capture_default_str()
+        ->check(secondsIn(0, 86400));
     cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_flag("-v,--verbose", o->verbose, "Print every detail");
     cmd->callback([o] {

@@ -13,10 +13,21 @@ void addBenchCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addRecordCommand(CLI::App& app);
 
-// Shared option parsing.
+// Shared option parsing (app/commands/options.cpp).
 struct Size {
     int width = 0, height = 0;
 };
-Size parseSize(const std::string& text);  // "640x480"; throws rl::Error
+Size parseSize(const std::string& text);  // "640x480"; throws rl::Error "--size: ..."
+
+// Validators for option values. CLI11 reports a failure as a usage error,
+// "--spp: must be ..., not '0'" (one line, exit status 2, see main.cpp). Each
+// refuses an empty value, text that is not a number, NaN and infinities, and
+// values out of range; CLI11's own conversion would turn '' into 0 silently.
+CLI::Validator wholeNumberIn(long long min, long long max);
+CLI::Validator squareNumberIn(long long min, long long max);  // spp: 1, 4, 9, 16, ...
+CLI::Validator secondsIn(double minExclusive, double max);     // --timeout: (0, max]
+CLI::Validator numberIn(double min, double max);
+CLI::Validator sizeValue();  // WIDTHxHEIGHT, as parseSize
+CLI::Validator notEmpty();   // a path or a name
 
 }  // namespace rl

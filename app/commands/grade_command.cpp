@@ -9,6 +9,8 @@
 #include "commands/commands.h"
 
 #include "core/error.h"
+#include "gl/context.h"
+#include "core/message.h"
 #include "grading/grade_run.h"
 #include "grading/lms_export.h"
 #include "grading/merge.h"
@@ -49,7 +51,7 @@ void parseShard(const std::string& text, int& index, int& count) {
         count = std::stoi(text.substr(slash + 1), &used);
         if (used != text.size() - slash - 1) throw std::invalid_argument(text);
     } catch (const std::logic_error&) {
-        throw Error("--shard: expected I/N, e.g. 2/8, got '" + text + "'");
+        throw Error("--shard: expected I/N, e.g. 2/8, got " + quotedValue(text));
     }
     if (count < 1 || index < 1 || index > count)
         throw Error("--shard: " + text + " is not a slice: I must be between 1 and N");
@@ -59,6 +61,7 @@ GradeSettings settingsFrom(const GradeCommandOptions& o) {
     GradeSettings s;
     if (o.jobs < 1) throw Error("--jobs: must be at least 1");
     if (!(o.timeout > 0)) throw Error("--timeout: must be more than 0 seconds");
+    parseBackend(o.backend);  // refused now, not in every student's worker
     s.rubric = loadRubric(o.rubric.empty() ? defaultRubricPath() : std::filesystem::path(o.rubric));
     if (!o.idColumn.empty()) s.rubric.idColumn = o.idColumn;
     s.out = o.out;
@@ -123,13 +126,19 @@ int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
 void addGradeCommand(CLI::App& app) {
     auto o = std::make_shared<GradeCommandOptions>();
     CLI::App* cmd = app.add_subcommand("grade", "Grade a class of submissions: grades.csv, Gradescope JSON, HTML report");
-    cmd->add_option("submissions", o->submissions, "Folder with one folder or .zip per student");
-    cmd->add_option("-o,--output", o->out, "Output folder (a second run skips students already graded there)");
-    cmd->add_option("-j,--jobs", o->jobs, "Students graded at the same time")->capture_default_str();
-    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")->capture_default_str();
-    cmd->add_option("--rubric", o->rubric, "Rubric JSON (default: grading/default-rubric.json)");
+    cmd->add_option("submissions", o->submissions, "Folder with one folder or .zip per student")->check(notEmpty());
+    cmd->add_option("-o,--output", o->out, "Output folder (a second run skips students already graded there)")
+        ->check(notEmpty());
+    cmd->add_option("-j,--jobs", o->jobs, "Students graded at the same time")
+        ->capture_default_str()
+        ->check(wholeNumberIn(1, 256));
+    cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")
+        ->capture_default_str()
+        ->check(secondsIn(0, 86400));
+    cmd->add_option("--rubric", o->rubric, "Rubric JSON (default: grading/default-rubric.json)")->check(notEmpty());
     cmd->add_option("--id-column", o->idColumn, "Header of the id column in grades.csv (e.g. Username)");
-    cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`");
+    cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`")
+        ->check(notEmpty());
     cmd->add_flag("--force", o->force, "Grade again students already graded in OUT");
     cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_flag("--gradescope", o->gradescope,

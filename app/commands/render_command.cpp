@@ -4,6 +4,7 @@
 
 #include "checks/exercise_registry.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -18,15 +19,6 @@
 #include <iostream>
 
 namespace rl {
-
-Size parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 ||
-        h < 1 || w > 16384 || h > 16384)
-        throw Error("--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, e.g. 640x480, not '" + text + "'");
-    return {w, h};
-}
 
 namespace {
 
@@ -44,6 +36,8 @@ struct RenderOptions {
 };
 
 void runRender(const RenderOptions& o) {
+    requireOutputPath(o.png, "PNG");
+    if (!o.pfm.empty()) requireOutputPath(o.pfm, "PFM");
     LoadedScene loaded = o.scene.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(o.scene);
     for (const auto& w : loaded.warnings) std::cerr << "raylab: warning: " << w << "\n";
     Scene scene = loaded.scene;
@@ -52,13 +46,7 @@ void runRender(const RenderOptions& o) {
         scene.render.width = s.width;
         scene.render.height = s.height;
     }
-    if (o.spp != 0) {
-        int n = int(std::lround(std::sqrt(double(o.spp))));
-        if (o.spp < 1 || n * n != o.spp || o.spp > 1024)
-            throw Error("--spp: must be a square number from 1 to 1024 (1, 4, 9, 16, ...), not " +
-                        std::to_string(o.spp));
-        scene.render.spp = o.spp;
-    }
+    if (o.spp != 0) scene.render.spp = o.spp;  // a square from 1 to 1024 (the option's validator)
     int bounce = 0;
     View view = parseView(o.view, bounce);
 
@@ -69,7 +57,8 @@ void runRender(const RenderOptions& o) {
     } else {
         Backend backend = parseBackend(o.backend);
         Implementation impl{o.impl.empty() ? solutionsDir() : std::filesystem::path(o.impl), {}};
-        if (!std::filesystem::is_directory(impl.dir))
+        std::error_code ec;
+        if (!std::filesystem::is_directory(impl.dir, ec))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
         ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
@@ -96,13 +85,18 @@ void runRender(const RenderOptions& o) {
 void addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene headless to PNG (and PFM)");
-    cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted");
-    cmd->add_option("-o,--output", options->png, "PNG to write (8-bit, display-encoded)")->capture_default_str();
-    cmd->add_option("--hdr", options->pfm, "Also write linear radiance as PFM");
-    cmd->add_option("--size", options->size, "Override the scene's size, WIDTHxHEIGHT");
-    cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)");
+    cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted")
+        ->check(notEmpty());
+    cmd->add_option("-o,--output", options->png, "PNG to write (8-bit, display-encoded)")
+        ->capture_default_str()
+        ->check(notEmpty());
+    cmd->add_option("--hdr", options->pfm, "Also write linear radiance as PFM")->check(notEmpty());
+    cmd->add_option("--size", options->size, "Override the scene's size, WIDTHxHEIGHT")->check(sizeValue());
+    cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)")
+        ->check(squareNumberIn(1, 1024));
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
-    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)")
+        ->check(notEmpty());
     cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");

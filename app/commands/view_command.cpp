@@ -23,15 +23,16 @@ void addViewCommand(CLI::App& app) {
     cmd->add_option("--compare-model", options->compareModel,
                     "Right of the divider, the same scene with another model: blinn-phong or pbr")
         ->check(CLI::IsMember({"blinn-phong", "pbr"}));
-    cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT (default: the scene's size)");
+    cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT (default: the scene's size)")->check(sizeValue());
     cmd->add_option("--view", options->view,
                     "Teaching view at start: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     CLI::Option* frames = cmd->add_option("--frames", options->frames,
                                           "Render N frames (after the --script, if any), print timings, exit")
-                              ->check(CLI::Range(1, 1000000));
+                              ->check(wholeNumberIn(1, 1000000));
     cmd->add_option("--screenshot", options->screenshot, "With --frames: save the last frame's picture as PNG")
-        ->needs(frames);
+        ->needs(frames)
+        ->check(notEmpty());
     cmd->add_option("--script", options->script, "Scripted input, one command a line (see docs/lecture.md)");
     cmd->add_flag("--stats", options->stats, "Print the median frame time at exit");
     cmd->add_flag("--fullscreen", options->fullscreen, "Start fullscreen");
@@ -42,7 +43,7 @@ void addViewCommand(CLI::App& app) {
                   "Start without the caption and colour bar on the picture (K shows them)");
     cmd->add_option("--ui-scale", options->uiScale,
                     "Panel and text scale, e.g. 2 for a projector (default: the screen's)")
-        ->check(CLI::Range(0.5, 4.0));
+        ->check(numberIn(0.5, 4.0));
     cmd->callback([options, size] {
         if (!size->empty()) {
             Size s = parseSize(*size);

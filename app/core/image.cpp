@@ -3,6 +3,7 @@
 #include "core/image.h"
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 #include <algorithm>
 #include <array>
@@ -48,45 +49,16 @@ namespace {
 
 using Bytes = std::vector<unsigned char>;
 
-std::string systemReason() { return std::strerror(errno); }
-
-// Reads a whole file; throws "path: cannot read <what> (reason)".
+// Reads a whole regular file (core/file_io.h); throws "path: cannot read <what> (reason)".
 Bytes readFile(const std::string& path, const char* what) {
-    auto fail = [&](const std::string& reason) {
-        return Error(path + ": cannot read " + what + " (" + reason + ")");
-    };
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw fail(systemReason());
-    Bytes data;
-    unsigned char buffer[1 << 16];  // 64 KiB: a few reads for a typical image, small on the stack
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) data.insert(data.end(), buffer, buffer + n);
-    bool failed = std::ferror(f) != 0;
-    int savedErrno = errno;
-    std::fclose(f);
-    if (failed) {
-        errno = savedErrno;
-        throw fail(systemReason());
-    }
-    return data;
+    std::string data = readRegularFile(path, kMaxImageFileBytes, what);
+    return Bytes(data.begin(), data.end());
 }
 
-// Writes a whole file; throws "path: cannot write <what> (reason)". A file
-// left half-written (disk full) is removed so nobody mistakes it for output.
+// Writes a whole file atomically (core/file_io.h): on failure the old file is
+// intact and nothing half-written is left. Throws "path: cannot write <what> (reason)".
 void writeFile(const std::string& path, const char* what, const Bytes& data) {
-    auto fail = [&](const std::string& reason) {
-        return Error(path + ": cannot write " + what + " (" + reason + ")");
-    };
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) throw fail(systemReason());
-    int error = 0;
-    if (std::fwrite(data.data(), 1, data.size(), f) != data.size()) error = errno;
-    if (std::fclose(f) != 0 && error == 0) error = errno;  // fclose flushes: a full disk shows up here
-    if (error != 0) {
-        std::remove(path.c_str());
-        errno = error;
-        throw fail(systemReason());
-    }
+    writeFileAtomic(path, std::string_view(reinterpret_cast<const char*>(data.data()), data.size()), WriteOptions{what});
 }
 
 // Checks that the pixel buffer matches the size; returns "" or the reason.

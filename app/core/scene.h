@@ -81,6 +81,11 @@ struct Scene {
 
 // Limits of the GLSL path (uniform block sizes); the loader rejects more.
 constexpr int kMaxSpheres = 64;
+// Image size: 16384 a side is the largest texture OpenGL 4.x drivers promise
+// (GL_MAX_TEXTURE_SIZE); 2^26 pixels in all (8192x8192) keeps the two RGBA32F
+// targets at 2 GiB and the CPU copies at about 3 GiB more.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxPixels = 1LL << 26;
 constexpr int kMaxLights = 16;
 constexpr int kMaxBounces = 16;
 

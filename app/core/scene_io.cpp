@@ -3,15 +3,16 @@
 #include "core/float_range.h"
 
 #include "core/error.h"
+#include "core/file_io.h"
+#include "core/json_text.h"
+#include "core/message.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace rl {
 
@@ -31,7 +32,7 @@ public:
         if (std::uncaught_exceptions()) return;
         for (const auto& [key, value] : object_.items())
             if (!used_.count(key))
-                warnings_.push_back(origin_ + ": unknown key '" + displayName(key) + "' (ignored)");
+                warnings_.push_back(origin_ + ": unknown key " + quotedValue(displayName(key), 60) + " (ignored)");
     }
 
     bool has(const std::string& key) {
@@ -56,20 +57,24 @@ public:
         if (!has(key)) return fallback;
         const json& v = object_.at(key);
         if (!v.is_number_integer() && !(v.is_number() && std::floor(v.get<double>()) == v.get<double>()))
-            fail(field(key) + " must be a whole number, not " + v.dump());
+            fail(field(key) + " must be a whole number, not " + describeJsonValue(v));
         double d = v.get<double>();
         if (std::fabs(d) > 1e9) fail(field(key) + " is out of range");
         return int(d);
     }
+    // Any finite size: what float32 can carry is decided for the whole scene,
+    // in its own unit of length (core/float_range.h).
     glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback) {
         if (!has(key)) return fallback;
         const json& v = object_.at(key);
-        if (!v.is_array() || v.size() != 3) fail(field(key) + " must be an array of 3 numbers");
+        if (!v.is_array() || v.size() != 3)
+            fail(field(key) + " must be an array of 3 numbers, not " + describeJsonValue(v));
         glm::dvec3 out;
         for (int i = 0; i < 3; ++i) {
-            if (!v[i].is_number()) fail(field(key) + "[" + std::to_string(i) + "] must be a number");
+            std::string element = key + "[" + std::to_string(i) + "]";
+            if (!v[i].is_number()) fail(field(element) + " must be a number, not " + typeName(v[i]));
             out[i] = v[i].get<double>();
-            if (!std::isfinite(out[i])) fail(field(key) + "[" + std::to_string(i) + "] must be finite");
+            if (!std::isfinite(out[i])) fail(field(element) + " must be finite");
         }
         return out;
     }
@@ -112,6 +117,13 @@ private:
     std::set<std::string> used_;
 };
 
+// v scaled so its largest component is +-1: a direction whose length can be
+// taken without overflow (1e300) or underflow (1e-300).
+glm::dvec3 rescaled(const glm::dvec3& v) {
+    double m = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
+    return m > 0.0 ? v / m : v;
+}
+
 bool inUnit(double x) { return x >= 0.0 && x <= 1.0; }
 bool inUnit(const glm::dvec3& v) { return inUnit(v.x) && inUnit(v.y) && inUnit(v.z); }
 bool nonNegative(const glm::dvec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
@@ -126,7 +138,7 @@ Enum choose(Reader& r, const std::string& key, Enum fallback,
         if (value == name) return e;
         all += std::string(all.empty() ? "" : ", ") + name;
     }
-    r.fail(r.field(key) + " must be one of " + all + ", not '" + value + "'");
+    r.fail(r.field(key) + " must be one of " + all + ", not " + quotedValue(value));
 }
 
 Camera readCamera(const json& j, const std::string& origin, std::vector<std::string>& warnings) {
@@ -134,14 +146,19 @@ Camera readCamera(const json& j, const std::string& origin, std::vector<std::str
     Camera c;
     c.position = r.vec3("position", c.position);
     c.target = r.vec3("target", c.target);
-    c.up = r.vec3("up", c.up);
+    c.up = r.vec3("up", c.up, true);
     c.fovYDegrees = r.number("fov_y", c.fovYDegrees);
     r.require(c.fovYDegrees > 0.0 && c.fovYDegrees < 180.0, "fov_y", "must be between 0 and 180 degrees");
     glm::dvec3 forward = c.target - c.position;
     r.require(glm::length(forward) > 0.0, "target", "must differ from camera.position");
-    glm::dvec3 side = glm::cross(glm::normalize(forward), c.up);
-    r.require(glm::length(c.up) > 0.0 && glm::length(side) > 1e-9 * glm::length(c.up), "up",
-              "must not be zero or parallel to the viewing direction");
+    // up is a direction: stored at unit length, so that [0, 1e300, 0] is "up" and the
+    // float32 shader never sees its size. Both are rescaled before any length is taken.
+    const char* rule = "must not be zero or parallel to the viewing direction";
+    r.require(c.up != glm::dvec3(0.0), "up", rule);
+    c.up = glm::normalize(rescaled(c.up));
+    glm::dvec3 side = glm::cross(glm::normalize(rescaled(forward)), c.up);
+    // 1e-9: sin of the angle between up and the view; below it the side vector is rounding noise.
+    r.require(glm::length(side) > 1e-9, "up", rule);
     return c;
 }
 
@@ -150,8 +167,12 @@ RenderSettings readRender(const json& j, const std::string& origin, std::vector<
     RenderSettings s;
     s.width = r.integer("width", s.width);
     s.height = r.integer("height", s.height);
-    r.require(s.width >= 1 && s.width <= 16384, "width", "must be between 1 and 16384");
-    r.require(s.height >= 1 && s.height <= 16384, "height", "must be between 1 and 16384");
+    r.require(s.width >= 1 && s.width <= kMaxImageSide, "width", "must be between 1 and 16384");
+    r.require(s.height >= 1 && s.height <= kMaxImageSide, "height", "must be between 1 and 16384");
+    if ((long long)s.width * s.height > kMaxPixels)
+        r.fail("render.width x render.height is " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
+               std::to_string((long long)s.width * s.height) + " pixels, more than the limit of " +
+               std::to_string(kMaxPixels) + " (8192x8192)");
     s.maxBounces = r.integer("max_bounces", s.maxBounces);
     r.require(s.maxBounces >= 0 && s.maxBounces <= kMaxBounces, "max_bounces",
               "must be between 0 and " + std::to_string(kMaxBounces));
@@ -236,67 +257,50 @@ Light readLight(const json& j, const std::string& path, const std::string& origi
     return l;
 }
 
-// 1-based line and column of a byte offset, for syntax errors.
-std::string lineColumn(const std::string& text, std::size_t offset) {
-    offset = std::min(offset, text.size());
-    int line = 1, column = 1;
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return std::to_string(line) + ":" + std::to_string(column);
-}
-
 }  // namespace
 
 LoadedScene parseScene(const std::string& text, const std::string& origin) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos)
         throw Error(origin + ": the scene file is empty (expected a JSON object)");
-    json j;
-    try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // e.byte is 1-based, pointing just past the offending character.
-        std::string what = e.what();
-        auto pos = what.find("syntax error while parsing value - ");
-        std::string detail = pos == std::string::npos ? what : what.substr(pos + 35);
-        if (pos == std::string::npos && (pos = what.find("syntax error")) != std::string::npos) detail = what.substr(pos);
-        throw Error(origin + ":" + lineColumn(text, e.byte > 0 ? e.byte - 1 : 0) + ": syntax error: " + detail);
-    }
+    json j = parseJsonText(text, origin);
     LoadedScene out;
     out.scene.sourcePath = origin;
-    Reader top(j, "", origin, out.warnings);
-    Scene& s = out.scene;
-    // "$schema" points editors at scenes/scene.schema.json; the program has no use for it.
-    if (top.has("$schema") && !top.raw("$schema").is_string()) top.fail("$schema must be a string (the schema's path)");
-    if (top.has("camera")) s.camera = readCamera(top.raw("camera"), origin, out.warnings);
-    if (top.has("render")) s.render = readRender(top.raw("render"), origin, out.warnings);
-    if (top.has("model")) s.model = readModel(top.raw("model"), origin, out.warnings);
-    for (const char* list : {"lights", "spheres"}) {
-        if (!top.has(list)) continue;
-        const json& items = top.raw(list);
-        if (!items.is_array()) top.fail(std::string(list) + " must be an array");
-        for (std::size_t i = 0; i < items.size(); ++i) {
-            std::string path = std::string(list) + "[" + std::to_string(i) + "]";
-            if (list[0] == 'l')
-                s.lights.push_back(readLight(items[i], path, origin, out.warnings));
-            else
-                s.spheres.push_back(readSphere(items[i], path, origin, out.warnings));
+    {  // the top-level reader adds its warnings when it goes out of scope
+        Reader top(j, "", origin, out.warnings);
+        Scene& s = out.scene;
+        // "$schema" points editors at scenes/scene.schema.json; the program has no use for it.
+        if (top.has("$schema") && !top.raw("$schema").is_string())
+            top.fail("$schema must be a string (the schema's path)");
+        if (top.has("camera")) s.camera = readCamera(top.raw("camera"), origin, out.warnings);
+        if (top.has("render")) s.render = readRender(top.raw("render"), origin, out.warnings);
+        if (top.has("model")) s.model = readModel(top.raw("model"), origin, out.warnings);
+        for (const char* list : {"lights", "spheres"}) {
+            if (!top.has(list)) continue;
+            const json& items = top.raw(list);
+            if (!items.is_array()) top.fail(std::string(list) + " must be an array, not " + Reader::typeName(items));
+            std::size_t most = list[0] == 'l' ? kMaxLights : kMaxSpheres;
+            if (items.size() > most)  // before reading them: a million entries must not take a minute
+                top.fail(std::string(list) + " has " + std::to_string(items.size()) + " entries, at most " +
+                         std::to_string(most) + " are supported");
+            for (std::size_t i = 0; i < items.size(); ++i) {
+                std::string path = std::string(list) + "[" + std::to_string(i) + "]";
+                if (list[0] == 'l')
+                    s.lights.push_back(readLight(items[i], path, origin, out.warnings));
+                else
+                    s.spheres.push_back(readSphere(items[i], path, origin, out.warnings));
+            }
         }
+        // Finite in double is not enough: the shader computes in float32.
+        std::string range = floatRangeProblem(s);
+        if (!range.empty()) throw Error(origin + ": " + range);
     }
-    if (s.spheres.size() > size_t(kMaxSpheres))
-        top.fail("spheres has " + std::to_string(s.spheres.size()) + " entries, at most " +
-                 std::to_string(kMaxSpheres) + " are supported");
-    if (s.lights.size() > size_t(kMaxLights))
-        top.fail("lights has " + std::to_string(s.lights.size()) + " entries, at most " +
-                 std::to_string(kMaxLights) + " are supported");
-    // Finite in double is not enough: the shader computes in float32.
-    std::string range = floatRangeProblem(s);
-    if (!range.empty()) throw Error(origin + ": " + range);
+    // Unknown keys: the first few by name, then a count, so the terminal is not flooded.
+    constexpr std::size_t kMaxWarnings = 8;
+    if (out.warnings.size() > kMaxWarnings) {
+        std::size_t rest = out.warnings.size() - kMaxWarnings;
+        out.warnings.resize(kMaxWarnings);
+        out.warnings.push_back(origin + ": " + std::to_string(rest) + " more unknown keys (ignored)");
+    }
     return out;
 }
 
@@ -304,11 +308,8 @@ LoadedScene loadSceneFile(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(path + ": scene file not found");
     if (std::filesystem::is_directory(path, ec)) throw Error(path + ": is a directory, expected a scene file (.json)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot be read");
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parseScene(buffer.str(), path);
+    // A FIFO, a device, a file over 16 MiB: refused without blocking or reading it all.
+    return parseScene(readRegularFile(path, kMaxTextFileBytes, "the scene file"), path);
 }
 
 Scene defaultScene() { return parseScene(defaultSceneJson(), "<default>").scene; }
@@ -355,10 +356,7 @@ json sceneToJson(const Scene& s) {
 }
 
 void saveSceneFile(const Scene& scene, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw Error(path + ": cannot write the scene file");
-    out << sceneToJson(scene).dump(2) << "\n";
-    if (!out) throw Error(path + ": writing the scene file failed");
+    writeFileAtomic(path, sceneToJson(scene).dump(2) + "\n", WriteOptions{"the scene file"});
 }
 
 }  // namespace rl

@@ -1,6 +1,7 @@
 #include "gl/context.h"
 
 #include "core/error.h"
+#include "core/message.h"
 #include "gl/gl_api.h"
 
 namespace rl {
@@ -9,7 +10,7 @@ Backend parseBackend(const std::string& name) {
     if (name == "auto") return Backend::Auto;
     if (name == "egl") return Backend::Egl;
     if (name == "osmesa") return Backend::OsMesa;
-    throw Error("--backend: unknown backend '" + name + "' (expected auto, egl or osmesa)");
+    throw Error("--backend: unknown backend " + quotedValue(name) + " (expected auto, egl or osmesa)");
 }
 
 std::string backendName(Backend backend) {

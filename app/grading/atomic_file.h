@@ -1,8 +1,10 @@
-// Files that a reader (a second run, `raylab grade merge`, an instructor's
-// browser) sees either whole or not at all: written to a temporary file
-// beside the target, flushed, then renamed over it, so an interrupted run
-// never leaves half a grade behind.
+// The grader's files: what a reader (a second run, `raylab grade merge`, an
+// instructor's browser) sees either whole or not at all, through the one
+// atomic writer of core/file_io.h, so an interrupted run never leaves half a
+// grade behind.
 #pragma once
+
+#include "core/file_io.h"
 
 #include <filesystem>
 #include <string>
@@ -11,10 +13,14 @@ namespace rl {
 
 // Writes `content` to `path` atomically, creating the parent folders.
 // Throws rl::Error "path: cannot write (reason)".
-void writeFileAtomic(const std::filesystem::path& path, const std::string& content);
+inline void writeOutputFile(const std::filesystem::path& path, const std::string& content) {
+    writeFileAtomic(path, content, WriteOptions{"", true});
+}
 
-// Reads a whole file; throws rl::Error "path: cannot read (reason)".
-std::string readWholeFile(const std::filesystem::path& path);
+// Reads a whole regular file of at most 16 MiB; throws rl::Error "path: cannot read (reason)".
+inline std::string readWholeFile(const std::filesystem::path& path) {
+    return readRegularFile(path, kMaxTextFileBytes);
+}
 
 // Holds an exclusive lock on FOLDER/.lock while it lives, so that two runs
 // never write one output folder at once (the second one stops with

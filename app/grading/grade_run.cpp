@@ -409,7 +409,7 @@ int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& lo
                             {"output", "raylab could not grade this submission: " + why},
                             {"output_format", "text"},
                             {"tests", nlohmann::json::array()}};
-        writeFileAtomic(results, j.dump(2) + "\n");
+        writeOutputFile(results, j.dump(2) + "\n");
         log << "raylab grade --gradescope: " << why << "\n";
     };
     SubmissionEntry entry;
@@ -438,7 +438,7 @@ int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& lo
             fallback("the grader failed");
             return 0;
         }
-        writeFileAtomic(results, readWholeFile(studentDir(settings.out, entry.id) / "results.json"));
+        writeOutputFile(results, readWholeFile(studentDir(settings.out, entry.id) / "results.json"));
         log << "wrote " << results.string() << "\n";
     } catch (const Error& e) {
         fallback(e.what());

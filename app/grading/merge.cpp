@@ -1,6 +1,7 @@
 #include "grading/merge.h"
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "grading/atomic_file.h"
 #include "grading/outputs.h"
 #include "grading/rubric.h"
@@ -25,11 +26,7 @@ json readJson(const fs::path& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         throw Error(path.string() + ": missing (is this the output of `raylab grade`, and did it finish?)");
-    try {
-        return json::parse(readWholeFile(path));
-    } catch (const json::parse_error& e) {
-        throw Error(path.string() + ": not valid JSON (" + e.what() + ")");
-    }
+    return parseJsonText(readWholeFile(path), path.string());
 }
 
 }  // namespace
@@ -97,15 +94,24 @@ void mergeGradeOutputs(const std::vector<fs::path>& shards, const fs::path& out,
     if (ec) throw Error(out.string() + ": cannot create (" + ec.message() + ")");
     FolderLock lock(out);
     for (const auto& [id, shard] : owner) {
+        // Copied beside the old folder, which is replaced only once the copy is whole.
         fs::path target = studentDir(out, id);
+        fs::path staged = target;
+        staged += ".merging";
+        fs::remove_all(staged, ec);
+        fs::copy(studentDir(shard, id), staged, fs::copy_options::recursive, ec);
+        if (ec) {
+            fs::remove_all(staged, ec);
+            throw Error(target.string() + ": cannot copy from " + shard.string() + " (" + ec.message() + ")");
+        }
         fs::remove_all(target, ec);
-        fs::copy(studentDir(shard, id), target, fs::copy_options::recursive, ec);
-        if (ec) throw Error(target.string() + ": cannot copy from " + shard.string() + " (" + ec.message() + ")");
+        fs::rename(staged, target, ec);
+        if (ec) throw Error(target.string() + ": cannot replace (" + ec.message() + ")");
     }
-    fs::create_directories(out / "_reference", ec);
     for (const fs::path& shard : shards)
         for (fs::directory_iterator it(shard / "_reference", ec), end; !ec && it != end; it.increment(ec))
-            fs::copy_file(it->path(), out / "_reference" / it->path().filename(), fs::copy_options::overwrite_existing, ec);
+            writeOutputFile(out / "_reference" / it->path().filename(),
+                            readRegularFile(it->path(), kMaxImageFileBytes, "the reference image"));
 
     std::sort(grades.begin(), grades.end(), [](const StudentGrade& a, const StudentGrade& b) { return a.id < b.id; });
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

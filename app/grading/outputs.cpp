@@ -21,29 +21,24 @@ void writeReferenceImages(const fs::path& out, const std::vector<CheckScene>& sc
     std::error_code ec;
     fs::create_directories(out / "_reference", ec);
     for (const CheckScene& c : scenes) {
-        // Written beside, then renamed: a concurrent shard or reader never sees half a PNG.
-        fs::path target = out / referenceImagePath(c.name);
-        fs::path temp = target;
-        temp += ".tmp-" + std::to_string(::getpid());
-        writePng(temp.string(), c.reference.display);
-        fs::rename(temp, target, ec);
-        if (ec) throw Error(target.string() + ": cannot write (" + ec.message() + ")");
+        // writePng is atomic: a concurrent shard or reader never sees half a PNG.
+        writePng((out / referenceImagePath(c.name)).string(), c.reference.display);
     }
 }
 
 void writeStudentOutputs(const fs::path& out, const Rubric& rubric, const StudentGrade& grade) {
     fs::path dir = studentDir(out, grade.id);
-    writeFileAtomic(dir / "results.json", gradescopeResults(rubric, grade).dump(2) + "\n");
-    writeFileAtomic(dir / "index.html", studentPage(rubric, grade));
+    writeOutputFile(dir / "results.json", gradescopeResults(rubric, grade).dump(2) + "\n");
+    writeOutputFile(dir / "index.html", studentPage(rubric, grade));
 }
 
 void writeClassOutputs(const fs::path& out, const Rubric& rubric, const std::vector<StudentGrade>& grades,
                        const nlohmann::json& summary) {
     for (const StudentGrade& g : grades) writeStudentOutputs(out, rubric, g);
-    writeFileAtomic(out / "rubric.json", toJson(rubric).dump(2) + "\n");
-    writeFileAtomic(out / "grades.csv", gradesCsv(rubric, grades));
-    writeFileAtomic(out / "summary.json", summary.dump(2) + "\n");
-    writeFileAtomic(out / "index.html", classIndexPage(rubric, grades, summary));
+    writeOutputFile(out / "rubric.json", toJson(rubric).dump(2) + "\n");
+    writeOutputFile(out / "grades.csv", gradesCsv(rubric, grades));
+    writeOutputFile(out / "summary.json", summary.dump(2) + "\n");
+    writeOutputFile(out / "index.html", classIndexPage(rubric, grades, summary));
 }
 
 }  // namespace rl

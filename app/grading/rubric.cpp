@@ -3,6 +3,7 @@
 #include "checks/exercise_registry.h"
 #include "core/error.h"
 #include "core/paths.h"
+#include "core/json_text.h"
 #include "grading/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -63,13 +64,7 @@ Rubric loadRubric(const fs::path& file) {
     const std::string shown = file.string();
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) throw Error(shown + ": rubric file not found");
-    json j;
-    try {
-        j = json::parse(readWholeFile(file));
-    } catch (const json::parse_error& e) {
-        throw Error(shown + ": not valid JSON (" + e.what() + ")");
-    }
-    return rubricFromJson(j, shown);
+    return rubricFromJson(parseJsonText(readWholeFile(file), shown), shown);
 }
 
 Rubric rubricFromJson(const json& j, const std::string& shown) {

@@ -1,5 +1,6 @@
 #include "grading/student_grade.h"
 
+#include "core/json_text.h"
 #include "grading/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -52,7 +53,7 @@ std::optional<StudentGrade> loadStudentGrade(const fs::path& out, const std::str
     fs::path path = gradeRecordPath(out, id);
     if (!fs::is_regular_file(path, ec)) return std::nullopt;
     try {
-        StudentGrade g = studentGradeFromJson(json::parse(readWholeFile(path)));
+        StudentGrade g = studentGradeFromJson(parseJsonText(readWholeFile(path), path.string()));
         if (g.id != id) return std::nullopt;
         return g;
     } catch (const std::exception&) {  // unreadable or not a record: grade again
@@ -61,7 +62,7 @@ std::optional<StudentGrade> loadStudentGrade(const fs::path& out, const std::str
 }
 
 void saveStudentGrade(const fs::path& out, const StudentGrade& grade) {
-    writeFileAtomic(gradeRecordPath(out, grade.id), toJson(grade).dump(1) + "\n");
+    writeOutputFile(gradeRecordPath(out, grade.id), toJson(grade).dump(1) + "\n");
 }
 
 }  // namespace rl

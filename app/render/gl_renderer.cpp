@@ -27,6 +27,14 @@ void GlRenderer::setScene(const Scene& scene) {
 
 void GlRenderer::resize(int width, int height) {
     if (width == width_ && height == height_) return;
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    GLint maxSide = 0;
+    gl::GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSide);
+    if (width > maxSide || height > maxSide)
+        throw Error("render size " + size + ": this OpenGL driver allows at most " + std::to_string(maxSide) +
+                    " pixels a side (GL_MAX_TEXTURE_SIZE); use a smaller --size or render.width/height");
+    while (gl::GetError() != GL_NO_ERROR) {
+    }
     width_ = width;
     height_ = height;
     gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
@@ -40,9 +48,14 @@ void GlRenderer::resize(int width, int height) {
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl::DrawBuffers(2, buffers);
     GLenum status = gl::CheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw Error("the RGBA32F framebuffer of " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is not complete (status " + std::to_string(status) + ")");
+    GLenum error = gl::GetError();
+    if (status != GL_FRAMEBUFFER_COMPLETE || error != GL_NO_ERROR) {
+        width_ = height_ = 0;  // nothing usable was allocated
+        const long long mib = (long long)width * height * 32 >> 20;  // two RGBA32F targets, 16 bytes a pixel each
+        throw Error("render size " + size + ": the driver cannot allocate the two RGBA32F targets (" +
+                    std::to_string(mib) + " MiB" + (error != GL_NO_ERROR ? ", " + gl::errorName(error) : "") +
+                    "); use a smaller --size or render.width/height");
+    }
 }
 
 void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) {

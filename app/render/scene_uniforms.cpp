@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
+#include "core/message.h"
 #include "render/bounce_cutoff.h"
 
 #include <glm/geometric.hpp>
@@ -98,8 +99,8 @@ View parseView(const std::string& name, int& bounce) {
         bounce = std::stoi(name.substr(6));
         return View::Bounce;
     }
-    throw Error("--view: unknown view '" + name +
-                "' (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
+    throw Error("--view: unknown view " + quotedValue(name) +
+                " (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
 }
 
 std::string viewName(View view, int bounce) {

@@ -1,9 +1,10 @@
 #include "view/input_script.h"
 
 #include "core/error.h"
+#include "core/message.h"
+#include "core/file_io.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 namespace rl {
@@ -27,7 +28,7 @@ public:
         std::string w = word();
         char* end = nullptr;
         double v = std::strtod(w.c_str(), &end);
-        if (w.empty() || *end != '\0' || !std::isfinite(v)) fail("expected " + std::string(what) + ", got '" + w + "'");
+        if (w.empty() || *end != '\0' || !std::isfinite(v)) fail("expected " + std::string(what) + ", got " + quotedValue(w));
         return v;
     }
     int integer(const char* what, int min) {
@@ -41,7 +42,7 @@ public:
         return in_.eof();
     }
     void end() {
-        if (!atEnd()) fail("unexpected '" + word() + "' at the end of the line");
+        if (!atEnd()) fail("unexpected " + quotedValue(word()) + " at the end of the line");
     }
     [[noreturn]] void fail(const std::string& why) { throw Error(where_ + ": " + why); }
 
@@ -91,7 +92,7 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
                 else if (button == "middle")
                     c.button = 2;
                 else
-                    r.fail("drag button must be left, right or middle, not '" + button + "'");
+                    r.fail("drag button must be left, right or middle, not " + quotedValue(button));
             }
             if (!r.atEnd()) c.count = r.integer("a step count", 1);
         } else if (verb == "scroll") {
@@ -139,11 +140,7 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
 }
 
 std::vector<ScriptCommand> parseScript(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("--script: cannot read " + path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseScriptText(text.str(), path);
+    return parseScriptText(readRegularFile(path, kMaxTextFileBytes, "the script"), path);
 }
 
 }  // namespace rl

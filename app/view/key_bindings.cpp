@@ -1,6 +1,7 @@
 #include "view/key_bindings.h"
 
 #include "core/error.h"
+#include "core/message.h"
 
 #include <cctype>
 
@@ -105,7 +106,7 @@ KeyBinding bindingByName(const std::string& name) {
             return b;
         valid += (valid.empty() ? "" : ", ") + keys;
     }
-    throw Error("unknown key '" + name + "' (expected one of " + valid + ")");
+    throw Error("unknown key " + quotedValue(name) + " (expected one of " + valid + ")");
 }
 
 }  // namespace rl

@@ -1,11 +1,11 @@
 #include "view/named_cameras.h"
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -28,10 +28,10 @@ std::string namedCamerasFile(const std::string& scenePath) {
 }
 
 NamedCameras::NamedCameras(std::string file) : file_(std::move(file)) {
-    std::ifstream in(file_);
-    if (!in) return;  // none stored yet
+    std::error_code ec;
+    if (!fs::exists(file_, ec)) return;  // none stored yet
     try {
-        const nlohmann::json j = nlohmann::json::parse(in);
+        const nlohmann::json j = nlohmann::json::parse(readRegularFile(file_, kMaxTextFileBytes, "the named cameras"));
         for (const auto& [name, c] : j.at("cameras").items()) {
             Camera camera;
             camera.position = vec3From(c.at("position"));
@@ -57,19 +57,7 @@ void NamedCameras::set(const std::string& name, const Camera& camera) {
     for (const auto& [n, c] : cameras_)
         cameras[n] = {{"position", jsonOf(c.position)}, {"target", jsonOf(c.target)}, {"up", jsonOf(c.up)}};
     const nlohmann::json j = {{"cameras", cameras}};
-    // Written next to the target and renamed over it: never half a file.
-    const std::string temporary = file_ + ".saving";
-    {
-        std::ofstream out(temporary, std::ios::trunc);
-        out << j.dump(2) << "\n";
-        if (!out) throw Error(file_ + ": cannot write the named cameras");
-    }
-    std::error_code ec;
-    fs::rename(temporary, file_, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw Error(file_ + ": cannot write the named cameras (" + ec.message() + ")");
-    }
+    writeFileAtomic(file_, j.dump(2) + "\n", WriteOptions{"the named cameras"});  // never half a file
     error_.clear();
 }
 

@@ -1,6 +1,8 @@
 #include "view/view_app.h"
 
 #include "core/error.h"
+#include "core/file_io.h"
+#include "core/message.h"
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -31,20 +33,7 @@ namespace fs = std::filesystem;
 namespace rl {
 namespace {
 
-std::string readTextFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot be read");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void writeTextFile(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) throw Error(path + ": cannot be written");
-}
+std::string readTextFile(const std::string& path) { return readRegularFile(path, kMaxTextFileBytes, "the scene file"); }
 
 // After the camera's last change, keep the low resolution this long before
 // refining: mouse-wheel notches and drag events arrive every 10-50 ms, and
@@ -89,7 +78,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
         compareModel = ShadingModel{};  // the reference model: GGX, Schlick-GGX, Schlick, Lambert
         compareModelName = "PBR";
     } else if (!options_.compareModel.empty()) {
-        throw Error("--compare-model: unknown model '" + options_.compareModel + "' (expected blinn-phong or pbr)");
+        throw Error("--compare-model: unknown model " + quotedValue(options_.compareModel) + " (expected blinn-phong or pbr)");
     }
     if (compareModel && impls.size() == 1) impls.push_back(impls[0]);  // the same code, another model
 
@@ -401,20 +390,12 @@ void ViewApp::saveScene(bool confirmed) {
                 text.clear();
             }
         }
-        // Written next to the target and renamed over it: the file watcher
-        // (and any editor) never sees a half-written scene. (The lead moves
-        // this to app/core's shared atomic write on merge.)
-        const std::string temporary = target + ".saving";
+        // Atomic (core/file_io.h): the file watcher (and any editor) never
+        // sees a half-written scene.
         if (text.empty())
-            saveSceneFile(scene, temporary);
+            saveSceneFile(scene, target);
         else
-            writeTextFile(temporary, text);
-        std::error_code ec;
-        fs::rename(temporary, target, ec);
-        if (ec) {
-            fs::remove(temporary, ec);
-            throw Error(target + ": cannot write the scene (" + ec.message() + ")");
-        }
+            writeFileAtomic(target, text, WriteOptions{"the scene file"});
         state_.askOverwrite = false;
         status_ = "saved " + target + (moved && state_.saveCamera ? " (with the moved camera)" : "");
         std::cout << "raylab: " << status_ << std::endl;

@@ -343,10 +343,10 @@ TEST(BenchCli, BadOptionsAreOneClearError) {
     EXPECT_EQ(sweep.status, 1);
     EXPECT_NE(sweep.output.find("--sweeps: unknown group 'frobnicate'"), std::string::npos) << sweep.output;
     auto frames = test::runRaylab("bench --frames 0 --size 8x8");
-    EXPECT_EQ(frames.status, 1);
+    EXPECT_EQ(frames.status, 2);  // a usage error (main.cpp)
     EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
     auto spp = test::runRaylab("bench --reference-spp 5 --size 8x8");
-    EXPECT_EQ(spp.status, 1);
+    EXPECT_EQ(spp.status, 2);
     EXPECT_NE(spp.output.find("square number"), std::string::npos) << spp.output;
     auto missing = test::runRaylab("bench /nonexistent/scene.json --size 8x8");
     EXPECT_EQ(missing.status, 1);

@@ -266,7 +266,8 @@ TEST(Rubric, BadRubricsNameTheFileAndTheProblem) {
         std::string why = refusalOf([&] { loadRubric(dir / "r.json"); });
         EXPECT_TRUE(contains(why, "r.json: ") && contains(why, expected)) << text << " -> " << why;
     };
-    check("{", "not valid JSON");
+    writeText(dir / "r.json", "{");  // a syntax error has a line and column (core/json_text.h)
+    EXPECT_TRUE(contains(refusalOf([&] { loadRubric(dir / "r.json"); }), "r.json:1:2: syntax error"));
     check("{\"exercises\": []}", "non-empty array");
     check("{\"exercises\": [{\"id\": \"05-ggx\"}]}", "\"weight\" is missing");
     check("{\"exercises\": [{\"id\": \"5\", \"weight\": 1}, {\"id\": \"05-ggx\", \"weight\": 1}]}", "listed twice");

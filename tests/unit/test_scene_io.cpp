@@ -1,12 +1,17 @@
 // Scene files: every field of the spec, the defaults, and one asserted
 // message per kind of bad input.
 #include "core/error.h"
+#include "core/file_io.h"
+#include "core/json_text.h"
 #include "core/scene_io.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace rl;
 
@@ -107,12 +112,12 @@ TEST(SceneIo, BadValueNamesTheFieldPath) {
               "scenes/x.json: render.tonemap must be one of reinhard, exponential, none, not 'aces'");
     EXPECT_EQ(errorOf(R"({"render": {"gamma": "linear"}})"), "scenes/x.json: render.gamma must be a number or \"srgb\"");
     EXPECT_EQ(errorOf(R"({"lights": [{"position": [0, 0]}]})"),
-              "scenes/x.json: lights[0].position must be an array of 3 numbers");
+              "scenes/x.json: lights[0].position must be an array of 3 numbers, not an array of 2");
     EXPECT_EQ(errorOf(R"({"camera": {"fov_y": "wide"}})"), "scenes/x.json: camera.fov_y must be a number, not a string");
     EXPECT_EQ(errorOf(R"({"camera": {"target": [0,0,0]}})"), "scenes/x.json: camera.target must differ from camera.position");
     EXPECT_EQ(errorOf(R"({"camera": {"up": [0,0,-1]}})"),
               "scenes/x.json: camera.up must not be zero or parallel to the viewing direction");
-    EXPECT_EQ(errorOf(R"({"spheres": {}})"), "scenes/x.json: spheres must be an array");
+    EXPECT_EQ(errorOf(R"({"spheres": {}})"), "scenes/x.json: spheres must be an array, not an object");
     EXPECT_EQ(errorOf("[1, 2]"), "scenes/x.json: the scene must be an object");
     EXPECT_EQ(errorOf(R"({"render": {"width": 0}})"), "scenes/x.json: render.width must be between 1 and 16384");
 }
@@ -195,4 +200,107 @@ TEST(SceneIo, DefaultSceneIsValid) {
     EXPECT_TRUE(loaded.warnings.empty());
     EXPECT_GE(loaded.scene.spheres.size(), 5u);
     EXPECT_GE(loaded.scene.lights.size(), 1u);
+}
+
+// ---- Issue 11: hostile and careless scene files ------------------------------
+
+namespace {
+
+std::string loadError(const std::string& path) {
+    try {
+        loadSceneFile(path);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST(SceneIoHostile, DeepNestingIsOneLineNotACrash) {
+    // 100,000 arrays deep: a recursive walk (the message used to serialise the value) overflows the stack.
+    std::string deep = R"({"render": {"spp": )" + std::string(100000, '[') + std::string(100000, ']') + "}}";
+    EXPECT_EQ(errorOf(deep), "scenes/x.json:1:82: values nest more than 64 deep");
+    // Deep but legal nesting in an ignored key is still refused by the depth, never walked.
+    EXPECT_EQ(errorOf("{\"x\": " + std::string(70, '[') + std::string(70, ']') + "}"),
+              "scenes/x.json:1:70: values nest more than 64 deep");
+}
+
+TEST(SceneIoHostile, NumberBeyondDoubleNamesFileAndLine) {
+    EXPECT_EQ(errorOf("{\n  \"render\": {\"exposure\": 1e400}\n}"),
+              "scenes/x.json:2:26: number '1e400' is out of range (at most about 1.8e308)");
+    EXPECT_EQ(errorOf("{\"camera\": {\"fov_y\": -" + std::string(400, '9') + "}}").rfind("scenes/x.json:1:22: number '-9999", 0), 0u);
+    // Numbers inside strings are text, not numbers.
+    EXPECT_EQ(errorOf(R"({"render": {"tonemap": "1e400"}})"),
+              "scenes/x.json: render.tonemap must be one of reinhard, exponential, none, not '1e400'");
+}
+
+TEST(SceneIoHostile, NulByteIsNotTheEndOfTheFile) {
+    // nlohmann-json stops at a NUL and would accept the valid prefix.
+    EXPECT_EQ(errorOf(std::string("{}\n\0garbage", 12)), "scenes/x.json:2:1: NUL byte (is this a binary file?)");
+    EXPECT_EQ(errorOf(std::string("{\"a\": \"x\0y\"}", 12)), "scenes/x.json:1:9: NUL byte (is this a binary file?)");
+}
+
+TEST(SceneIoHostile, QuotedValuesAreCutAndEscaped) {
+    std::string huge(1 << 20, 'a');
+    EXPECT_EQ(errorOf(R"({"render": {"tonemap": ")" + huge + "\"}}"),
+              "scenes/x.json: render.tonemap must be one of reinhard, exponential, none, not "
+              "'aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa...' (1048576 bytes)");
+    EXPECT_EQ(errorOf(R"({"render": {"tonemap": "\u001b[31mred\nline"}})"),
+              "scenes/x.json: render.tonemap must be one of reinhard, exponential, none, not '\\x1b[31mred\\nline'");
+    EXPECT_EQ(errorOf(R"({"render": {"spp": [[1]]}})"), "scenes/x.json: render.spp must be a whole number, not an array of 1");
+    LoadedScene loaded = parseScene(R"({"\u001b]0;title\u0007": 1})", "scenes/x.json");
+    ASSERT_EQ(loaded.warnings.size(), 1u);
+    EXPECT_EQ(loaded.warnings[0], "scenes/x.json: unknown key '\\x1b]0;title\\x07' (ignored)");
+}
+
+TEST(SceneIoHostile, UnknownKeyWarningsAreCapped) {
+    std::string text = "{";
+    for (int i = 0; i < 1000; ++i) text += (i ? ",\"k" : "\"k") + std::to_string(i) + "\": 1";
+    LoadedScene loaded = parseScene(text + "}", "scenes/x.json");
+    ASSERT_EQ(loaded.warnings.size(), 9u);
+    EXPECT_EQ(loaded.warnings[8], "scenes/x.json: 992 more unknown keys (ignored)");
+}
+
+TEST(SceneIoHostile, HugeUpIsADirectionNotParallel) {
+    // |up| = 1e300 overflows glm::length (1e600); the loader rescales before any length.
+    Scene s = parseScene(R"({"camera": {"up": [0, 1e300, 0]}})", "x").scene;
+    EXPECT_EQ(s.camera.up, glm::dvec3(0, 1, 0));
+    s = parseScene(R"({"camera": {"up": [0, 1e-310, 0]}})", "x").scene;
+    EXPECT_EQ(s.camera.up, glm::dvec3(0, 1, 0));
+    EXPECT_EQ(errorOf(R"({"camera": {"up": [0, 0, -1e300]}})"),
+              "scenes/x.json: camera.up must not be zero or parallel to the viewing direction");
+}
+
+TEST(SceneIoHostile, MagnitudesStayInFloatRange) {
+    // Far positions are fine: the host hands the shader camera-relative
+    // coordinates in the scene's own unit (core/float_range.h).
+    EXPECT_NO_THROW(parseScene(R"({"spheres": [{"center": [0, 2e9, 0]}]})", "x"));
+    // A radiance float32 cannot carry is refused, naming the field and the limit.
+    std::string message = errorOf(R"({"lights": [{"intensity": 1e300}]})");
+    EXPECT_EQ(message.rfind("scenes/x.json: lights[0].intensity", 0), 0u) << message;
+    EXPECT_NE(message.find("float32's largest value"), std::string::npos) << message;
+}
+
+TEST(SceneIoHostile, OverLargeFramebufferNamesFileAndLimit) {
+    EXPECT_EQ(errorOf(R"({"render": {"width": 16384, "height": 16384}})"),
+              "scenes/x.json: render.width x render.height is 16384x16384, 268435456 pixels, more than the "
+              "limit of 67108864 (8192x8192)");
+}
+
+TEST(SceneIoHostile, OnlyRegularFilesAreRead) {
+    auto dir = std::filesystem::temp_directory_path() / ("raylab_scene_fifo_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    std::string fifo = (dir / "scene.json").string();
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    // Opening a FIFO without a writer blocks forever unless it is opened non-blocking.
+    EXPECT_EQ(loadError(fifo), fifo + ": cannot read the scene file (not a regular file: a FIFO)");
+    EXPECT_EQ(loadError("/dev/zero"), "/dev/zero: cannot read the scene file (not a regular file: a character device)");
+    EXPECT_EQ(loadError("/dev/urandom"),
+              "/dev/urandom: cannot read the scene file (not a regular file: a character device)");
+    std::string big = (dir / "big.json").string();
+    std::ofstream(big).close();
+    ASSERT_EQ(truncate(big.c_str(), off_t(kMaxTextFileBytes) + 1), 0);  // sparse: no disk used
+    EXPECT_EQ(loadError(big), big + ": cannot read the scene file (larger than 16 MiB)");
+    std::filesystem::remove_all(dir);
 }
