@@ -663,17 +663,19 @@ std::vector<ProbeSpec> shadowProbes() {
         dvec3 p = scene.spheres[0].center + 100.0 * n;
         addHit(0, outward, p + rng.range(0.5, 2.0) * l, -1, 0.9, "grazing light on a large ground");
     }
-    // The cluster scaled by 1e-3 (spheres 5 and 6): the light sits just inside
-    // the occluder, 2e-5 to 8e-4 past its near side: a shadow ray shortened
-    // by a fixed 1e-3 (or 1e-4) before the light misses the occluder.
+    // The cluster scaled by 1e-3 (spheres 6 and 7, after the two mirrors):
+    // the light sits just inside the occluder, 2e-5 to 8e-4 past its near
+    // side: a shadow ray shortened by a fixed 1e-3 (or 1e-4) before the light
+    // misses the occluder.
     for (double gap : {2e-5, 2e-4, 8e-4})
         for (int k = 0; k < 3; ++k) {
-            const Sphere& occluder = scene.spheres[6];
+            const Sphere& receiver = scene.spheres[6];
+            const Sphere& occluder = scene.spheres[7];
             dvec3 outward = dvec3(0, 1, 0) + 0.2 * dvec3(rng.range(-1, 1), 0, rng.range(-1, 1));
-            dvec3 p = scene.spheres[5].center + scene.spheres[5].radius * glm::normalize(outward);
+            dvec3 p = receiver.center + receiver.radius * glm::normalize(outward);
             dvec3 l = glm::normalize(occluder.center - p);
             double entry = R::intersectSphere(p, l, occluder.center, occluder.radius);
-            addHit(5, outward, p + (entry + gap) * l, 5, 0.0, "light next to an occluder (scene scaled by 1e-3)");
+            addHit(6, outward, p + (entry + gap) * l, 6, 0.0, "light next to an occluder (scene scaled by 1e-3)");
         }
     v.expected = [scene](const ProbeCase& c) {
         return value(visibleInTruth(scene, int(f(c, kTrueSphere)), get(c, 0), get(c, 8)) ? 1.0 : 0.0);
@@ -1069,12 +1071,16 @@ int closestHitLeaving(const Scene& scene, dvec3 o, dvec3 d, int leaving, R::Hit&
         }
     }
     if (hit.sphere < 0) return -1;
+    // Filled as the CPU reference's makeHit() does: shadeHit() tests the
+    // light from inside a sphere (a bounce that went into it) by `inside`.
     const Sphere& s = scene.spheres[hit.sphere];
-    hit.p = o + hit.t * d;
-    hit.n = glm::normalize(hit.p - s.center);
-    if (glm::dot(hit.n, d) > 0) hit.n = -hit.n;
+    dvec3 u = glm::normalize(o + hit.t * d - s.center);
+    hit.inside = glm::dot(u, d) > 0;
+    hit.p = s.center + s.radius * u;
+    hit.n = hit.inside ? -u : u;
     auto maxAbs = [](dvec3 v) { return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))); };
     hit.magnitude = std::max(maxAbs(hit.p), maxAbs(s.center) + s.radius);  // the CPU reference's own shadow offset
+    hit.error = 32 * 0x1.0p-53 * (maxAbs(s.center) + s.radius);              // and its kHitErrorRelative (double)
     return hit.sphere;
 }
 
@@ -1175,11 +1181,18 @@ std::vector<ProbeSpec> reflectionProbes() {
     tr.mistakes.push_back({"the bounce starts off the normal (pushed along the reflected ray): the probe reads -2",
                            "continue from offsetRayOrigin(hit.p, hit.n, hit.error): along the normal, whatever the new direction",
                            [scene](const ProbeCase& c) {
-                               // Off by |r - n| times the offset: marked where that is over a quarter.
+                               // offsetRayOrigin(hit.p, r, hit.error) = p + dot(|r|, e) r, with
+                               // the first hit's error as closestHit() has it (centre form: the
+                               // probe rays hit spheres 1 to 5), marked as probe.glsl does: over
+                               // a quarter of the offset dot(|n|, e) from p + dot(|n|, e) n.
                                R::Hit hit;
                                dvec3 d = glm::normalize(get(c, 4));
-                               if (closestHitLeaving(scene, get(c, 0), d, -1, hit) < 0 ||
-                                   glm::length(glm::reflect(d, hit.n) - hit.n) <= 0.25)
+                               if (closestHitLeaving(scene, get(c, 0), d, -1, hit) < 0)
+                                   return value(R::traceRadiance(scene, get(c, 0), get(c, 4)));
+                               dvec3 r = glm::reflect(d, hit.n);
+                               dvec3 e = hitError(vec3(hit.p), vec3(hit.n), scene.spheres[hit.sphere].radius);
+                               double alongN = glm::dot(glm::abs(hit.n), e), alongR = glm::dot(glm::abs(r), e);
+                               if (glm::length(alongR * r - alongN * hit.n) <= 0.25 * alongN)
                                    return value(R::traceRadiance(scene, get(c, 0), get(c, 4)));
                                return value(dvec3(-2.0));
                            }});

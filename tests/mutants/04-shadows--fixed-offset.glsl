@@ -1,6 +1,6 @@
 // mutant of: 04-shadows
 // mistake: a fixed 1e-3 offset, too large for a small scene
-// caught by: the check's message or hint contains "tiny scene"
+// caught by: the check's message or hint contains "the offset follows the hit point's error bound, not a constant"
 // Exercise 04: shadow rays. Handout: docs/exercises/04-shadows.md
 
 // Start of a secondary ray from hit point p: pushed along the normal n just
