@@ -7,7 +7,8 @@
 #include "core/message.h"
 #include "shader/program.h"
 
-#include <cstring>
+#include <algorithm>
+#include <functional>
 #include <filesystem>
 #include <iostream>
 
@@ -15,10 +16,12 @@ namespace {
 
 constexpr int kUsageError = 2;  // as getopt-based tools and CLI11's own "--help" conventions
 
-bool isCommand(const char* arg) {
-    for (const char* name : {"render", "check", "grade", "bench", "view"})
-        if (std::strcmp(arg, name) == 0) return true;
-    return false;
+// The registered commands, as "render, check, grade, bench, view or record".
+std::string commandList(const std::vector<std::string>& names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return out;
 }
 
 }  // namespace
@@ -38,7 +41,10 @@ int main(int argc, char** argv) {
         throw rl::Error("view: this build has no window support (RAYLAB_WITH_GLFW=OFF); use `raylab render`");
     });
 #endif
-    const char* commands = "render, check, grade, bench or view";
+    std::vector<std::string> names;  // what was registered above: one list, never out of date
+    for (const CLI::App* command : app.get_subcommands(std::function<bool(CLI::App*)>{})) names.push_back(command->get_name());
+    const std::string commands = commandList(names);
+    auto isCommand = [&](const char* arg) { return std::find(names.begin(), names.end(), arg) != names.end(); };
     if (argc < 2) {
         std::cerr << "raylab: error: name a command: " << commands << " (raylab --help explains them)\n";
         return kUsageError;

@@ -146,7 +146,7 @@ Camera readCamera(const json& j, const std::string& origin, std::vector<std::str
     Camera c;
     c.position = r.vec3("position", c.position);
     c.target = r.vec3("target", c.target);
-    c.up = r.vec3("up", c.up, true);
+    c.up = r.vec3("up", c.up);
     c.fovYDegrees = r.number("fov_y", c.fovYDegrees);
     r.require(c.fovYDegrees > 0.0 && c.fovYDegrees < 180.0, "fov_y", "must be between 0 and 180 degrees");
     glm::dvec3 forward = c.target - c.position;

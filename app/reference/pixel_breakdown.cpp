@@ -53,7 +53,7 @@ LightTerms lightTerms(const Scene& scene, const Hit& hit, dvec3 v, int index) {
     // As directLight(): no shadow ray where the light adds nothing.
     t.facesAway = t.E == dvec3(0.0);
     if (t.facesAway) return t;
-    t.shadowed = !lightVisible(scene, hit, light.position);
+    t.shadowed = !lightReachable(scene, hit, light.position);  // the renderer's shadow ray
     if (t.shadowed) return t;
     t.diffuse = diffuseBRDF(hit.n, v, t.l, m, scene.model) * t.E;
     t.specular = specularBRDF(hit.n, v, t.l, m, scene.model) * t.E;
@@ -81,15 +81,17 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
                                    basis.right, basis.up, basis.forward);
     dvec3 origin = basis.position;
     dvec3 throughput(1.0);
-    // traceRadiance(), step by step (cpu_reference.cpp).
+    // traceRadiance(), step by step (cpu_reference.cpp): the camera ray with
+    // closestHit(), every bounce with nextHit() from the hit it leaves.
+    Hit hit;
+    bool found = closestHit(scene, origin, dir, hit);
     for (int depth = 0; depth <= scene.render.maxBounces; ++depth) {
         BounceTerms b;
         b.depth = depth;
         b.origin = origin;
         b.dir = dir;
         b.throughput = throughput;
-        Hit hit;
-        if (!closestHit(scene, origin, dir, hit)) {
+        if (!found) {
             b.contribution = throughput * scene.render.background;
             out.radiance += b.contribution;
             out.chain.push_back(b);
@@ -111,9 +113,13 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
         b.NoV = std::clamp(glm::dot(hit.n, b.v), kMinNoV, 1.0);
         b.Fr = F_SchlickRoughness(baseReflectance(m), b.NoV, m.roughness);
         throughput *= b.Fr;
-        origin = offsetRayOrigin(hit.p, hit.n, hit.magnitude);
-        dir = glm::reflect(dir, hit.n);
         out.chain.push_back(b);
+        if (depth == scene.render.maxBounces) break;
+        origin = hit.p;  // the bounce leaves this surface; nextHit() handles its sphere exactly
+        dir = glm::normalize(glm::reflect(dir, hit.n));
+        Hit next;
+        found = nextHit(scene, hit, dir, next);
+        hit = next;
     }
     Scene atSize = scene;
     atSize.render.width = width;

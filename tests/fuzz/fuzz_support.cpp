@@ -281,7 +281,26 @@ void expectPromise(Sandbox& box, const Invocation& run, const Settings& settings
         for (const std::string& l : lines) errors += l.rfind("raylab: error: ", 0) == 0;
         if (r.status == 3) problems.push_back("internal error (exit 3)");
         if (r.status == 0 && !run.mayPass) problems.push_back("a bad input was accepted (exit 0)");
-        if (r.status != 0 && !run.lenientMessage) {
+        if (r.status != 0 && !run.lenientMessage && run.compilerDiagnostics) {
+            if (lines.empty() || lines.front().rfind("raylab: error: ", 0) != 0)
+                problems.push_back("stderr does not start with 'raylab: error: '");
+            if (errors != 1) problems.push_back(std::to_string(errors) + " lines start with 'raylab: error: '");
+            // 10 diagnostics of two lines each, the count of the rest: 22 lines at most.
+            if (lines.size() > 22) problems.push_back(std::to_string(lines.size()) + " lines of diagnostics");
+            for (std::size_t k = 1; k < lines.size(); ++k) {
+                const std::string& l = lines[k];
+                bool sourceLine = l.rfind("    ", 0) == 0;
+                bool rest = l.rfind("... and ", 0) == 0;
+                bool diagnostic = false;
+                for (const std::string& c : run.culprits) diagnostic = diagnostic || l.find(c) != std::string::npos;
+                if (!sourceLine && !rest && !diagnostic)
+                    problems.push_back("a line that is neither a diagnostic nor its source line: " + printableForReport(l));
+            }
+            bool named = run.culprits.empty();
+            for (const std::string& c : run.culprits)
+                named = named || (!lines.empty() && lines.front().find(c) != std::string::npos);
+            if (!named) problems.push_back("the error does not name " + printableForReport(run.culprits.front()));
+        } else if (r.status != 0 && !run.lenientMessage) {
             if (errors != 1) problems.push_back(std::to_string(errors) + " lines start with 'raylab: error: '");
             for (const std::string& l : lines)
                 if (l.rfind("raylab: error: ", 0) != 0 && l.rfind("raylab: warning: ", 0) != 0 &&

@@ -79,6 +79,11 @@ struct Invocation {
     std::uint64_t seed = 0;
     bool mayPass = true;          // the input may be valid: exit 0 is then fine
     bool lenientMessage = false;  // shader folders before the diagnostics merge (see test_fuzz.cpp)
+    // A shader error, printed as compilers print one: the first line is
+    // raylab's error naming the student's file and line; each later line is
+    // that source line (indented), another diagnostic of the same files, or
+    // the count of those left out (at most 10 are printed).
+    bool compilerDiagnostics = false;
 };
 
 // Runs raylab in the sandbox and checks the promise with GoogleTest assertions.

@@ -470,6 +470,7 @@ TEST_F(Fuzz, ShaderFolders) {
         run.mayPass = !certainlyBad;
         const auto& strict = namedAfterDiagnosticsMerge();
         run.lenientMessage = !merged && std::find(strict.begin(), strict.end(), what) != strict.end();
+        run.compilerDiagnostics = true;
         expectPromise(box, run, settings_);
     }
     budget.report("shader folders");
