@@ -2,7 +2,11 @@
 // add*Command registers its options and callback on the CLI11 app.
 #pragma once
 
+#include "core/scene.h"
+
 #include <CLI/CLI.hpp>
+
+#include <string>
 
 namespace rl {
 
@@ -18,6 +22,11 @@ struct Size {
     int width = 0, height = 0;
 };
 Size parseSize(const std::string& text);  // "640x480"; throws rl::Error "--size: ..."
+
+// The scene a command renders: the file (or the embedded default scene when
+// `path` is empty), its warnings printed as "raylab: warning: ...", and the
+// --size override when `size` is not empty.
+Scene sceneForCommand(const std::string& path, const std::string& size);
 
 // Validators for option values. CLI11 reports a failure as a usage error,
 // "--spp: must be ..., not '0'" (one line, exit status 2, see main.cpp). Each

@@ -4,11 +4,13 @@
 #include "core/error.h"
 #include "core/message.h"
 #include "core/scene.h"
+#include "core/scene_io.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
 
 namespace rl {
 
@@ -56,6 +58,18 @@ Size parseSize(const std::string& text) {
     std::string problem = sizeProblem(text, size);
     if (!problem.empty()) throw Error("--size: " + problem);
     return size;
+}
+
+Scene sceneForCommand(const std::string& path, const std::string& size) {
+    LoadedScene loaded = path.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(path);
+    for (const auto& w : loaded.warnings) std::cerr << "raylab: warning: " << w << "\n";
+    Scene scene = loaded.scene;
+    if (!size.empty()) {
+        Size s = parseSize(size);
+        scene.render.width = s.width;
+        scene.render.height = s.height;
+    }
+    return scene;
 }
 
 CLI::Validator sizeValue() {

@@ -71,14 +71,7 @@ bool onPath(const std::string& program) {
 }
 
 void runRecord(const RecordOptions& o) {
-    LoadedScene loaded = o.scene.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(o.scene);
-    for (const auto& w : loaded.warnings) std::cerr << "raylab: warning: " << w << "\n";
-    Scene scene = loaded.scene;
-    if (!o.size.empty()) {
-        Size s = parseSize(o.size);
-        scene.render.width = s.width;
-        scene.render.height = s.height;
-    }
+    Scene scene = sceneForCommand(o.scene, o.size);
     std::string sweepName;
     double from = 0, to = 0;
     if (!o.sweep.empty()) {

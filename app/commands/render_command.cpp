@@ -38,14 +38,7 @@ struct RenderOptions {
 void runRender(const RenderOptions& o) {
     requireOutputPath(o.png, "PNG");
     if (!o.pfm.empty()) requireOutputPath(o.pfm, "PFM");
-    LoadedScene loaded = o.scene.empty() ? LoadedScene{defaultScene(), {}} : loadSceneFile(o.scene);
-    for (const auto& w : loaded.warnings) std::cerr << "raylab: warning: " << w << "\n";
-    Scene scene = loaded.scene;
-    if (!o.size.empty()) {
-        Size s = parseSize(o.size);
-        scene.render.width = s.width;
-        scene.render.height = s.height;
-    }
+    Scene scene = sceneForCommand(o.scene, o.size);
     if (o.spp != 0) scene.render.spp = o.spp;  // a square from 1 to 1024 (the option's validator)
     int bounce = 0;
     View view = parseView(o.view, bounce);

@@ -18,9 +18,12 @@
 namespace rl::test {
 
 CommandResult runRaylab(const std::string& args, const std::string& env) {
-    std::string command = (env.empty() ? "" : env + " ") + std::string(RAYLAB_BINARY) + " " + args + " 2>&1";
+    return runShell((env.empty() ? "" : env + " ") + std::string(RAYLAB_BINARY) + " " + args);
+}
+
+CommandResult runShell(const std::string& command) {
     CommandResult result;
-    FILE* pipe = popen(command.c_str(), "r");
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
     if (!pipe) return result;
     std::array<char, 4096> buffer;
     std::size_t n;

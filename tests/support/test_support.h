@@ -19,6 +19,9 @@ struct CommandResult {
 // working directory and environment prefix (e.g. "RAYLAB_ROOT=/tmp/x").
 CommandResult runRaylab(const std::string& args, const std::string& env = "");
 
+// Runs a shell command line (2>&1 appended), e.g. a command as a document writes it.
+CommandResult runShell(const std::string& command);
+
 // A fresh empty folder under the system temp directory, removed at exit.
 std::filesystem::path freshTempDir(const std::string& name);
 

@@ -40,17 +40,7 @@ std::string shellQuoted(const std::string& s) {
     return out + "'";
 }
 
-test::CommandResult shell(const std::string& command) {
-    test::CommandResult result;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer;
-    std::size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+test::CommandResult shell(const std::string& command) { return test::runShell(command); }
 
 // A copy of the repository as a student's clone has it: the files git tracks
 // (and new ones it does not ignore), from the working tree; no build. A git
