@@ -127,38 +127,44 @@ double exitDistance(const Sphere& s, dvec3 p, dvec3 dir) {
     return std::max(-2.0 * glm::dot(p - s.center, dir), 0.0);
 }
 
+// The nearest root seen so far along one ray, and whether an identical
+// sphere ties with it (the same inputs give the same t).
+struct NearestRoot {
+    int sphere = -1;
+    double t = std::numeric_limits<double>::infinity();
+    bool inside = false;
+    bool twin = false;
+
+    void consider(const Scene& scene, int i, double ti, bool insideI) {
+        if (ti < t) {
+            t = ti;
+            sphere = i;
+            inside = insideI;
+            twin = false;
+        } else if (ti == t) {
+            twin = twin || identicalSpheres(scene, i, sphere);
+        }
+    }
+};
+
 }  // namespace
 
 // ---- visibility ------------------------------------------------------------------
 
 bool closestHit(const Scene& scene, dvec3 origin, dvec3 dir, Hit& out) {
-    int nearestSphere = -1;
-    double nearest = std::numeric_limits<double>::infinity();
-    bool nearestInside = false;
-    bool twin = false;  // an identical sphere ties with the nearest (the same inputs give the same t)
+    NearestRoot nearest;
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
         double t;
         bool inside;
-        if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) continue;
-        if (t < nearest) {
-            nearest = t;
-            nearestSphere = i;
-            nearestInside = inside;
-            twin = false;
-        } else if (t == nearest) {
-            twin = twin || identicalSpheres(scene, i, nearestSphere);
-        }
+        if (nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) nearest.consider(scene, i, t, inside);
     }
-    if (nearestSphere < 0) return false;
-    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, origin, dir);
+    if (nearest.sphere < 0) return false;
+    out = makeHit(scene, nearest.sphere, nearest.t, nearest.inside, nearest.twin, origin, dir);
     return true;
 }
 
 bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
-    int nearestSphere = -1;
-    double nearest = std::numeric_limits<double>::infinity();
-    bool nearestInside = false;
-    bool twin = false;  // as in closestHit()
+    NearestRoot nearest;
     dvec3 origin = from.p + from.n * from.error;  // for the other spheres: p pushed past its rounding error
     for (int i = 0; i < int(scene.spheres.size()); ++i) {
         double t;
@@ -172,18 +178,11 @@ bool nextHit(const Scene& scene, const Hit& from, dvec3 dir, Hit& out) {
         } else if (!nearestRoot(scene.spheres[size_t(i)], origin, dir, t, inside)) {
             continue;
         }
-        if (t < nearest) {
-            nearest = t;
-            nearestSphere = i;
-            nearestInside = inside;
-            twin = false;
-        } else if (t == nearest) {
-            twin = twin || identicalSpheres(scene, i, nearestSphere);
-        }
+        nearest.consider(scene, i, t, inside);
     }
-    if (nearestSphere < 0) return false;
-    dvec3 start = sameSurface(scene, nearestSphere, from.sphere, from.hasTwin) ? from.p : origin;
-    out = makeHit(scene, nearestSphere, nearest, nearestInside, twin, start, dir);
+    if (nearest.sphere < 0) return false;
+    dvec3 start = sameSurface(scene, nearest.sphere, from.sphere, from.hasTwin) ? from.p : origin;
+    out = makeHit(scene, nearest.sphere, nearest.t, nearest.inside, nearest.twin, start, dir);
     return true;
 }
 

@@ -61,14 +61,6 @@ Material randomMaterial(Random& rng, double mirrorChance = 0.2) {
     return m;
 }
 
-Sphere sphere(dvec3 centre, double radius, Material m) {
-    Sphere s;
-    s.center = centre;
-    s.radius = radius;
-    s.material = m;
-    return s;
-}
-
 // Distance from p to the surface of s (positive inside or outside).
 double surfaceDistance(dvec3 p, const Sphere& s) { return std::abs(glm::length(p - s.center) - s.radius); }
 bool insideSphere(dvec3 p, const Sphere& s) { return glm::length(p - s.center) < s.radius; }
@@ -305,6 +297,14 @@ dvec3 rotate(double w, dvec3 q, dvec3 v) {
 }
 
 }  // namespace
+
+Sphere sphere(dvec3 centre, double radius, Material m) {
+    Sphere s;
+    s.center = centre;
+    s.radius = radius;
+    s.material = m;
+    return s;
+}
 
 std::string kindName(SceneKind kind) {
     switch (kind) {

@@ -37,6 +37,9 @@ std::string kindName(SceneKind kind);
 Scene randomScene(std::uint64_t seed);
 SceneKind sceneKind(std::uint64_t seed);
 
+// A sphere of the given centre, radius and material (for building scenes by hand too).
+Sphere sphere(glm::dvec3 centre, double radius, Material m);
+
 // A one-line summary for failure messages: "seed 17 (ground): 23 spheres, 6 lights, spp 4, 0 bounces".
 std::string describeScene(std::uint64_t seed, const Scene& scene);
 

@@ -40,14 +40,6 @@ Material material(dvec3 albedo, double roughness, double metallic) {
     return m;
 }
 
-Sphere sphere(dvec3 centre, double radius, Material m) {
-    Sphere s;
-    s.center = centre;
-    s.radius = radius;
-    s.material = m;
-    return s;
-}
-
 Light light(dvec3 position, double intensity, dvec3 colour = dvec3(1.0)) {
     Light l;
     l.position = position;
