@@ -27,16 +27,19 @@ IncludeResolver makeIncludeResolver(const Implementation& impl) {
     };
 }
 
-std::string shaderPrelude(const ShaderDefines& defines) {
-    std::string prelude = "#version 330 core\n";
+std::string shaderPrelude(const ShaderDefines& defines, GlslDialect dialect) {
+    std::string prelude = dialect == GlslDialect::Es300
+                              ? "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                              : "#version 330 core\n";
     for (const auto& [name, value] : defines) prelude += "#define " + name + " " + value + "\n";
     return prelude;
 }
 
-AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines) {
+AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines,
+                               GlslDialect dialect) {
     // Every file outside shaders/ is an exercise file: its errors are the author's.
     SourceAssembler assembler(makeIncludeResolver(impl), [](const fs::path& file) { return isInside(file, shadersDir()); });
-    return assembler.assemble(shaderPrelude(defines), shadersDir() / entry);
+    return assembler.assemble(shaderPrelude(defines, dialect), shadersDir() / entry);
 }
 
 ShaderProgram buildRayTracer(const Implementation& impl, const ShaderDefines& defines) {

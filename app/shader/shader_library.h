@@ -31,11 +31,17 @@ using ShaderDefines = std::map<std::string, std::string>;
 // folder for exercise files), so a student's file cannot read anything else.
 IncludeResolver makeIncludeResolver(const Implementation& impl);
 
+// Which GLSL a program is compiled as: desktop GLSL 3.30 core (the native
+// build), or GLSL ES 3.00 (WebGL2's language, and the strict rules of
+// stricter drivers), whose prelude also sets highp precision.
+enum class GlslDialect { Desktop330, Es300 };
+
 // The #version line and defines every raylab shader starts with.
-std::string shaderPrelude(const ShaderDefines& defines);
+std::string shaderPrelude(const ShaderDefines& defines, GlslDialect dialect = GlslDialect::Desktop330);
 
 // Assembles a framework entry point (e.g. "main.frag") with an implementation.
-AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines);
+AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines,
+                               GlslDialect dialect = GlslDialect::Desktop330);
 
 // The full-screen ray tracer: fullscreen.vert + main.frag. Throws ShaderError
 // (compile/link, mapped to file:line) or rl::Error (missing file, bad include).
