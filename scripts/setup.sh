@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages raylab needs, only those missing. Run as root
 # (or with sudo available). Safe to run again: does nothing when all are present.
 #   scripts/setup.sh            build + headless + tests
-#   scripts/setup.sh --window   also the window/report test tools (Xvfb, Chromium)
+#   scripts/setup.sh --window   also the window/report test tools (Xvfb, Chromium, ffmpeg)
 #   scripts/setup.sh --slurm    also Slurm and MUNGE, for the test of the Slurm recipe (test extra)
 set -euo pipefail
 
@@ -15,7 +15,8 @@ packages=(
   libzip-dev
   python3-jsonschema
 )
-window_packages=(xvfb xauth xdotool chromium fonts-dejavu-core imagemagick)
+# ffmpeg: `raylab record`'s MP4 and GIF (51 MB of packages without recommends).
+window_packages=(xvfb xauth xdotool chromium fonts-dejavu-core imagemagick ffmpeg)
 slurm_packages=(slurmctld slurmd slurm-client munge)
 
 for arg in "$@"; do

@@ -5,6 +5,7 @@
 #include "commands/commands.h"
 
 #include "bench/bench.h"
+#include "bench/view_bench.h"
 #include "core/error.h"
 #include "core/message.h"
 #include "core/file_io.h"
@@ -28,6 +29,7 @@ struct BenchCommandOptions {
     std::string backend = "auto";
     std::string clock = "auto";
     std::string impl;
+    bool sizeGiven = false;  // --size on the command line (the view sweep's default is 1280x720)
 };
 
 std::set<std::string> splitList(const std::string& text) {
@@ -59,6 +61,18 @@ void runBenchCommand(const BenchCommandOptions& o) {
     else if (o.clock == "cpu") options.clock = bench::Clock::Cpu;
     else throw Error("--clock: expected auto, gpu, wall or cpu, not " + quotedValue(o.clock));
 
+    // "view" (bench/view_bench.h) is its own table: the live view's programs
+    // against the generic one at lecture size, not a row of the error sweep.
+    const bool viewSweep = options.sweeps.erase("view") > 0;
+    if (viewSweep) {
+        bench::Options view = options;
+        if (!o.sizeGiven) {
+            view.width = bench::kViewBenchWidth;
+            view.height = bench::kViewBenchHeight;
+        }
+        std::cout << bench::formatViewBench(bench::runViewBench(view, std::cerr));
+        if (options.sweeps.empty()) return;  // only the view sweep was asked for
+    }
     std::vector<bench::Measurement> results = bench::runBench(options, std::cerr);
     std::cout << bench::formatTable(results) << "\n" << bench::formatComparisons(results);
     if (!o.csv.empty()) {
@@ -94,13 +108,17 @@ void addBenchCommand(CLI::App& app) {
         ->capture_default_str()
         ->check(squareNumberIn(1, 1024));
     cmd->add_option("--sweeps", options->sweeps,
-                    "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all)");
+                    "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all); "
+                    "view: the live view's programs against the generic one (1280x720 unless --size)");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
     cmd->add_option("--clock", options->clock,
                     "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")
         ->capture_default_str();
     cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
-    cmd->callback([options] { runBenchCommand(*options); });
+    cmd->callback([options, cmd] {
+        options->sizeGiven = cmd->count("--size") > 0;
+        runBenchCommand(*options);
+    });
 }
 
 }  // namespace rl

@@ -1,9 +1,14 @@
 // raylab record [SCENE] -o DIR [--size WxH] [--frames N] [--orbit DEGREES]
 //               [--sweep exposure|roughness|metallic:FROM:TO] [--view NAME] [--impl DIR]
+//               [--no-captions] [--ui-scale S]
 // Renders a scripted turntable orbit or a slider sweep offline, headless, at
 // full resolution, into DIR/frame-0000.png ...; where ffmpeg is installed,
 // also DIR/record.mp4 and DIR/record.gif. A slow laptop still gives a smooth
-// clip for the lecture. docs/lecture.md, "Recording".
+// clip for the lecture. Each frame carries the live view's caption and colour
+// bar (view/caption_layer.h), drawn into the picture before it is read back;
+// --no-captions leaves them out. docs/lecture.md, "Recording".
+// Built with the window library (it shares the view's caption layer), so it
+// exists where `raylab view` does.
 #include "commands/commands.h"
 
 #include "camera/trackball.h"
@@ -15,6 +20,8 @@
 #include "render/gl_renderer.h"
 #include "render/shader_config.h"
 #include "shader/shader_library.h"
+#include "view/caption_layer.h"
+#include "view/view_caption.h"
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,6 +31,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 extern char** environ;
@@ -43,6 +51,8 @@ struct RecordOptions {
     std::string view = "final";
     std::string impl;
     int fps = 30;
+    bool noCaptions = false;  // leave the caption and colour bar out
+    float uiScale = 0;        // caption size; 0 = the frame height / 720 (at least 1), as a projector at 1080p gets 1.5
 };
 
 // Runs argv; true on exit status 0. Output goes to this process's stderr.
@@ -97,6 +107,10 @@ void runRecord(const RecordOptions& o) {
     // The orbit is the live view's turntable (no roll): a drag of
     // height * degrees / 180 pixels turns by `degrees`.
     const Camera start = scene.camera;
+    GlRenderer renderer;
+    std::unique_ptr<CaptionLayer> captions;
+    if (!o.noCaptions) captions = std::make_unique<CaptionLayer>();
+    const float uiScale = o.uiScale > 0 ? o.uiScale : std::max(1.0f, float(scene.render.height) / 720.0f);
     for (int k = 0; k < o.frames; ++k) {
         const double t = o.frames > 1 ? double(k) / (o.frames - 1) : 0.0;
         Scene frameScene = scene;
@@ -115,7 +129,20 @@ void runRecord(const RecordOptions& o) {
         FrameSettings frame = frameFromScene(frameScene);
         frame.view = view;
         frame.viewBounce = bounce;
-        const Rendering r = renderOnce(program, frameScene, frame);
+        renderer.setScene(frameScene);
+        renderer.draw(program, frame);
+        if (captions) {
+            // Over the display colour only (the radiance target is not written
+            // out), then both targets again for the next draw.
+            gl::BindFramebuffer(GL_FRAMEBUFFER, renderer.framebuffer());
+            const GLenum display = GL_COLOR_ATTACHMENT0, both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            gl::DrawBuffers(1, &display);
+            gl::Viewport(0, 0, frame.width, frame.height);
+            captions->draw(viewCaption(view, bounce, frameScene, frameScene.model), true, {}, {}, frame.width,
+                           frame.height, uiScale);
+            gl::DrawBuffers(2, both);
+        }
+        const Rendering r = renderer.readBack();
         char name[32];
         std::snprintf(name, sizeof name, "frame-%04d.png", k);
         writePng((fs::path(o.out) / name).string(), r.display);
@@ -154,6 +181,9 @@ void addRecordCommand(CLI::App& app) {
     cmd->add_option("--view", o->view, "Teaching view, as raylab render --view")->capture_default_str();
     cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/)");
     cmd->add_option("--fps", o->fps, "Frame rate of the video")->check(CLI::Range(1, 120))->capture_default_str();
+    cmd->add_flag("--no-captions", o->noCaptions, "Frames without the caption and colour bar of the view");
+    cmd->add_option("--ui-scale", o->uiScale, "Caption size (default: frame height / 720, at least 1)")
+        ->check(CLI::Range(0.5, 4.0));
     cmd->callback([o] { runRecord(*o); });
 }
 

@@ -1,7 +1,7 @@
 // raylab view [SCENE] [--impl DIR] [--compare DIR] [--compare-model blinn-phong|pbr]
 //             [--size WxH] [--view NAME]
 //             [--frames N [--screenshot out.png]] [--script FILE] [--stats]
-//             [--fullscreen] [--no-panel] [--no-captions] [--ui-scale S]
+//             [--fullscreen] [--no-panel] [--no-captions] [--ui-scale S] [--generic]
 // The live window (app/view/view_app.h); compiled only with RAYLAB_WITH_GLFW
 // (main.cpp says so otherwise). docs/lecture.md is the user's guide.
 #include "commands/commands.h"
@@ -41,6 +41,8 @@ void addViewCommand(CLI::App& app) {
                   "With --compare or --compare-model: two full pictures side by side (X toggles)");
     cmd->add_flag("--no-captions", options->hideCaptions,
                   "Start without the caption and colour bar on the picture (K shows them)");
+    cmd->add_flag("--generic", options->generic,
+                  "Draw with the generic program, not one specialised to the scene's structure (for comparison)");
     cmd->add_option("--ui-scale", options->uiScale,
                     "Panel and text scale, e.g. 2 for a projector (default: the screen's)")
         ->check(numberIn(0.5, 4.0));

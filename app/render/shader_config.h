@@ -17,6 +17,13 @@ ShaderDefines modelDefines(const ShadingModel& model);
 // left out (app/render/specialisation.cpp).
 ShaderDefines specialisationDefines(const Scene& scene);
 
+// Of specialisationDefines(), only what the scene's structure decides
+// (sphere and light counts, the bounce limit, what the model implies, which
+// spheres are huge), nothing the live view's panel edits: what the live view
+// compiles in, so a slider never recompiles and adding a sphere or a bounce
+// may (specialisation.cpp).
+ShaderDefines structuralDefines(const Scene& scene);
+
 // Both together: what `raylab render` and the live view compile with.
 ShaderDefines shaderDefinesFor(const Scene& scene, bool specialise);
 

@@ -64,3 +64,26 @@ ShaderDefines pictureOnlyDefines() {
 }
 
 }  // namespace rl
+
+namespace rl {
+
+ShaderDefines structuralDefines(const Scene& scene) {
+    // The live view's specialisation (app/render/live_defines.cpp): of
+    // specialisationDefines(), only what follows from the scene's structure,
+    // never from a value the view's panel edits: the counts, the bounce
+    // limit, what the model implies, and which spheres are the huge ones
+    // whose roots are refined (RL_REFINE_SPHERES: from the radii alone,
+    // which the panel does not edit; a ground sphere stays one). Left out:
+    // RL_NO_METALS (every metallic 0), which the metallic slider changes.
+    // A whitelist, so that a value-dependent define added to
+    // specialisationDefines() later never reaches the live view unseen.
+    static const char* const kStructural[] = {"RL_SPHERE_COUNT",  "RL_LIGHT_COUNT",   "RL_MAX_BOUNCES",
+                                               "RL_SINGLE_SPHERE", "RL_BOUNCE_CUTOFF", "RL_REFINE_SPHERES"};
+    const ShaderDefines all = specialisationDefines(scene);
+    ShaderDefines d;
+    for (const char* name : kStructural)
+        if (auto it = all.find(name); it != all.end()) d[name] = it->second;
+    return d;
+}
+
+}  // namespace rl

@@ -2,6 +2,12 @@
 // pixels (the picture is upscaled to the window), and the full resolution
 // again as soon as it stops. The scale comes from the measured cost per pixel
 // and a frame budget, so a fast GPU never drops resolution at all.
+//
+// A frame is the render (cost per rendered pixel) plus what does not shrink
+// with the render scale: the upscale to the window, the panel and captions,
+// the swap (on llvmpipe under X, a copy of every window pixel). At 1080p on
+// two cores that overhead is most of the budget, so the render gets only what
+// the overhead leaves (measured, not guessed: recordFrame()).
 #pragma once
 
 namespace rl {
@@ -24,12 +30,17 @@ public:
 
     // A measured frame: `ms` to render `pixels` pixels.
     void record(double ms, double pixels);
+    // A whole frame while moving: `frameMs` from the start of the frame to
+    // the swap, of which `renderMs` the render (the rest is the overhead).
+    void recordFrame(double frameMs, double renderMs);
     // The scale of each side of the picture for the next frame.
     double scale(bool moving, int fullWidth, int fullHeight) const;
     double msPerPixel() const { return msPerPixel_; }
+    double overheadMs() const { return overheadMs_; }
 
 private:
     double msPerPixel_ = 0;  // running average; 0 until measured
+    double overheadMs_ = 0;  // running average of a frame's time outside the render
 };
 
 }  // namespace rl

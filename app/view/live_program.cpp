@@ -30,12 +30,20 @@ LiveProgram::LiveProgram(Implementation impl, std::string label, ShaderDefines d
 }
 
 bool LiveProgram::setDefines(const ShaderDefines& defines) {
-    if (defines == defines_) return false;
+    if (defines == defines_ && program_) return false;
     defines_ = defines;
-    return true;
+    auto kept = built_.find(defines);
+    if (kept == built_.end()) return true;
+    program_ = kept->second;
+    return false;
 }
 
 bool LiveProgram::rebuild() {
+    built_.clear();  // from the old sources; the one in use stays until a new one builds
+    return build();
+}
+
+bool LiveProgram::build() {
     const auto start = std::chrono::steady_clock::now();
     try {
         AssembledSource vertex = assembleShader("fullscreen.vert", impl_, {});
@@ -44,8 +52,8 @@ bool LiveProgram::rebuild() {
         for (const auto& f : fragment.files)
             if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
         files_ = std::move(files);  // known even when the compile below fails
-        ShaderProgram built(vertex, fragment);
-        program_ = std::move(built);
+        program_ = std::make_shared<const ShaderProgram>(vertex, fragment);
+        built_[defines_] = program_;
         error_.clear();
     } catch (const Error& e) {
         error_ = e.what();

@@ -2,13 +2,19 @@
 // assembles and compiles the sources again; when that fails, the last good
 // program stays in use and error() says why (glslViewer's "revert to the
 // previous shader"), until a later rebuild succeeds.
+//
+// The live view needs a few programs of the same sources (one per set of
+// defines: the picture and the teaching views, render/live_defines.h), so
+// each one built is kept until the sources change: switching views back
+// and forth compiles each program once.
 #pragma once
 
 #include "shader/program.h"
 #include "shader/shader_library.h"
 
 #include <filesystem>
-#include <optional>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,16 +25,27 @@ public:
     // `defines`: the model variant's (render/shader_config.h modelDefines).
     LiveProgram(Implementation impl, std::string label, ShaderDefines defines = {});
 
-    // Changes the defines for the next rebuild(); true when they differ from
-    // the current ones (then the caller rebuilds: a scene with another model).
+    // Selects the program of `defines`. Returns true when it is not built
+    // yet (then the caller calls build(): another view, structure or model);
+    // false when it is in use already or was built before (then it is in use
+    // now, nothing compiled).
     bool setDefines(const ShaderDefines& defines);
 
-    // True when a new program is in use. False: error() holds the message,
-    // as rl::ShaderError formats it ("file:line: error: message\n    source line").
+    // The sources changed: every kept program is dropped and the current
+    // defines' program is built again. True when a new program is in use.
+    // False: error() holds the message, as rl::ShaderError formats it
+    // ("file:line: error: message\n    source line").
     bool rebuild();
+    // Builds the current defines' program from the same sources (after
+    // setDefines() returned true), keeping the others.
+    bool build();
 
     // The last program that built; nullptr until one has.
-    const ShaderProgram* program() const { return program_ ? &*program_ : nullptr; }
+    const ShaderProgram* program() const { return program_.get(); }
+    const ShaderDefines& defines() const { return defines_; }
+    // How many programs are kept (one per set of defines built since the
+    // sources last changed).
+    std::size_t keptPrograms() const { return built_.size(); }
     const std::string& error() const { return error_; }
     const std::string& label() const { return label_; }
     const Implementation& implementation() const { return impl_; }
@@ -42,7 +59,8 @@ private:
     Implementation impl_;
     std::string label_;
     ShaderDefines defines_;
-    std::optional<ShaderProgram> program_;
+    std::shared_ptr<const ShaderProgram> program_;  // in use: the last that built
+    std::map<ShaderDefines, std::shared_ptr<const ShaderProgram>> built_;  // since the sources last changed
     std::string error_;
     std::vector<std::filesystem::path> files_;
     double lastBuildMs_ = 0;

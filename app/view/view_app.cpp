@@ -6,6 +6,8 @@
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
+#include "checks/exercise_registry.h"
+#include "render/live_defines.h"
 #include "render/shader_config.h"
 #include "view/implementation_folder.h"
 #include "view/input_script.h"
@@ -103,6 +105,11 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
 
     picture_ = std::make_unique<SplitPicture>();
     timer_ = std::make_unique<GpuTimer>();
+    if (const GLubyte* name = gl::GetString(GL_RENDERER)) {
+        const std::string renderer = reinterpret_cast<const char*>(name);
+        for (const char* software : {"llvmpipe", "softpipe", "SwiftShader"})
+            softwareRenderer_ = softwareRenderer_ || renderer.find(software) != std::string::npos;
+    }
     for (std::size_t i = 0; i < impls.size(); ++i) {
         Side side;
         std::string label = implementationLabel(impls[i]);
@@ -114,7 +121,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
                              : own.isReference() ? "PBR"
                                                  : "the scene's model");
         }
-        side.program = std::make_unique<LiveProgram>(impls[i], label, definesFor(side));
+        side.program = std::make_unique<LiveProgram>(impls[i], label);
         side.watcher = std::make_unique<FileWatcher>([] { glfwPostEmptyEvent(); });
         sides_.push_back(std::move(side));
         rebuild(sides_.back(), true);
@@ -158,6 +165,7 @@ void ViewApp::frame() {
     const bool scriptDone = !script_ || script_->finished();
     if (!scriptDone) script_->step(*this);
     applyReloads();
+    for (Side& side : sides_) selectProgram(side);  // the view may have changed: its program
 
     int width = 0, height = 0;
     window_->framebufferSize(width, height);
@@ -197,7 +205,15 @@ void ViewApp::frame() {
     if (!pendingUiShot_.empty()) writeScreenshot(pendingUiShot_, true);
     pendingUiShot_.clear();
     glfwSwapBuffers(window_->window());
-    if (rendered) stats_.addWall(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
+    if (rendered) {
+        const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
+        stats_.addWall(frameMs);
+        if (renderedScale_ < 1.0 || moving()) {  // the frames a drag is made of
+            movingFrameMs_.push_back(frameMs);
+            lowestScale_ = std::min(lowestScale_, renderedScale_);
+            if (softwareRenderer_) adaptive_.recordFrame(frameMs, lastRenderMs_);
+        }
+    }
 
     handleRequests(requests);
     if (scriptDone && framesLeft_ > 0 && --framesLeft_ == 0) quit_ = true;
@@ -235,8 +251,21 @@ void ViewApp::applyReloads() {
     }
 }
 
+namespace {
+
+// Exercise 09 edited away from the shipped stub: the picture program may
+// trust traceRay (render/live_defines.h), as `raylab render` does.
+bool traceStarted(const Implementation& impl) {
+    const ExerciseInfo& reflections = findExercise("9");
+    return !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+}
+
+}  // namespace
+
 void ViewApp::rebuild(Side& side, bool initial) {
     LiveProgram& program = *side.program;
+    side.traceStarted = traceStarted(program.implementation());
+    program.setDefines(definesFor(side));
     const bool ok = program.rebuild();
     side.watcher->watch(program.files());
     if (!initial) ++reloads_;
@@ -254,16 +283,38 @@ void ViewApp::rebuild(Side& side, bool initial) {
 }
 
 ShaderDefines ViewApp::definesFor(const Side& side) const {
-    // The generic shader plus the model variant: never specialised to the
-    // scene's structure (render/shader_config.h), because the panel edits
-    // values that specialisation compiles in (bounces, metallic) and editing
-    // must never recompile.
-    return modelDefines(side.model.value_or(scene_.scene().model));
+    // Specialised to the scene's structure, never to its values
+    // (render/live_defines.h): a slider re-uploads uniforms only; another
+    // sphere count, bounce limit, model or view kind selects another program.
+    const ShadingModel& model = side.model.value_or(scene_.scene().model);
+    if (options_.generic) return modelDefines(model);
+    return liveViewDefines(scene_.scene(), model, state_.view, side.traceStarted);
+}
+
+void ViewApp::selectProgram(Side& side) {
+    LiveProgram& program = *side.program;
+    const ShaderProgram* before = program.program();
+    if (program.setDefines(definesFor(side))) {
+        const bool ok = program.build();
+        side.watcher->watch(program.files());
+        if (ok) {
+            std::cout << "raylab: built " << program.label() << " for " << viewName(state_.view, state_.viewBounce)
+                      << " (" << int(std::lround(program.lastBuildMs())) << " ms, " << program.keptPrograms()
+                      << " kept)" << std::endl;
+        } else {
+            std::cerr << "raylab: " << program.label() << ": the shader does not build"
+                      << (program.program() ? "; the last good picture stays on screen" : "") << ":\n"
+                      << program.error() << std::endl;
+        }
+    }
+    if (program.program() != before) {
+        stats_.clearRecent();
+        dirty_ = true;
+    }
 }
 
 void ViewApp::sceneChanged(bool cameraChanged) {
-    for (Side& side : sides_)
-        if (side.program->setDefines(definesFor(side))) rebuild(side, false);  // another model: another program
+    for (Side& side : sides_) selectProgram(side);  // another structure or model: another program
     picture_->setScene(scene_.scene());
     if (cameraChanged)
         trackball_ = std::make_unique<Trackball>(scene_.scene().camera, std::max(fbWidth_, 1), std::max(fbHeight_, 1));
@@ -284,7 +335,8 @@ void ViewApp::renderPicture(bool fullResolution) {
     const int split = wipeActive() ? int(std::lround(state_.divider * frame.width)) : frame.width;
     const ShaderProgram* left = sides_[0].program->program();
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
-    timer_->begin(double(frame.width) * frame.height);
+    const auto renderStart = Clock::now();
+    if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
     try {
         if (sideBySideActive())
             picture_->renderSideBySide(left, right, frame);
@@ -295,7 +347,16 @@ void ViewApp::renderPicture(bool fullResolution) {
         if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
         runtimeError_ = e.what();
     }
-    timer_->end();
+    if (softwareRenderer_) {
+        // llvmpipe renders on its worker threads when the draw is flushed;
+        // glFinish here costs nothing the swap would not wait for anyway.
+        gl::Finish();
+        lastRenderMs_ = std::chrono::duration<double, std::milli>(Clock::now() - renderStart).count();
+        stats_.addGpu(lastRenderMs_);
+        adaptive_.record(lastRenderMs_, double(frame.width) * frame.height);
+    } else {
+        timer_->end();
+    }
     renderedScale_ = scale;
     dirty_ = false;
 }
@@ -445,7 +506,9 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
     const glm::dvec3 u = glm::cross(r, f);
     const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
-    const double aspect = double(fbWidth_) / fbHeight_;
+    int x0 = 0, width = fbWidth_;  // side by side: the half the pixel was asked in
+    pictureColumns(sideBySideActive() ? pickedHalf_ : -1, x0, width);
+    const double aspect = double(width) / fbHeight_;
     // Points closer than this along the view direction are clipped away:
     // a ray from the camera itself projects to no point.
     const double nearPlane = 1e-3 * glm::length(camera.target - camera.position);
@@ -456,7 +519,7 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
         if (ca.z < nearPlane) ca += (cb - ca) * ((nearPlane - ca.z) / (cb.z - ca.z));
         if (cb.z < nearPlane) cb += (ca - cb) * ((nearPlane - cb.z) / (ca.z - cb.z));
         auto toPixel = [&](glm::dvec3 c) {
-            return glm::dvec2((c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * fbWidth_,
+            return glm::dvec2(x0 + (c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * width,
                               (1.0 - c.y / (c.z * tanHalf)) * 0.5 * fbHeight_);
         };
         const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
@@ -529,8 +592,18 @@ void ViewApp::printStats() const {
     std::printf("raylab view: %zu frames at %dx%d (%s%s%s): median %.1f ms per frame (%.1f fps)", stats_.frames(),
                 fbWidth_, fbHeight_, sides_[0].program->label().c_str(), sides_.size() > 1 ? " | " : "",
                 sides_.size() > 1 ? sides_[1].program->label().c_str() : "", ms, ms > 0 ? 1000.0 / ms : 0.0);
-    if (stats_.gpuFrames() > 0) std::printf(", GPU %.1f ms", stats_.allGpuMs());
+    if (stats_.gpuFrames() > 0) std::printf(", %s %.1f ms", softwareRenderer_ ? "render" : "GPU", stats_.allGpuMs());
     std::printf("\n");
+    if (!movingFrameMs_.empty()) {
+        // The drag's own frame timer: every frame rendered while moving, from
+        // the start of the frame to the swap.
+        const double moving = FrameStats::median(movingFrameMs_);
+        std::printf("raylab view: moving: %zu frames, median %.1f ms per frame (%.1f fps), render scale down to %.3f "
+                    "(%dx%d), overhead %.1f ms\n",
+                    movingFrameMs_.size(), moving, moving > 0 ? 1000.0 / moving : 0.0, lowestScale_,
+                    std::max(1, int(std::lround(fbWidth_ * lowestScale_))),
+                    std::max(1, int(std::lround(fbHeight_ * lowestScale_))), adaptive_.overheadMs());
+    }
     std::fflush(stdout);
 }
 

@@ -55,6 +55,7 @@ private:
         std::unique_ptr<LiveProgram> program;
         std::unique_ptr<FileWatcher> watcher;
         std::optional<ShadingModel> model;  // the model it shows (--compare-model); none: the scene's
+        bool traceStarted = false;  // exercise 09 is not the shipped stub (render/live_defines.h), at the last build
     };
 
     // -- the loop (view_app.cpp)
@@ -62,7 +63,10 @@ private:
     void waitOrPoll();
     void applyReloads();
     void rebuild(Side& side, bool initial);
-    ShaderDefines definesFor(const Side& side) const;  // the model variant's defines
+    ShaderDefines definesFor(const Side& side) const;  // the live program's defines (render/live_defines.h)
+    // Puts the program for the current view, structure and model in use,
+    // compiling it only when it was not built since the sources changed.
+    void selectProgram(Side& side);
     void sceneChanged(bool cameraMayHaveChanged);
     void renderPicture(bool fullResolution);
     void drawUi(ViewRequests& requests);
@@ -99,6 +103,8 @@ private:
     void cameraMoved();
     // Ask a pixel: the CPU reference's terms at `pixel` (framebuffer, top-left origin).
     void pickPixel(glm::dvec2 pixel);
+    // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
+    void pictureColumns(int half, int& x0, int& width) const;
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
@@ -136,6 +142,10 @@ private:
     int fbWidth_ = 0, fbHeight_ = 0;  // framebuffer size this frame
     bool dirty_ = true;               // the picture must be rendered again
     double renderedScale_ = 0;        // scale of the picture on screen; 0 = none yet
+    bool softwareRenderer_ = false;   // llvmpipe & co: GL_TIME_ELAPSED misses their threads, so the render is timed by the wall clock
+    double lastRenderMs_ = 0;         // the last render's wall time (software renderers only)
+    std::vector<double> movingFrameMs_;  // whole frames rendered while moving, for --stats
+    double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
     int framesLeft_ = 0;              // --frames countdown, after the script
@@ -151,6 +161,7 @@ private:
     std::string pendingUiShot_;  // window screenshot to write this frame
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
+    int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window
     std::optional<ref::PixelTerms> picked_;  // the last asked pixel, its rays drawn over the picture  // the implementations' part of the window title
     std::string toast_;
     Clock::time_point toastUntil_{};

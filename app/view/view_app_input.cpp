@@ -186,15 +186,38 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
     if (i < 0 || row < 0 || i >= fbWidth_ || row >= fbHeight_) return;
     try {
         Camera camera = trackball_->camera();
-        picked_ = ref::explainPixel(scene_.scene(), camera, fbWidth_, fbHeight_, i, fbHeight_ - 1 - row);
-        state_.pickedText = ref::formatPixelTerms(scene_.scene(), *picked_);
+        // Side by side, each half is a whole picture of its own width with
+        // the same camera: the pixel is asked of the half it is in, in that
+        // half's model (--compare-model).
+        Scene scene = scene_.scene();
+        std::string where;
+        pickedHalf_ = -1;
+        if (sideBySideActive()) {
+            pickedHalf_ = i < std::max(1, fbWidth_ / 2) ? 0 : 1;
+            if (sides_[std::size_t(pickedHalf_)].model) scene.model = *sides_[std::size_t(pickedHalf_)].model;
+            where = std::string(pickedHalf_ == 0 ? " of the left picture" : " of the right picture") + " (" +
+                    sides_[std::size_t(pickedHalf_)].program->label() + ")";
+        }
+        int x0 = 0, width = fbWidth_;
+        pictureColumns(pickedHalf_, x0, width);
+        picked_ = ref::explainPixel(scene, camera, width, fbHeight_, i - x0, fbHeight_ - 1 - row);
+        state_.pickedText = ref::formatPixelTerms(scene, *picked_);
         state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
         state_.revealPicked = true;
-        std::cout << "raylab: ask a pixel at (" << i << ", " << row << ") from the top left\n"
+        std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row << ") from the top left" << where << "\n"
                   << state_.pickedText << std::flush;
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
     }
+}
+
+void ViewApp::pictureColumns(int half, int& x0, int& width) const {
+    x0 = 0;
+    width = fbWidth_;
+    if (half < 0 || !sideBySideActive()) return;
+    const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
+    x0 = half == 0 ? 0 : split;
+    width = half == 0 ? split : std::max(1, fbWidth_ - split);
 }
 
 void ViewApp::onScroll(double steps) {

@@ -21,6 +21,7 @@ struct ViewOptions {
     bool sideBySide = false;     // start with two full pictures side by side (needs --compare or --compare-model)
     bool hideCaptions = false;   // start without the caption and colour bar on the picture
     float uiScale = 0;           // 0 = the monitor's content scale
+    bool generic = false;        // draw with the generic program (model defines only), as before the live specialisation
 };
 
 }  // namespace rl

@@ -616,8 +616,9 @@ TEST_F(LectureTest, SavingWritesOnlyWhatChanged) {
 // `raylab record --orbit 90`: the first frame is the scene's camera, the last
 // the turntable turned by 90 degrees, both as `raylab render` draws them.
 TEST_F(LectureTest, RecordRendersATurntableOrbitFrameByFrame) {
-    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "4", "--orbit", "90"},
-                            env, dir.path());
+    RunResult r = runRaylab(
+        {"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "4", "--orbit", "90", "--no-captions"},
+        env, dir.path());
     ASSERT_EQ(r.status, 0) << r.err;
     for (int k = 0; k < 4; ++k) EXPECT_TRUE(fs::exists(dir / "clip" / ("frame-000" + std::to_string(k) + ".png")));
     RunResult h = runRaylab({"render", lectureScene(), "--size", "96x54", "-o", "first.png"}, env, dir.path());
@@ -634,6 +635,54 @@ TEST_F(LectureTest, RecordRendersATurntableOrbitFrameByFrame) {
     ASSERT_EQ(h.status, 0) << h.err;
     EXPECT_LE(comparePictures(last, shot("turned.png")).offFraction, 0.005) << "frame 3: turned by 90 degrees";
     EXPECT_GT(comparePictures(first, last).offFraction, 0.2) << "the orbit moved the camera";
+}
+
+// Recorded frames carry the view's caption and colour bar (drawn by the
+// renderer before the read-back), as the window's screenshots do.
+TEST_F(LectureTest, RecordedFramesCarryTheCaption) {
+    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", kSize, "--frames", "1", "--view", "d",
+                             "--ui-scale", "1"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(runRaylab({"record", lectureScene(), "-o", "plain", "--size", kSize, "--frames", "1", "--view", "d",
+                         "--no-captions"},
+                        env, dir.path())
+                  .status,
+              0);
+    const DisplayImage captioned = shot("clip/frame-0000.png"), plain = shot("plain/frame-0000.png");
+    expectColourBar(captioned, 1.0f, "recorded frame");
+    EXPECT_GT(captionTextPixels(captioned, 1.0f), 50) << "the caption's text is in the frame";
+    EXPECT_LT(captionTextPixels(plain, 1.0f), 10) << "--no-captions: none";
+    // Outside the caption box the frame is the plain picture.
+    const CaptionLayout l = captionLayout(captioned.width, captioned.height, 1.0f);
+    const int boxLeft = int(l.right - l.textWidth - 2 * l.pad);  // the widest the box can be
+    ASSERT_GT(boxLeft, 100);
+    EXPECT_EQ(comparePictures(columns(captioned, 0, boxLeft), columns(plain, 0, boxLeft)).maxLsb, 0);
+    maybeUpdateDocImage(dir / "clip" / "frame-0000.png", "record-caption.png");
+}
+
+// Where ffmpeg is installed (scripts/setup.sh --window installs it),
+// `raylab record` also writes record.mp4 and record.gif with every frame.
+// Skipped only when ffmpeg is missing.
+TEST_F(LectureTest, RecordWritesAVideoAndAGifWhereFfmpegIsInstalled) {
+    if (std::system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1") != 0)
+        GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
+    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "5", "--orbit", "40"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("record.mp4"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("record.gif"), std::string::npos) << r.out;
+    for (const char* video : {"record.mp4", "record.gif"}) {
+        const fs::path file = dir / "clip" / video;
+        ASSERT_TRUE(fs::exists(file)) << video;
+        // ffprobe decodes the file and counts its frames: all five are in it.
+        RunResult probe = Process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                   "stream=nb_read_frames,width,height", "-of", "csv=p=0", file.string()},
+                                  env, dir.path())
+                              .wait(std::chrono::seconds(60));
+        ASSERT_EQ(probe.status, 0) << probe.err;
+        EXPECT_EQ(probe.out.substr(0, probe.out.find('\n')), "96,54,5") << video << ": width, height, frames";
+    }
 }
 
 // ---- side by side ------------------------------------------------------------------------
@@ -687,6 +736,29 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     ASSERT_LT(leftmost, kWidth / 2) << "no label on the left picture";
     EXPECT_GE(leftmost, int(panel.x + panel.width)) << "the left label sits under the panel";
     maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
+}
+
+// Side by side, a pixel is asked of the picture it is in: a click in the
+// right half (Blinn-Phong) prints the CPU reference's values of that half's
+// pixel in the Blinn-Phong model.
+TEST_F(LectureTest, SideBySideAsksTheHalfThePixelIsIn) {
+    const int half = 480, x = 268, y = 122;  // the blue sphere in a 480x270 picture, as above
+    writeText(dir / "script.txt", "wait 1\npick " + std::to_string(half + x) + " " + std::to_string(y) + "\nwait 1\nquit\n");
+    RunResult r = runRaylab({"view", lectureScene(), "--size", "960x270", "--no-panel", "--no-captions", "--side-by-side",
+                             "--compare-model", "blinn-phong", "--script", "script.txt"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_NE(r.out.find("raylab: ask a pixel at (268, 122) from the top left of the right picture"), std::string::npos)
+        << r.out;
+    Scene blinn = loadSceneFile(lectureScene()).scene;
+    blinn.model.blinnPhong = true;
+    const ref::CameraBasis basis = ref::cameraBasis(blinn.camera);
+    const glm::dvec3 ray = ref::cameraRayDirection(glm::dvec2(x + 0.5, kHeight - 1 - y + 0.5), glm::dvec2(half, kHeight),
+                                                   basis.fovYRadians, basis.right, basis.up, basis.forward);
+    const glm::dvec3 printed = printedVector(r.out, "radiance");
+    expectRelative(printed, ref::traceRadiance(blinn, basis.position, ray), "radiance of the Blinn-Phong half");
+    const glm::dvec3 pbr = ref::traceRadiance(loadSceneFile(lectureScene()).scene, basis.position, ray);
+    EXPECT_GT(glm::length(printed - pbr), 1e-3 * glm::length(pbr)) << "not the left half's model";
 }
 
 // Ctrl+click through the X server asks the pixel (and leaves the camera alone).

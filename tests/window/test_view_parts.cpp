@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
+#include "render/live_defines.h"
 #include "view/adaptive_resolution.h"
 #include "view/file_watcher.h"
 #include "view/implementation_folder.h"
@@ -158,6 +159,74 @@ TEST(AdaptiveResolution, ShrinksOnlyWhileMovingAndOnlyWhenSlow) {
     AdaptiveResolution fast;
     fast.record(AdaptiveResolution::kMovingBudgetMs / 2, pixels);
     EXPECT_EQ(fast.scale(true, 640, 480), 1.0) << "fast enough: never drops";
+}
+
+TEST(AdaptiveResolution, TheOverheadOutsideTheRenderShrinksTheRenderBudget) {
+    // 1080p on llvmpipe under load (issue #14): the render alone would fit
+    // a quarter width, but upscale + panel + swap take most of the budget.
+    const double pixels = 1920.0 * 1080.0;
+    AdaptiveResolution a;
+    a.record(22 * 16, pixels);  // 22 ms at a quarter of each side: 352 ms at full size
+    const double alone = a.scale(true, 1920, 1080);
+    EXPECT_GE(alone, 0.25) << "without the overhead, a quarter width looks affordable";
+    a.recordFrame(85, 22);  // a whole frame took 85 ms, 63 of them outside the render
+    const double s = a.scale(true, 1920, 1080);
+    EXPECT_LT(s, 0.25) << "the overhead leaves less for the render: below a quarter";
+    EXPECT_NEAR(a.overheadMs(), 63, 1e-9);
+    EXPECT_GE(s, AdaptiveResolution::kMinRows / 1080.0);
+    a.recordFrame(10, 12);  // a render longer than its frame (timer jitter) is no negative overhead
+    EXPECT_GE(a.overheadMs(), 0.0);
+}
+
+TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
+    const Scene lecture = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
+    auto defines = [](const Scene& s, View v = View::Final) { return liveViewDefines(s, s.model, v, true); };
+    const ShaderDefines base = defines(lecture);
+    EXPECT_EQ(base.at("RL_SPHERE_COUNT"), std::to_string(lecture.spheres.size()));
+    EXPECT_EQ(base.at("RL_MAX_BOUNCES"), std::to_string(lecture.render.maxBounces));
+    EXPECT_EQ(base.count("RL_PICTURE_ONLY"), 1u);
+
+    // Every value the panel edits: the same program.
+    Scene values = lecture;
+    for (Sphere& s : values.spheres) {
+        s.material.metallic = 0.0;  // the full specialisation compiles this in (RL_NO_METALS)
+        s.material.roughness = 0.7;
+        s.material.albedo = {0.2, 0.3, 0.4};
+        s.material.ao = 0.5;
+        s.center += glm::dvec3(0.1, 0.0, 0.0);
+    }
+    values.lights[1].intensity = 3.0;
+    values.lights[0].position.y += 2.0;
+    values.render.exposure = 2.5;
+    values.render.gamma = 1.8;
+    values.render.ambient = 0.2;
+    values.camera.position.z += 3.0;
+    EXPECT_EQ(defines(values), base);
+    EXPECT_NE(specialisationDefines(values), specialisationDefines(lecture)) << "the case must be a hard one";
+
+    // Structure: another program.
+    Scene more = lecture;
+    more.spheres.push_back(lecture.spheres[1]);
+    EXPECT_NE(defines(more), base);
+    Scene lights = lecture;
+    lights.lights.pop_back();
+    EXPECT_NE(defines(lights), base);
+    Scene bounces = lecture;
+    bounces.render.maxBounces = 4;
+    EXPECT_NE(defines(bounces), base);
+    Scene beckmann = lecture;
+    beckmann.model.distribution = DistributionModel::Beckmann;
+    EXPECT_NE(defines(beckmann), base);
+
+    Scene ground = lecture;
+    ground.spheres[0].radius = 0.5;  // no huge sphere left: no root to refine (a file edit; the panel has no radius)
+    EXPECT_NE(defines(ground), base);
+
+    // The teaching term views use the generic program; the bounce views are pictures.
+    EXPECT_EQ(defines(lecture, View::D), modelDefines(lecture.model));
+    EXPECT_EQ(defines(lecture, View::Bounce), base);
+    EXPECT_EQ(liveViewDefines(lecture, lecture.model, View::Final, false), modelDefines(lecture.model))
+        << "exercise 09 still the stub: the generic program with its first-hit fallback";
 }
 
 TEST(ImplementationFolder, PartialFolderTakesTheRestFromSolutions) {

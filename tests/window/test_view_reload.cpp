@@ -177,3 +177,48 @@ TEST_F(ReloadTest, CtrlSSavesTheSceneWithTheTrackballCamera) {
     }
     EXPECT_EQ(saved.spheres.size(), original.spheres.size());
 }
+
+// The live program is specialised to the scene's structure only
+// (render/live_defines.h): a value edit re-uploads uniforms, a structural
+// edit builds another program. Every metallic set to 0 is the hard case: the
+// fully specialised program of `raylab render` compiles that in
+// (RL_NO_METALS), the live one must not.
+TEST_F(ReloadTest, ValueEditsNeverRecompileAStructuralEditDoes) {
+    auto view = startView(
+        "wait 1\nscreenshot before.png\n"
+        "wait-reload 60\nwait 1\nscreenshot values.png\n"
+        "wait-reload 60\nwait 1\nscreenshot structure.png\nquit\n");
+    ASSERT_TRUE(waitForFile(dir / "before.png", kStart));
+    Scene edited = loadSceneFile(scene.string()).scene;
+    for (Sphere& s : edited.spheres) {
+        s.material.metallic = 0.0;
+        s.material.roughness = 0.5 * s.material.roughness + 0.1;
+    }
+    edited.render.exposure = 1.7;
+    edited.lights[0].position.x += 0.5;
+    saveSceneFile(edited, scene.string() + ".new");
+    fs::rename(scene.string() + ".new", scene);
+    ASSERT_TRUE(waitForFile(dir / "values.png", kStart));
+    DisplayImage valuesExpected = renderHeadless({}, "values-expected.png");
+    Sphere extra = edited.spheres[2];
+    extra.center.x += 0.3;
+    extra.center.z += 1.0;
+    extra.radius = 0.2;
+    edited.spheres.push_back(extra);  // one more sphere: another program
+    edited.render.maxBounces = 3;     // and another bounce limit, in the same edit
+    saveSceneFile(edited, scene.string() + ".new");
+    fs::rename(scene.string() + ".new", scene);
+    RunResult r = view->wait(kFinish);
+    ASSERT_EQ(r.status, 0) << r.err;
+    DisplayImage structureExpected = renderHeadless({}, "structure-expected.png");
+
+    // One "built" line: the structural edit's. The value edit built nothing.
+    std::size_t built = 0;
+    for (std::size_t at = r.out.find("raylab: built "); at != std::string::npos;
+         at = r.out.find("raylab: built ", at + 1))
+        ++built;
+    EXPECT_EQ(built, 1u) << r.out;
+    EXPECT_LE(comparePictures(picture("values.png"), valuesExpected).offFraction, kMaxOffFraction);
+    EXPECT_LE(comparePictures(picture("structure.png"), structureExpected).offFraction, kMaxOffFraction);
+    EXPECT_GT(comparePictures(picture("values.png"), picture("structure.png")).offFraction, 0.001);
+}

@@ -1,0 +1,167 @@
+#include "bench/view_bench.h"
+
+#include "checks/exercise_registry.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "render/gl_renderer.h"
+#include "render/live_defines.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace rl::bench {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// As bench.cpp: llvmpipe's GL_TIME_ELAPSED misses its worker threads, so a
+// software rasteriser is timed by the wall clock around draw + glFinish.
+bool softwareRasteriser(const std::string& description) {
+    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe"})
+        if (description.find(name) != std::string::npos) return true;
+    return false;
+}
+
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+struct Entry {
+    ViewBenchRow row;
+    View view = View::Final;
+    ShaderProgram program;
+    Rendering picture;
+};
+
+}  // namespace
+
+std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log) {
+    if (options.width < 1 || options.height < 1) throw Error("bench: the size must be at least 1x1");
+    const std::string file = options.scenes.empty() ? (scenesDir() / "lecture.json").string() : options.scenes[0];
+    LoadedScene loaded = loadSceneFile(file);
+    for (const auto& w : loaded.warnings) log << "raylab: warning: " << w << "\n";
+    Scene scene = loaded.scene;
+    scene.render.width = options.width;
+    scene.render.height = options.height;
+    const fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
+    if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
+    const Implementation impl{implDir, {}};
+    const ExerciseInfo& reflections = findExercise("9");
+    const bool traceStarted = !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+
+    auto context = createHeadlessContext(parseBackend(options.backend));
+    Clock clock = options.clock;
+    if (clock == Clock::Auto) clock = softwareRasteriser(context->description()) ? Clock::Wall : Clock::Gpu;
+    const std::string clockName = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
+    log << "bench: view: " << fs::path(file).filename().string() << " at " << scene.render.width << "x"
+        << scene.render.height << ", " << context->description() << ", clock " << clockName << "\n";
+
+    // The picture and one teaching view (D), each with the generic program
+    // (what the view drew with before) and the live one.
+    std::vector<Entry> entries;
+    for (View view : {View::Final, View::D})
+        for (const char* program : {"generic", "live"}) {
+            Entry e;
+            e.view = view;
+            e.row.program = program;
+            e.row.view = viewName(view);
+            e.row.width = scene.render.width;
+            e.row.height = scene.render.height;
+            e.row.clock = clockName;
+            const ShaderDefines defines = e.row.program == "generic"
+                                              ? modelDefines(scene.model)
+                                              : liveViewDefines(scene, scene.model, view, traceStarted);
+            const auto start = std::chrono::steady_clock::now();
+            e.program = buildRayTracer(impl, defines);
+            e.row.compileMs = msSince(start);
+            entries.push_back(std::move(e));
+        }
+
+    GlRenderer renderer;
+    renderer.setScene(scene);
+    auto drawOne = [&](Entry& e) {
+        FrameSettings frame = frameFromScene(scene);
+        frame.view = e.view;
+        if (clock == Clock::Gpu) return renderer.drawTimed(e.program, frame);
+        gl::Finish();
+        const double cpu0 = processCpuMs();
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.draw(e.program, frame);
+        gl::Finish();
+        return clock == Clock::Cpu ? processCpuMs() - cpu0 : msSince(t0);
+    };
+    for (Entry& e : entries) {
+        const auto start = std::chrono::steady_clock::now();
+        drawOne(e);
+        e.row.firstDrawMs = msSince(start);
+        for (int k = 1; k < options.warmup; ++k) drawOne(e);
+        e.picture = renderer.readBack();
+    }
+    // Rounds, one frame of each program per round: a change of the machine's
+    // load touches all of them alike.
+    std::vector<std::vector<double>> times(entries.size());
+    for (int round = 0; round < options.frames; ++round)
+        for (std::size_t i = 0; i < entries.size(); ++i) times[i].push_back(drawOne(entries[i]));
+
+    std::vector<ViewBenchRow> rows;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        Entry& e = entries[i];
+        const Entry& generic = entries[i - i % 2];  // the generic program of the same view
+        e.row.diff = compareRenderings(e.picture, generic.picture);
+        e.row.frames = int(times[i].size());
+        e.row.msMedian = median(times[i]);
+        e.row.msMin = *std::min_element(times[i].begin(), times[i].end());
+        e.row.msMax = *std::max_element(times[i].begin(), times[i].end());
+        char line[256];
+        std::snprintf(line, sizeof line, "bench: view %-7s %-7s %8.1f ms (min %.1f, max %.1f), compile %.0f ms\n",
+                      e.row.program.c_str(), e.row.view.c_str(), e.row.msMedian, e.row.msMin, e.row.msMax,
+                      e.row.compileMs);
+        log << line;
+        rows.push_back(e.row);
+    }
+    return rows;
+}
+
+std::string formatViewBench(const std::vector<ViewBenchRow>& rows) {
+    std::ostringstream s;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-8s %-6s %9s %10s %10s %10s %10s %8s %7s\n", "program", "view", "size",
+                  "ms/frame", "min", "max", "compile", "1st draw", "max LSB");
+    s << line;
+    for (const ViewBenchRow& r : rows) {
+        const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
+        std::snprintf(line, sizeof line, "%-8s %-6s %9s %10.1f %10.1f %10.1f %10.0f %8.0f %7d\n", r.program.c_str(),
+                      r.view.c_str(), size.c_str(), r.msMedian, r.msMin, r.msMax, r.compileMs, r.firstDrawMs,
+                      r.diff.maxLsb);
+        s << line;
+    }
+    for (std::size_t i = 0; i + 1 < rows.size(); i += 2)
+        if (rows[i + 1].msMedian > 0) {
+            std::snprintf(line, sizeof line, "view %s: live %.2fx faster than generic (%.1f ms against %.1f ms)\n",
+                          rows[i].view.c_str(), rows[i].msMedian / rows[i + 1].msMedian, rows[i + 1].msMedian,
+                          rows[i].msMedian);
+            s << line;
+        }
+    return s.str();
+}
+
+}  // namespace rl::bench

@@ -1,0 +1,15 @@
+#include "render/live_defines.h"
+
+namespace rl {
+
+bool isPictureView(View view) { return view == View::Final || view == View::Bounce; }
+
+ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted) {
+    ShaderDefines defines = modelDefines(model);
+    if (!traceStarted || !isPictureView(view)) return defines;  // the generic program (live_defines.h says why)
+    for (const auto& [name, value] : structuralDefines(scene)) defines[name] = value;
+    for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+    return defines;
+}
+
+}  // namespace rl
