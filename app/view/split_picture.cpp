@@ -5,6 +5,28 @@
 
 namespace rl {
 
+SplitPicture::SplitPicture() {
+    gl::GenFramebuffers(1, &upscaleFramebuffer_);
+    gl::GenTextures(1, &upscaleTexture_);
+}
+
+SplitPicture::~SplitPicture() {
+    gl::DeleteTextures(1, &upscaleTexture_);
+    gl::DeleteFramebuffers(1, &upscaleFramebuffer_);
+}
+
+void SplitPicture::ensureUpscaleSource(int width, int height) const {
+    if (width == upscaleWidth_ && height == upscaleHeight_) return;
+    gl::BindTexture(GL_TEXTURE_2D, upscaleTexture_);
+    gl::TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, upscaleFramebuffer_);
+    gl::FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, upscaleTexture_, 0);
+    upscaleWidth_ = width;
+    upscaleHeight_ = height;
+}
+
 void SplitPicture::setScene(const Scene& scene) {
     for (GlRenderer& side : sides_) side.setScene(scene);
 }
@@ -60,14 +82,27 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     const int src0[2] = {0, sideBySide_ ? 0 : split_},
               src1[2] = {split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
     const int dst0[2] = {0, windowSplit}, dst1[2] = {windowSplit, windowWidth};
+    if (!sameSize) ensureUpscaleSource(width_, height_);
     for (int i = 0; i < 2; ++i) {
         if (!drawn_[i]) continue;
         gl::BindFramebuffer(GL_READ_FRAMEBUFFER, sides_[i].framebuffer());
         gl::ReadBuffer(GL_COLOR_ATTACHMENT0);  // the display colour
-        // Nearest at 1:1 keeps the pixels exactly as rendered (screenshots
-        // match `raylab render`); bilinear hides the blocks of a reduced render.
+        if (sameSize) {
+            // Nearest at 1:1 keeps the pixels exactly as rendered (screenshots
+            // match `raylab render`).
+            gl::BlitFramebuffer(src0[i], 0, src1[i], height_, dst0[i], 0, dst1[i], windowHeight, GL_COLOR_BUFFER_BIT,
+                                GL_NEAREST);
+            continue;
+        }
+        // Reduced: the columns to the 8-bit copy at the same size (cheap:
+        // few pixels), then bilinear from it to the window (hides the blocks).
+        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, upscaleFramebuffer_);
+        gl::BlitFramebuffer(src0[i], 0, src1[i], height_, src0[i], 0, src1[i], height_, GL_COLOR_BUFFER_BIT,
+                            GL_NEAREST);
+        gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
+        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
         gl::BlitFramebuffer(src0[i], 0, src1[i], height_, dst0[i], 0, dst1[i], windowHeight, GL_COLOR_BUFFER_BIT,
-                            sameSize ? GL_NEAREST : GL_LINEAR);
+                            GL_LINEAR);
     }
     gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
