@@ -354,6 +354,7 @@ void ViewApp::renderPicture(bool fullResolution) {
         lastRenderMs_ = std::chrono::duration<double, std::milli>(Clock::now() - renderStart).count();
         stats_.addGpu(lastRenderMs_);
         adaptive_.record(lastRenderMs_, double(frame.width) * frame.height);
+        if (scale == 1.0) fullRenderMs_.push_back(lastRenderMs_);
     } else {
         timer_->end();
     }
@@ -603,6 +604,9 @@ void ViewApp::printStats() const {
                     movingFrameMs_.size(), moving, moving > 0 ? 1000.0 / moving : 0.0, lowestScale_,
                     std::max(1, int(std::lround(fbWidth_ * lowestScale_))),
                     std::max(1, int(std::lround(fbHeight_ * lowestScale_))), adaptive_.overheadMs());
+        if (!fullRenderMs_.empty())
+            std::printf("raylab view: still: %zu renders at full resolution, median %.1f ms\n", fullRenderMs_.size(),
+                        FrameStats::median(fullRenderMs_));
     }
     std::fflush(stdout);
 }

@@ -145,6 +145,7 @@ private:
     bool softwareRenderer_ = false;   // llvmpipe & co: GL_TIME_ELAPSED misses their threads, so the render is timed by the wall clock
     double lastRenderMs_ = 0;         // the last render's wall time (software renderers only)
     std::vector<double> movingFrameMs_;  // whole frames rendered while moving, for --stats
+    std::vector<double> fullRenderMs_;   // renders at full resolution (software renderers), for --stats
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events

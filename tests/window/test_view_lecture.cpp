@@ -611,6 +611,51 @@ TEST_F(LectureTest, SavingWritesOnlyWhatChanged) {
     EXPECT_LT(glm::length(c.up - predicted.camera().up), 1e-15);
 }
 
+// ---- dragging at lecture resolution ---------------------------------------------------------
+
+// A scripted drag across a 1920x1080 window: the view's own frame timer
+// (--stats) reports the drag's frames and the lowest render scale. No time
+// is asserted (performance is measured in docs/lecture.md, not asserted);
+// what is asserted is that the adaptive resolution reacts: below full
+// resolution while moving, and below the old floor of a quarter width
+// whenever a full-resolution render takes more than 16 frame budgets (so a
+// quarter could not keep 30 fps; always so on llvmpipe with few cores).
+TEST(LectureDrag, AdaptiveScaleGoesAsLowAsTheFrameNeeds) {
+    Xvfb x(1920, 1080);
+    TempDir dir;
+    const auto env = windowEnv(x);
+    writeText(dir / "drag.txt", "wait 2\ndrag 600 500 1300 600 left 30\nquit\n");
+    RunResult r = runRaylab({"view", lectureScene(), "--size", "1920x1080", "--no-panel", "--script", "drag.txt",
+                             "--stats"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    int movingFrames = 0, w = 0, h = 0;
+    double movingMs = 0, fps = 0, scale = 0, overhead = 0, stillMs = 0;
+    const std::size_t moving = r.out.find("raylab view: moving:");
+    ASSERT_NE(moving, std::string::npos) << r.out;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + moving,
+                          "raylab view: moving: %d frames, median %lf ms per frame (%lf fps), render scale down to "
+                          "%lf (%dx%d), overhead %lf ms",
+                          &movingFrames, &movingMs, &fps, &scale, &w, &h, &overhead),
+              7)
+        << r.out;
+    const std::size_t still = r.out.find("raylab view: still:");
+    ASSERT_NE(still, std::string::npos) << r.out;
+    int stillRenders = 0;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + still, "raylab view: still: %d renders at full resolution, median %lf ms",
+                          &stillRenders, &stillMs),
+              2)
+        << r.out;
+    std::printf("drag at 1920x1080: %d frames, median %.1f ms (%.1f fps), scale down to %.3f (%dx%d), overhead "
+                "%.1f ms; still render %.0f ms\n",
+                movingFrames, movingMs, fps, scale, w, h, overhead, stillMs);
+    EXPECT_GE(movingFrames, 25) << "the drag's frames are rendered and timed";
+    EXPECT_LT(scale, 1.0) << "while moving, below full resolution";
+    EXPECT_GE(h, 36) << "never fewer than AdaptiveResolution::kMinRows";
+    const double budget = 1000.0 / 30.0;
+    if (stillMs > 16 * budget) EXPECT_LT(scale, 0.25) << "a quarter width would not keep 30 fps";
+}
+
 // ---- recording ---------------------------------------------------------------------------
 
 // `raylab record --orbit 90`: the first frame is the scene's camera, the last
