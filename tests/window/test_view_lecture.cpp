@@ -788,7 +788,8 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
 // pixel in the Blinn-Phong model.
 TEST_F(LectureTest, SideBySideAsksTheHalfThePixelIsIn) {
     const int half = 480, x = 268, y = 122;  // the blue sphere in a 480x270 picture, as above
-    writeText(dir / "script.txt", "wait 1\npick " + std::to_string(half + x) + " " + std::to_string(y) + "\nwait 1\nquit\n");
+    writeText(dir / "script.txt", "wait 1\nscreenshot before.png\npick " + std::to_string(half + x) + " " +
+                                      std::to_string(y) + "\nwait 1\nscreenshot picked.png\nquit\n");
     RunResult r = runRaylab({"view", lectureScene(), "--size", "960x270", "--no-panel", "--no-captions", "--side-by-side",
                              "--compare-model", "blinn-phong", "--script", "script.txt"},
                             env, dir.path());
@@ -804,6 +805,15 @@ TEST_F(LectureTest, SideBySideAsksTheHalfThePixelIsIn) {
     expectRelative(printed, ref::traceRadiance(blinn, basis.position, ray), "radiance of the Blinn-Phong half");
     const glm::dvec3 pbr = ref::traceRadiance(loadSceneFile(lectureScene()).scene, basis.position, ray);
     EXPECT_GT(glm::length(printed - pbr), 1e-3 * glm::length(pbr)) << "not the left half's model";
+    // The rays start at the asked pixel of the right half (projected with
+    // that half's camera): pixels change around it.
+    const DisplayImage before = shot("before.png"), picked = shot("picked.png");
+    int near = 0;
+    for (int yy = y - 6; yy <= y + 6; ++yy)
+        for (int xx = half + x - 6; xx <= half + x + 6; ++xx)
+            for (int c = 0; c < 3; ++c) near += std::abs(int(picked.at(xx, yy)[c]) - int(before.at(xx, yy)[c])) > 40;
+    EXPECT_GT(near, 10) << "the rays are drawn from the asked pixel of the right half";
+    maybeUpdateDocImage(dir / "picked.png", "side-by-side-pick.png");
 }
 
 // Ctrl+click through the X server asks the pixel (and leaves the camera alone).

@@ -229,6 +229,32 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
         << "exercise 09 still the stub: the generic program with its first-hit fallback";
 }
 
+// The command docs/performance.md gives for the live view's program, run as
+// written (smaller and shorter: --size, --frames and --warmup appended): one
+// table with both programs for the picture and a term view, and the live
+// picture equal to the generic one's.
+TEST(ViewBench, TheDocumentedCommandComparesBothProgramsInOneRun) {
+    const std::string doc = readText(sourceRoot() / "docs" / "performance.md");
+    const std::size_t at = doc.find("./raylab bench --sweeps view");
+    ASSERT_NE(at, std::string::npos) << "docs/performance.md gives the command";
+    std::string command = doc.substr(at, doc.find_first_of("#\n", at) - at);
+    while (!command.empty() && command.back() == ' ') command.pop_back();
+    const rl::test::CommandResult r =
+        rl::test::runShell("cd " + sourceRoot().string() + " && " + command + " --size 96x54 --frames 1 --warmup 1");
+    ASSERT_EQ(r.status, 0) << command << "\n" << r.output;
+    for (const char* row : {"generic  final", "live     final", "generic  d", "live     d", "view final: live",
+                            "view d: live"})
+        EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
+    // The live picture agrees with the generic one: max LSB (the last column) small.
+    const std::size_t live = r.output.find("live     final");
+    const std::string line = r.output.substr(live, r.output.find('\n', live) - live);
+    const int maxLsb = std::atoi(line.substr(line.find_last_of(' ') + 1).c_str());
+    // 1 LSB: the same model in float32; the programs differ only in loop
+    // unrolling and folded constants, which may round a value across an
+    // 8-bit boundary.
+    EXPECT_LE(maxLsb, 1) << line;
+}
+
 TEST(ImplementationFolder, PartialFolderTakesTheRestFromSolutions) {
     TempDir dir;
     fs::copy(exercisesDir() / "05-ggx.glsl", dir / "05-ggx.glsl");
