@@ -10,6 +10,7 @@
 #include "core/message.h"
 #include "core/file_io.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -64,6 +65,10 @@ void runBenchCommand(const BenchCommandOptions& o) {
     // "view" (bench/view_bench.h) is its own table: the live view's programs
     // against the generic one at lecture size, not a row of the error sweep.
     const bool viewSweep = options.sweeps.erase("view") > 0;
+    for (const std::string& group : options.sweeps)  // before minutes of the view sweep
+        if (std::find(bench::sweepNames().begin(), bench::sweepNames().end(), group) == bench::sweepNames().end())
+            throw Error("--sweeps: unknown group " + quotedValue(group) +
+                        " (expected modes, bounces, spp, resolution, models, strategies or view)");
     if (viewSweep) {
         bench::Options view = options;
         if (!o.sizeGiven) {

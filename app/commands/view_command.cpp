@@ -1,7 +1,7 @@
 // raylab view [SCENE] [--impl DIR] [--compare DIR] [--compare-model blinn-phong|pbr]
 //             [--size WxH] [--view NAME]
 //             [--frames N [--screenshot out.png]] [--script FILE] [--stats]
-//             [--fullscreen] [--no-panel] [--no-captions] [--ui-scale S] [--generic]
+//             [--fullscreen] [--no-panel] [--no-captions] [--ui-scale S] [--panel-strip] [--generic]
 // The live window (app/view/view_app.h); compiled only with RAYLAB_WITH_GLFW
 // (main.cpp says so otherwise). docs/lecture.md is the user's guide.
 #include "commands/commands.h"
@@ -37,6 +37,8 @@ void addViewCommand(CLI::App& app) {
     cmd->add_flag("--stats", options->stats, "Print the median frame time at exit");
     cmd->add_flag("--fullscreen", options->fullscreen, "Start fullscreen");
     cmd->add_flag("--no-panel", options->hidePanel, "Start with the panel hidden (Tab shows it)");
+    cmd->add_flag("--panel-strip", options->panelStrip,
+                  "Start with the panel folded to a narrow strip of view buttons (presenter layout; >> unfolds)");
     cmd->add_flag("--side-by-side", options->sideBySide,
                   "With --compare or --compare-model: two full pictures side by side (X toggles)");
     cmd->add_flag("--no-captions", options->hideCaptions,

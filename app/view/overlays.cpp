@@ -49,13 +49,34 @@ void drawHelpOverlay(bool& open) {
         for (const MouseBinding& m : mouseBindings()) rows.push_back({m.input, m.what});
         for (const KeyBinding& k : keyBindings())
             if (*k.what) rows.push_back({k.keys, k.what});
-        // As many column pairs as it takes to fit the window's height (a
-        // projector at UI scale 2 or 3 has room for ~20 lines): the help
-        // never scrolls where it can spread sideways.
-        const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
-        const float available = viewport->Size.y * kMaxHelpSize - 4 * rowHeight;  // title and padding
-        const int perColumn = std::max(1, int(available / rowHeight));
-        const int groups = std::clamp((int(rows.size()) + perColumn - 1) / perColumn, 1, 3);
+        // As many column pairs (up to 3) as it takes to fit the window: the
+        // help never scrolls where it can spread sideways. Where no count of
+        // pairs fits at the UI scale (at 2 on 1920x1080 three pairs are
+        // wider than the window), the text shrinks until one does: the help
+        // is for the lecturer, who reads it close up.
+        ImGui::SetWindowFontScale(1.0f);  // measured at the UI scale (the window keeps last frame's factor)
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
+        const float availableHeight = viewport->Size.y * kMaxHelpSize - 4 * lineHeight;  // title and padding
+        const float availableWidth = viewport->Size.x * kMaxHelpSize - 2 * style.WindowPadding.x;
+        float keyWidth = 0, whatWidth = 0;
+        for (const auto& row : rows) {
+            keyWidth = std::max(keyWidth, ImGui::CalcTextSize(row.first).x);
+            whatWidth = std::max(whatWidth, ImGui::CalcTextSize(row.second).x);
+        }
+        const float pairWidth = keyWidth + whatWidth + 2 * (2 * style.CellPadding.x + style.ItemSpacing.x);
+        int groups = 1;
+        float fontScale = 0;
+        for (int g = 1; g <= 3; ++g) {
+            const int perColumn = (int(rows.size()) + g - 1) / g;
+            const float fits = std::min({1.0f, availableWidth / (float(g) * pairWidth),
+                                         availableHeight / (float(perColumn) * lineHeight)});
+            if (fits > fontScale + 1e-3f) {
+                fontScale = fits;
+                groups = g;
+            }
+        }
+        ImGui::SetWindowFontScale(std::max(fontScale, 0.5f));  // below half a line, scrolling is better than shrinking
         const int perGroup = (int(rows.size()) + groups - 1) / groups;
         if (ImGui::BeginTable("##help", 2 * groups, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_PadOuterX)) {
             for (int r = 0; r < perGroup; ++r) {

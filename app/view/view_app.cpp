@@ -139,6 +139,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     state_.wipe = sides_.size() == 2;
     state_.savePath = defaultSavePath(scene_.path());  // never the course file itself
     state_.showPanel = !options_.hidePanel;
+    state_.panelStrip = options_.panelStrip;
     state_.showCaptions = !options_.hideCaptions;
     state_.sideBySide = options_.sideBySide && sides_.size() == 2;
     framesLeft_ = options_.frames;

@@ -18,6 +18,7 @@ struct ViewOptions {
     bool stats = false;          // print the median frame time at exit (always with --frames)
     bool fullscreen = false;     // start fullscreen
     bool hidePanel = false;      // start with the panel hidden (a clean picture)
+    bool panelStrip = false;     // start with the panel folded to the presenter's strip
     bool sideBySide = false;     // start with two full pictures side by side (needs --compare or --compare-model)
     bool hideCaptions = false;   // start without the caption and colour bar on the picture
     float uiScale = 0;           // 0 = the monitor's content scale

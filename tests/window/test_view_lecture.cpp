@@ -611,6 +611,45 @@ TEST_F(LectureTest, SavingWritesOnlyWhatChanged) {
     EXPECT_LT(glm::length(c.up - predicted.camera().up), 1e-15);
 }
 
+// The presenter layout at 1920x1080, UI scale 2: the panel folded to the
+// strip leaves the picture right of it uncovered; the help (H) spreads over
+// column pairs, centred, inside the window.
+TEST(PresenterLayout, StripLeavesThePictureAndTheHelpSpreadsInColumns) {
+    Xvfb x(1920, 1080);
+    TempDir dir;
+    const auto env = windowEnv(x);
+    // The window first: a screenshot's toast ("saved ...") would be in the next one.
+    writeText(dir / "script.txt", "wait 2\nscreenshot strip.png ui\nscreenshot picture.png\nkey H\nwait 2\n"
+                                  "screenshot help.png ui\nquit\n");
+    RunResult r = runRaylab({"view", lectureScene(), "--size", "1920x1080", "--ui-scale", "2", "--panel-strip",
+                             "--no-captions", "--script", "script.txt"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const DisplayImage picture = readPng((dir / "picture.png").string()), strip = readPng((dir / "strip.png").string()),
+                       help = readPng((dir / "help.png").string());
+    // The strip: within the left tenth; everything right of it is the picture.
+    EXPECT_EQ(comparePictures(columns(strip, 192, 1920), columns(picture, 192, 1920)).maxLsb, 0)
+        << "the strip covers nothing right of the left tenth";
+    EXPECT_GT(comparePictures(columns(strip, 0, 192), columns(picture, 0, 192)).offFraction, 0.02) << "the strip is drawn";
+    // The help: where it differs from the strip screenshot (the toast of
+    // the picture's screenshot at the top right aside), a box centred in
+    // the window, inside it, wider than tall (column pairs side by side).
+    int x0 = 1920, x1 = 0, y0 = 1080, y1 = 0;
+    for (int yy = 0; yy < 1080; ++yy)
+        for (int xx = 0; xx < 1920; ++xx)  // the strip is in both; the toast's corner is left out
+            if ((yy > 200 || xx < 1300) && std::abs(int(help.at(xx, yy)[0]) - int(strip.at(xx, yy)[0])) > 24) {
+                x0 = std::min(x0, xx), x1 = std::max(x1, xx), y0 = std::min(y0, yy), y1 = std::max(y1, yy);
+            }
+    ASSERT_LT(x0, x1) << "no help drawn";
+    EXPECT_NEAR(0.5 * (x0 + x1), 960, 40) << "centred";
+    EXPECT_GT(x0, 0);
+    EXPECT_LT(x1, 1919) << "inside the window: no column past its right edge";
+    EXPECT_GT(y0, 0);
+    EXPECT_LT(y1, 1079) << "inside the window: no row below its edge";
+    EXPECT_GT(x1 - x0, y1 - y0) << "spread over columns, wider than tall";
+    maybeUpdateDocImage(dir / "help.png", "presenter-help.png");
+}
+
 // ---- dragging at lecture resolution ---------------------------------------------------------
 
 // A scripted drag across a 1920x1080 window: the view's own frame timer
