@@ -647,6 +647,11 @@ TEST(PresenterLayout, StripLeavesThePictureAndTheHelpSpreadsInColumns) {
     EXPECT_GT(y0, 0);
     EXPECT_LT(y1, 1079) << "inside the window: no row below its edge";
     EXPECT_GT(x1 - x0, y1 - y0) << "spread over columns, wider than tall";
+    // The help's box sizes itself to its content up to 95% of the window
+    // (overlays.cpp, kMaxHelpSize): a box at that limit has content it
+    // clips. Below it on both axes, every column and row is shown.
+    EXPECT_LT(x1 - x0 + 1, 0.95 * 1920 - 4) << "the help is as wide as it may be: columns cut off";
+    EXPECT_LT(y1 - y0 + 1, 0.95 * 1080 - 4) << "the help is as tall as it may be: rows cut off";
     maybeUpdateDocImage(dir / "help.png", "presenter-help.png");
 }
 
