@@ -43,6 +43,15 @@ void glGetQueryObjectiv(GLuint, GLenum, GLint* value) { *value = 0; }
 void glGetQueryObjectui64v(GLuint, GLenum, GLuint64* value) { *value = 0; }
 }
 
+// What actually draws (SwiftShader, Mesa's llvmpipe through ANGLE, a GPU):
+// WebGL's GL_RENDERER says only "WebKit WebGL".
+EM_JS(void, rl_web_unmasked_renderer, (char* out, int size), {
+    var ext = GLctx.getExtension('WEBGL_debug_renderer_info');
+    var text = ext ? GLctx.getParameter(ext.UNMASKED_VENDOR_WEBGL) + ' | ' + GLctx.getParameter(ext.UNMASKED_RENDERER_WEBGL)
+                   : 'renderer not disclosed';
+    stringToUTF8(text, out, size);
+});
+
 namespace rl {
 
 Backend parseBackend(const std::string& name) {
@@ -77,7 +86,9 @@ std::string webGlDescription() {
         const GLubyte* s = gl::GetString(name);
         return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
     };
-    return "WebGL2 | " + str(GL_VENDOR) + " | " + str(GL_RENDERER) + " | " + str(GL_VERSION);
+    char renderer[256] = "";
+    rl_web_unmasked_renderer(renderer, int(sizeof renderer));
+    return "WebGL2 | " + std::string(renderer) + " | " + str(GL_VERSION);
 }
 
 }  // namespace
