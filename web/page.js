@@ -164,7 +164,7 @@ async function check(numbers) {
   const summary = passed + ' of ' + reports.length + ' exercises pass' +
       (togetherOk ? '' : '; the files do not compile together') + ' (' + seconds + ' s)\n';
   $('check-text').textContent += summary;
-  setStatus(passed + ' of ' + reports.length + ' pass · ' + state.context);
+  setStatus(passed + ' of ' + reports.length + ' pass');
   return {reports, together, text: $('check-text').textContent};
 }
 
@@ -300,7 +300,8 @@ async function start() {
   $('reset-camera').onclick = () => { painter.call('trackball', {action: 'reset'}); drawLive(); };
   wireTrackball();
   await setScene();
-  setStatus('ready · ' + state.context);
+  setStatus('ready');
+  $('status').title = state.context;  // which WebGL2 draws: a GPU, SwiftShader, Mesa
   document.body.dataset.ready = 'true';
 }
 

@@ -109,7 +109,7 @@ const cases = {
       expect(r.status === 'NOT STARTED', r.exercise + ': ' + r.status + ' ' + r.message);
       expect(r.hint === 'start with the handout: docs/exercises/' + r.exercise + '.md', r.exercise + ': hint ' + r.hint);
     }
-    const native = nativeCheck(5, path.join(root, 'build-web/generated/shipped-stubs/05-ggx.glsl'));
+    const native = nativeCheck(5, path.join(path.dirname(pagePath), 'generated/shipped-stubs/05-ggx.glsl'));
     expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint,
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
