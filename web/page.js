@@ -300,7 +300,8 @@ async function start() {
   $('reset-camera').onclick = () => { painter.call('trackball', {action: 'reset'}); drawLive(); };
   wireTrackball();
   await setScene();
-  setStatus('ready');
+  // Without WebGL2 the editor and the download still work; say why nothing else does.
+  setStatus(/^no context/.test(state.context) ? state.context : 'ready');
   $('status').title = state.context;  // which WebGL2 draws: a GPU, SwiftShader, Mesa
   document.body.dataset.ready = 'true';
 }

@@ -123,6 +123,7 @@ const cases = {
       const web = (await checkInPage(page, [number])).reports[0];
       await setFiles(page, {[name]: solutions[name]});
       const native = nativeCheck(number, file);
+      console.log(mutant + ': browser ' + web.status + ', native ' + native.status + '; hint: ' + firstLine(web.hint));
       expect(web.status !== 'PASS', mutant + ': passes in the browser');
       expect(web.status === native.status, mutant + ': browser ' + web.status + ', native ' + native.status);
       expect(firstLine(web.hint) === firstLine(native.hint),
@@ -143,6 +144,7 @@ const cases = {
     const native = nativeCheck(7, path.join(dir, name));
     fs.rmSync(dir, {recursive: true, force: true});
     const where = name + ':' + (at + 1) + ':';
+    console.log('browser: ' + web.message + '\nnative:  ' + native.message);
     expect(web.status === 'COMPILE ERROR', 'browser: ' + web.status + ' ' + web.message);
     expect(web.message.startsWith('exercises/' + where), 'browser message: ' + web.message);
     expect(native.status === 'COMPILE ERROR' && native.message.includes(where), 'native message: ' + native.message);
@@ -164,7 +166,7 @@ const cases = {
     await download.saveAs(path.join(work, 'submissions', 'alice.zip'));
     const grade = spawnSync(raylab, ['grade', path.join(work, 'submissions'), '-o', path.join(work, 'out')],
                             {cwd: root, encoding: 'utf8'});
-    const results = JSON.parse(fs.readFileSync(path.join(work, 'out', 'alice', 'results.json'), 'utf8'));
+    const results = JSON.parse(fs.readFileSync(path.join(work, 'out', 'alice', 'grade.json'), 'utf8'));
     const status = (id) => (results.exercises || []).find((e) => e.exercise === id);
     expect(status('05-ggx') && status('05-ggx').status === 'PASS', 'graded 05-ggx: ' + JSON.stringify(status('05-ggx')) + grade.stderr);
     expect(status('03-lambert') && status('03-lambert').status === 'PASS', 'graded 03-lambert: ' + JSON.stringify(status('03-lambert')));
