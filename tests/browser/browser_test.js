@@ -48,6 +48,11 @@ function chromiumArgs(profile) {
 async function openPage(context) {
   const page = context.pages()[0] || await context.newPage();
   page.on('pageerror', (e) => failures.push('page error: ' + e.message));
+  // The page's Content-Security-Policy refuses the network before a request
+  // is made; the refusal is logged, and counts as asking.
+  page.on('console', (m) => {
+    if (/Content Security Policy/i.test(m.text())) failures.push('the page tried the network: ' + m.text());
+  });
   await page.route('**/*', (route) => {
     const url = route.request().url();
     if (/^(file|data|blob):/.test(url)) return route.continue();
@@ -73,8 +78,9 @@ const checkInPage = (page, numbers) => page.evaluate((numbers) => window.raylab.
 // The native checker on one exercise file: its report as JSON.
 function nativeCheck(number, file) {
   const out = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-native-'));
-  spawnSync(raylab, ['check', '--exercise', String(number), '--file', file, '--json', path.join(out, 'r.json'),
-                     '--output', path.join(out, 'check-output')], {cwd: root, encoding: 'utf8'});
+  const run = spawnSync(raylab, ['check', '--exercise', String(number), '--file', file, '--json', path.join(out, 'r.json'),
+                                 '--output', path.join(out, 'check-output')], {cwd: root, encoding: 'utf8'});
+  if (!fs.existsSync(path.join(out, 'r.json'))) throw new Error('native raylab check wrote no report: ' + run.stderr);
   const report = JSON.parse(fs.readFileSync(path.join(out, 'r.json'), 'utf8')).exercises[0];
   fs.rmSync(out, {recursive: true, force: true});
   return report;
@@ -109,7 +115,7 @@ const cases = {
       expect(r.status === 'NOT STARTED', r.exercise + ': ' + r.status + ' ' + r.message);
       expect(r.hint === 'start with the handout: docs/exercises/' + r.exercise + '.md', r.exercise + ': hint ' + r.hint);
     }
-    const native = nativeCheck(5, path.join(path.dirname(pagePath), 'generated/shipped-stubs/05-ggx.glsl'));
+    const native = nativeCheck(5, path.join(root, 'build-web/generated/shipped-stubs/05-ggx.glsl'));  // build-web.sh's snapshot
     expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint,
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
@@ -126,8 +132,14 @@ const cases = {
       console.log(mutant + ': browser ' + web.status + ', native ' + native.status + '; hint: ' + firstLine(web.hint));
       expect(web.status !== 'PASS', mutant + ': passes in the browser');
       expect(web.status === native.status, mutant + ': browser ' + web.status + ', native ' + native.status);
-      expect(firstLine(web.hint) === firstLine(native.hint),
-             mutant + ': hints differ:\n  browser: ' + firstLine(web.hint) + '\n  native:  ' + firstLine(native.hint));
+      const sameHint = firstLine(web.hint) === firstLine(native.hint);
+      if (KNOWN_SWIFTSHADER_FAILURES.includes(mutant.split('--')[0])) {
+        // The mistake's recogniser needs every case within the tolerance SwiftShader's tan misses.
+        expect(!sameHint, mutant + ': the hint matches the native one on SwiftShader now: ' +
+                          'remove the exercise from KNOWN_SWIFTSHADER_FAILURES');
+      } else {
+        expect(sameHint, mutant + ': hints differ:\n  browser: ' + firstLine(web.hint) + '\n  native:  ' + firstLine(native.hint));
+      }
     }
   },
   // A compile error names the student's file and line, as natively.
