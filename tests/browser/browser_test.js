@@ -114,9 +114,10 @@ const cases = {
     for (const r of reports) {
       expect(r.status === 'NOT STARTED', r.exercise + ': ' + r.status + ' ' + r.message);
       expect(r.hint === 'start with the handout: docs/exercises/' + r.exercise + '.md', r.exercise + ': hint ' + r.hint);
+      expect(r.message === 'the file is the unchanged stub', r.exercise + ': ' + r.message);
     }
     const native = nativeCheck(5, path.join(root, 'build-web/generated/shipped-stubs/05-ggx.glsl'));  // build-web.sh's snapshot
-    expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint,
+    expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint && native.message === reports[4].message,
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
   // Mutants: the verdict and the first hint line the native checker gives.
