@@ -26,6 +26,7 @@
 
 #include <memory>
 #include <optional>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace rl::web {
@@ -190,6 +191,9 @@ std::string exerciseList() {
 }  // namespace rl::web
 
 int main() {
+    // Emscripten starts with umask 0777: every file raylab writes (the check's
+    // pictures) would get mode 000 and the page could not read it back.
+    umask(022);
     // The working folder is the embedded repository: relative paths read as natively.
     if (chdir(rl::sourceRoot().c_str()) != 0) return 1;
     return 0;

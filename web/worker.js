@@ -16,10 +16,12 @@ function writeFiles(files) {
   }
 }
 
+// A file the checker wrote, by the path its report names (relative to /raylab).
 function readIfThere(path) {
   try {
-    return raylab.FS.readFile('/raylab/' + path);
+    return raylab.FS.readFile(path);
   } catch (e) {
+    console.warn('raylab-web: cannot read ' + path + ' in ' + raylab.FS.cwd() + ': ' + e);
     return null;
   }
 }
@@ -60,7 +62,7 @@ const ops = {
   // As `raylab check --exercise N...`: each exercise's report, with its pictures.
   check(msg, post) {
     writeFiles(msg.files);
-    removeTree('/raylab/check-output');  // this check's pictures only
+    removeTree('check-output');  // this check's pictures only
     const reports = [];
     for (const number of msg.exercises) {
       const report = JSON.parse(raylab.checkOne(number));

@@ -128,6 +128,14 @@ const cases = {
       const name = mutant.split('--')[0] + '.glsl';
       await setFiles(page, {[name]: fs.readFileSync(file, 'utf8')});
       const web = (await checkInPage(page, [number])).reports[0];
+      // Each failing image's expected, got and difference pictures, shown as the native checker writes them.
+      const failing = web.images.filter((i) => !i.passed).length;
+      const shown = await page.evaluate(async () => {
+        const images = [...document.querySelectorAll('#check-images img')];
+        await Promise.all(images.map((i) => i.decode().catch(() => {})));
+        return images.filter((i) => i.naturalWidth > 0).length;
+      });
+      expect(shown === 3 * failing, mutant + ': ' + shown + ' pictures shown for ' + failing + ' failing images');
       await setFiles(page, {[name]: solutions[name]});
       const native = nativeCheck(number, file);
       console.log(mutant + ': browser ' + web.status + ', native ' + native.status + '; hint: ' + firstLine(web.hint));
