@@ -22,11 +22,12 @@
 // asks for a context per exercise. Returns the emscripten context handle, or
 // 0 with the reason in the console (and `why`).
 EM_JS(int, rl_web_create_webgl2, (), {
+    // A Worker has no document: without OffscreenCanvas (Safari before 16.4) there is no context.
     var canvas = (typeof OffscreenCanvas !== 'undefined') ? new OffscreenCanvas(1, 1)
-                                                          : document.createElement('canvas');
+               : (typeof document !== 'undefined') ? document.createElement('canvas') : null;
     // No antialiasing, depth or alpha: raylab renders into its own RGBA32F framebuffers.
-    var ctx = canvas.getContext('webgl2', {antialias: false, depth: false, stencil: false, alpha: false,
-                                           preserveDrawingBuffer: false, powerPreference: 'high-performance'});
+    var ctx = canvas && canvas.getContext('webgl2', {antialias: false, depth: false, stencil: false, alpha: false,
+                                                     preserveDrawingBuffer: false, powerPreference: 'high-performance'});
     if (!ctx) return 0;
     // Rendering into RGBA32F (the display and radiance targets, the probe results) needs it.
     if (!ctx.getExtension('EXT_color_buffer_float')) return -1;
@@ -98,7 +99,8 @@ std::unique_ptr<GlContext> createHeadlessContext(Backend) {
     static std::string description;
     if (handle <= 0) {
         handle = rl_web_create_webgl2();
-        if (handle == 0) throw Error("this browser gives no WebGL2 context (raylab needs WebGL2)");
+        if (handle == 0)
+            throw Error("this browser gives no WebGL2 context in a Worker (raylab needs WebGL2 and OffscreenCanvas)");
         if (handle < 0) {
             handle = 0;
             throw Error("this browser's WebGL2 cannot render into float32 targets (EXT_color_buffer_float)");

@@ -101,7 +101,7 @@ const cases = {
       }
     }
     expect(reports.length === 10, 'expected 10 reports, got ' + reports.length);
-    if (KNOWN_SWIFTSHADER_FAILURES.length === 0) expect(together && together.status === 'PASS', 'the ten files together: ' + JSON.stringify(together));
+    expect(together && together.status === 'PASS', 'the ten files together: ' + JSON.stringify(together));
     // The live picture (lecture scene, 320x240, every view compiled in) against the CPU reference,
     // with the budget of the checker's images (checks/checker.cpp).
     const diff = await page.evaluate(() => window.raylab.compareLive());
