@@ -42,8 +42,9 @@ std::vector<std::array<float, 4>> runProbe(const ShaderProgram& program, const P
     frame.height = height;
     setFrameUniforms(program, s, frame);
     // The block is bound even for a probe without the scene (then an empty
-    // one): WebGL refuses a draw while an active uniform block has no buffer
-    // (the browser edition, web/), where desktop GL reads zeros.
+    // one): the probe shader keeps SceneBlock active, and WebGL refuses a draw
+    // while an active uniform block has no buffer (the browser edition, web/),
+    // which desktop drivers let pass.
     SceneUniformBlock block;
     block.upload(s, framePosition(frame));  // probe inputs are in the same coordinates
     block.bind(program);
