@@ -52,22 +52,17 @@ rm -f "$OUT/generated/root_directory.h.new"
 cmake -DEXERCISES_DIR="$ROOT/exercises" -DSNAPSHOT_DIR="$OUT/generated/shipped-stubs" \
       -DOUTPUT="$OUT/generated/shipped_stubs.cpp" -P cmake/shipped_stubs.cmake
 
-# The native library's files the browser edition uses, unchanged.
-SOURCES="
-app/core/image.cpp app/core/file_io.cpp app/core/message.cpp app/core/json_text.cpp app/core/paths.cpp
-app/core/scene_io.cpp app/core/default_scene.cpp app/core/scene_transform.cpp app/core/float_range.cpp
-app/core/isolated.cpp
-app/gl/gl_api.cpp
-app/shader/source_assembler.cpp app/shader/driver_log.cpp app/shader/program.cpp app/shader/glsl_scan.cpp
-app/shader/source_checks.cpp app/shader/shader_library.cpp
-app/render/gl_renderer.cpp app/render/scene_uniforms.cpp app/render/shader_config.cpp app/render/model_defines.cpp
-app/render/specialisation.cpp app/render/bounce_cutoff.cpp
-app/reference/cpu_reference.cpp app/reference/pixel_breakdown.cpp app/reference/brdf_reference.cpp
-app/camera/trackball.cpp
-app/checks/exercise_registry.cpp app/checks/probe_cases.cpp app/checks/probe_runner.cpp app/checks/checker.cpp
-"
-# The loop guards (issue 15, another branch): compiled in once they exist.
-for optional in app/shader/loop_guard.cpp; do [ -f "$optional" ] && SOURCES="$SOURCES $optional"; done
+# The native library's files (raylab_core in CMakeLists.txt), unchanged, so a
+# file added there comes along; left out: what the browser cannot have or
+# does not need (grading needs libzip, the commands CLI11 and a process,
+# bench GPU timers, view ImGui) and the native GL contexts.
+SOURCES=$(awk '/^add_library\(raylab_core STATIC/ { inside = 1; next } inside && /^\)/ { inside = 0 } inside { print $1 }' \
+          CMakeLists.txt | grep '^app/' |
+          grep -v -E '^app/(grading|commands|bench|view)/|^app/gl/context(_egl|_osmesa|_glfw)?\.cpp$' || true)
+if [ -z "$SOURCES" ]; then
+    echo "scripts/build-web.sh: found no raylab_core sources in CMakeLists.txt" >&2
+    exit 1
+fi
 # The browser's own: the WebGL2 context (instead of gl/context.cpp and
 # context_egl.cpp) and the entry points.
 SOURCES="$SOURCES web/context_webgl.cpp web/raylab_web.cpp $OUT/generated/shipped_stubs.cpp"
