@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing (including Xvfb and
 # Chromium for the window and report tests, Slurm and MUNGE for the Slurm
-# recipe's test), builds everything (the program and every test), runs every
-# CTest entry, then builds raylab, the unit and the fuzz tests again with
+# recipe's test, emscripten and web/'s npm packages for the browser edition's
+# tests, label browser, which build the page themselves), builds everything
+# (the program and every test), runs every CTest entry, then builds raylab, the unit and the fuzz tests again with
 # AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/) and runs those
 # two labels there.
 # Extra arguments go to ctest, e.g. scripts/test.sh -L unit (and then the
 # sanitizer pass is left out: a subset is a quick check, not CI).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh --window --slurm
+bash scripts/setup.sh --window --slurm --web
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$(nproc)"
 ctest --preset default -j "$(nproc)" "$@"

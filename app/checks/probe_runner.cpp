@@ -35,18 +35,19 @@ std::vector<std::array<float, 4>> runProbe(const ShaderProgram& program, const P
     const GLenum buffers[1] = {GL_COLOR_ATTACHMENT0};
     gl::DrawBuffers(1, buffers);
 
-    std::unique_ptr<SceneUniformBlock> block;
     Scene empty;
     const Scene& s = scene ? *scene : empty;
     FrameSettings frame = frameFromScene(s);
     frame.width = width;
     frame.height = height;
     setFrameUniforms(program, s, frame);
-    if (scene) {
-        block = std::make_unique<SceneUniformBlock>();
-        block->upload(*scene, framePosition(frame));  // probe inputs are in the same coordinates
-        block->bind(program);
-    }
+    // The block is bound even for a probe without the scene (then an empty
+    // one): the probe shader keeps SceneBlock active, and WebGL refuses a draw
+    // while an active uniform block has no buffer (the browser edition, web/),
+    // which desktop drivers let pass.
+    SceneUniformBlock block;
+    block.upload(s, framePosition(frame));  // probe inputs are in the same coordinates
+    block.bind(program);
     gl::ActiveTexture(GL_TEXTURE0);
     gl::BindTexture(GL_TEXTURE_2D, input);
     gl::Uniform1i(program.uniform("u_probeInputs"), 0);

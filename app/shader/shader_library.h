@@ -35,13 +35,20 @@ IncludeResolver makeIncludeResolver(const Implementation& impl);
 // build), or GLSL ES 3.00 (WebGL2's language, and the strict rules of
 // stricter drivers), whose prelude also sets highp precision.
 enum class GlslDialect { Desktop330, Es300 };
+// The dialect of this build: the browser edition (web/, built with
+// emscripten) speaks WebGL2's GLSL ES 3.00, the native build desktop 3.30.
+#ifdef __EMSCRIPTEN__
+inline constexpr GlslDialect kHostDialect = GlslDialect::Es300;
+#else
+inline constexpr GlslDialect kHostDialect = GlslDialect::Desktop330;
+#endif
 
 // The #version line and defines every raylab shader starts with.
-std::string shaderPrelude(const ShaderDefines& defines, GlslDialect dialect = GlslDialect::Desktop330);
+std::string shaderPrelude(const ShaderDefines& defines, GlslDialect dialect = kHostDialect);
 
 // Assembles a framework entry point (e.g. "main.frag") with an implementation.
 AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines,
-                               GlslDialect dialect = GlslDialect::Desktop330);
+                               GlslDialect dialect = kHostDialect);
 
 // The full-screen ray tracer: fullscreen.vert + main.frag. Throws ShaderError
 // (compile/link, mapped to file:line) or rl::Error (missing file, bad include).

@@ -1,0 +1,230 @@
+// The browser edition (build-web/raylab-web.html) in headless Chromium, one
+// case a run, against the native checker (./raylab check) run in the same test.
+//   node tests/browser/browser_test.js BACKEND CASE PAGE RAYLAB
+// BACKEND: swiftshader (Chromium's CPU GL) | mesa (Mesa through ANGLE's GL-EGL)
+// CASE:    solutions | stubs | mutants | compile-error | storage | runaway
+// Exit 0 when every assertion holds; each failure is one line on stderr.
+// No network: every request other than file:, data: and blob: fails the test.
+'use strict';
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const {execFileSync, spawnSync} = require('child_process');
+
+const root = path.resolve(__dirname, '../..');
+const {chromium} = require(path.join(root, 'web/node_modules/playwright-core'));
+const [backend, testCase, pagePath, raylab] = process.argv.slice(2);
+
+const failures = [];
+const expect = (ok, what) => { if (!ok) failures.push(what); };
+const readDir = (dir) => Object.fromEntries(fs.readdirSync(dir).filter((f) => f.endsWith('.glsl'))
+    .map((f) => [f, fs.readFileSync(path.join(dir, f), 'utf8')]));
+const solutions = readDir(path.join(root, 'solutions'));
+const firstLine = (text) => String(text || '').split('\n')[0];
+
+// SwiftShader's sin and tan are less precise than GLSL's float32 on a GPU
+// (tan 7.6e-5, sin 1.6e-4 relative, measured for issue 15), beyond the
+// 01-camera probe's tolerance: the solution fails there. Kept as a listed,
+// asserted exception until the tolerances are re-justified against the
+// precision GLSL guarantees (issue 15, "portable"): when it passes, this
+// test fails and asks for the entry to go.
+const KNOWN_SWIFTSHADER_FAILURES = backend === 'swiftshader' ? ['01-camera'] : [];
+
+// One mutant per exercise (tests/mutants/): a typical mistake each.
+const MUTANTS = [
+  '01-camera--aspect-on-y', '02-intersect--far-root-first', '03-lambert--pi-as-3.14', '04-shadows--no-offset',
+  '05-ggx--alpha-not-squared', '06-geometry--ibl-k', '07-fresnel--power-on-voh', '08-cook-torrance--missing-four',
+  '09-reflections--full-strength-bounces', '10-display--gamma-before-tonemap',
+];
+
+function chromiumArgs(profile) {
+  const args = ['--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update',
+                '--disable-sync', '--no-first-run'];  // and a fresh --user-data-dir (launchPersistentContext's profile)
+  if (backend === 'swiftshader') return args.concat(['--disable-gpu', '--enable-unsafe-swiftshader']);
+  if (backend === 'mesa') return args.concat(['--use-gl=angle', '--use-angle=gl-egl', '--ignore-gpu-blocklist']);
+  throw new Error('unknown backend ' + backend + ' (swiftshader or mesa)');
+}
+
+async function openPage(context) {
+  const page = context.pages()[0] || await context.newPage();
+  page.on('pageerror', (e) => failures.push('page error: ' + e.message));
+  // The page's Content-Security-Policy refuses the network before a request
+  // is made; the refusal is logged, and counts as asking.
+  page.on('console', (m) => {
+    if (/Content Security Policy/i.test(m.text())) failures.push('the page tried the network: ' + m.text());
+  });
+  await page.route('**/*', (route) => {
+    const url = route.request().url();
+    if (/^(file|data|blob):/.test(url)) return route.continue();
+    failures.push('the page asked the network for ' + url);
+    return route.abort();
+  });
+  await page.goto('file://' + path.resolve(pagePath));
+  await page.waitForFunction(() => document.body.dataset.ready, null, {timeout: 120000});
+  const ready = await page.evaluate(() => [document.body.dataset.ready, document.getElementById('status').textContent]);
+  if (ready[0] !== 'true') throw new Error('the page did not start: ' + ready[1]);
+  // The backend asked for is the one in use (a fallback would test something else).
+  const renderer = await page.evaluate(() => window.raylab.state.context);
+  const wanted = backend === 'swiftshader' ? /SwiftShader/i : /Mesa|llvmpipe/i;
+  if (!wanted.test(renderer)) throw new Error('not on ' + backend + ': ' + renderer);
+  return page;
+}
+
+const setFiles = (page, files) => page.evaluate((files) => {
+  for (const [name, text] of Object.entries(files)) window.raylab.setFile(name, text);
+}, files);
+const checkInPage = (page, numbers) => page.evaluate((numbers) => window.raylab.check(numbers), numbers);
+
+// The native checker on one exercise file: its report as JSON.
+function nativeCheck(number, file) {
+  const out = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-native-'));
+  const run = spawnSync(raylab, ['check', '--exercise', String(number), '--file', file, '--json', path.join(out, 'r.json'),
+                                 '--output', path.join(out, 'check-output')], {cwd: root, encoding: 'utf8'});
+  if (!fs.existsSync(path.join(out, 'r.json'))) throw new Error('native raylab check wrote no report: ' + run.stderr);
+  const report = JSON.parse(fs.readFileSync(path.join(out, 'r.json'), 'utf8')).exercises[0];
+  fs.rmSync(out, {recursive: true, force: true});
+  return report;
+}
+
+const cases = {
+  // Every solution passes, the ten compile together, the picture is the CPU reference's.
+  async solutions(page) {
+    await setFiles(page, solutions);
+    const {reports, together} = await checkInPage(page, null);
+    for (const r of reports) {
+      if (KNOWN_SWIFTSHADER_FAILURES.includes(r.exercise)) {
+        expect(r.status === 'FAIL' && r.images.every((i) => i.passed),
+               r.exercise + ': the known SwiftShader probe failure changed: ' + r.status + ' ' + r.message +
+               (r.status === 'PASS' ? ' (it passes now: remove it from KNOWN_SWIFTSHADER_FAILURES)' : ''));
+      } else {
+        expect(r.status === 'PASS', r.exercise + ': ' + r.status + ' ' + r.message);
+      }
+    }
+    expect(reports.length === 10, 'expected 10 reports, got ' + reports.length);
+    expect(together && together.status === 'PASS', 'the ten files together: ' + JSON.stringify(together));
+    // The live picture (lecture scene, 320x240, every view compiled in) against the CPU reference,
+    // with the budget of the checker's images (checks/checker.cpp).
+    const diff = await page.evaluate(() => window.raylab.compareLive());
+    expect(diff.width === 320 && diff.off_fraction <= 0.005 && diff.mean_lsb < 0.2 && diff.non_finite === 0,
+           'the live picture differs from the CPU reference: ' + JSON.stringify(diff));
+  },
+  // A fresh page: the shipped stubs, every exercise NOT STARTED with the native hint.
+  async stubs(page) {
+    const {reports} = await checkInPage(page, null);
+    for (const r of reports) {
+      expect(r.status === 'NOT STARTED', r.exercise + ': ' + r.status + ' ' + r.message);
+      expect(r.hint === 'start with the handout: docs/exercises/' + r.exercise + '.md', r.exercise + ': hint ' + r.hint);
+      expect(r.message === 'the file is the unchanged stub', r.exercise + ': ' + r.message);
+    }
+    const native = nativeCheck(5, path.join(root, 'build-web/generated/shipped-stubs/05-ggx.glsl'));  // build-web.sh's snapshot
+    expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint && native.message === reports[4].message,
+           'native on the stub: ' + native.status + ' / ' + native.hint);
+  },
+  // Mutants: the verdict and the first hint line the native checker gives.
+  async mutants(page) {
+    for (const mutant of MUTANTS) {
+      const file = path.join(root, 'tests/mutants', mutant + '.glsl');
+      const number = Number(mutant.slice(0, 2));
+      const name = mutant.split('--')[0] + '.glsl';
+      await setFiles(page, {[name]: fs.readFileSync(file, 'utf8')});
+      const web = (await checkInPage(page, [number])).reports[0];
+      // Each failing image's expected, got and difference pictures, shown as the native checker writes them.
+      const failing = web.images.filter((i) => !i.passed).length;
+      const shown = await page.evaluate(async () => {
+        const images = [...document.querySelectorAll('#check-images img')];
+        await Promise.all(images.map((i) => i.decode().catch(() => {})));
+        return images.filter((i) => i.naturalWidth > 0).length;
+      });
+      expect(shown === 3 * failing, mutant + ': ' + shown + ' pictures shown for ' + failing + ' failing images');
+      await setFiles(page, {[name]: solutions[name]});
+      const native = nativeCheck(number, file);
+      console.log(mutant + ': browser ' + web.status + ', native ' + native.status + '; hint: ' + firstLine(web.hint));
+      expect(web.status !== 'PASS', mutant + ': passes in the browser');
+      expect(web.status === native.status, mutant + ': browser ' + web.status + ', native ' + native.status);
+      const sameHint = firstLine(web.hint) === firstLine(native.hint);
+      if (KNOWN_SWIFTSHADER_FAILURES.includes(mutant.split('--')[0])) {
+        // The mistake's recogniser needs every case within the tolerance SwiftShader's tan misses.
+        expect(!sameHint, mutant + ': the hint matches the native one on SwiftShader now: ' +
+                          'remove the exercise from KNOWN_SWIFTSHADER_FAILURES');
+      } else {
+        expect(sameHint, mutant + ': hints differ:\n  browser: ' + firstLine(web.hint) + '\n  native:  ' + firstLine(native.hint));
+      }
+    }
+  },
+  // A compile error names the student's file and line, as natively.
+  async ['compile-error'](page) {
+    const name = '07-fresnel.glsl';
+    const lines = solutions[name].split('\n');
+    const at = lines.findIndex((l) => /^\s*return /.test(l));  // inside the first function
+    lines.splice(at, 0, '    float x = undeclaredValue;');
+    const broken = lines.join('\n');
+    await setFiles(page, {[name]: broken});
+    const web = (await checkInPage(page, [7])).reports[0];
+    const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-broken-'));
+    fs.writeFileSync(path.join(dir, name), broken);
+    const native = nativeCheck(7, path.join(dir, name));
+    fs.rmSync(dir, {recursive: true, force: true});
+    const where = name + ':' + (at + 1) + ':';
+    console.log('browser: ' + web.message + '\nnative:  ' + native.message);
+    expect(web.status === 'COMPILE ERROR', 'browser: ' + web.status + ' ' + web.message);
+    expect(web.message.startsWith('exercises/' + where), 'browser message: ' + web.message);
+    expect(native.status === 'COMPILE ERROR' && native.message.includes(where), 'native message: ' + native.message);
+    expect(web.hint === native.hint, 'hints differ: ' + web.hint + ' / ' + native.hint);
+    // The live picture reports it too, and keeps its last good program.
+    const live = await page.evaluate(() => window.raylab.compileLive());
+    expect(live.startsWith('exercises/' + where), 'live view: ' + firstLine(live));
+  },
+  // Files survive a reload (localStorage); the download is a zip that `raylab grade` grades.
+  async storage(page, context) {
+    await setFiles(page, {'05-ggx.glsl': solutions['05-ggx.glsl'], '03-lambert.glsl': solutions['03-lambert.glsl']});
+    await page.reload();
+    await page.waitForFunction(() => document.body.dataset.ready === 'true', null, {timeout: 120000});
+    const kept = await page.evaluate(() => window.raylab.state.files['05-ggx.glsl']);
+    expect(kept === solutions['05-ggx.glsl'], '05-ggx.glsl was not kept across a reload');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+    const work = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-grade-'));
+    fs.mkdirSync(path.join(work, 'submissions'));
+    await download.saveAs(path.join(work, 'submissions', 'alice.zip'));
+    const grade = spawnSync(raylab, ['grade', path.join(work, 'submissions'), '-o', path.join(work, 'out')],
+                            {cwd: root, encoding: 'utf8'});
+    const results = JSON.parse(fs.readFileSync(path.join(work, 'out', 'alice', 'grade.json'), 'utf8'));
+    const status = (id) => (results.exercises || []).find((e) => e.exercise === id);
+    expect(status('05-ggx') && status('05-ggx').status === 'PASS', 'graded 05-ggx: ' + JSON.stringify(status('05-ggx')) + grade.stderr);
+    expect(status('03-lambert') && status('03-lambert').status === 'PASS', 'graded 03-lambert: ' + JSON.stringify(status('03-lambert')));
+    expect(status('01-camera') && status('01-camera').status === 'NOT STARTED', 'graded 01-camera: ' + JSON.stringify(status('01-camera')));
+    fs.rmSync(work, {recursive: true, force: true});
+  },
+  // A loop that never ends: TIMEOUT (the loop guard ends it), and the page still checks afterwards.
+  async runaway(page) {
+    const name = '03-lambert.glsl';
+    const lines = solutions[name].split('\n');
+    const at = lines.findIndex((l) => /^\s*return /.test(l));
+    lines.splice(at, 0, '    float spin = 0.0;', '    for (int i = 0; i >= 0; i += 0) spin += 1.0;');
+    await setFiles(page, {[name]: lines.join('\n')});
+    const web = (await checkInPage(page, [3])).reports[0];
+    expect(web.status === 'TIMEOUT', 'runaway loop: ' + web.status + ' ' + web.message);
+    await setFiles(page, {[name]: solutions[name]});
+    const after = (await checkInPage(page, [3])).reports[0];
+    expect(after.status === 'PASS', 'after the runaway loop: ' + after.status + ' ' + after.message);
+  },
+};
+
+(async () => {
+  if (!cases[testCase]) throw new Error('unknown case ' + testCase);
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-chromium-'));
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: '/usr/bin/chromium', headless: false, ignoreDefaultArgs: ['--headless'],
+    args: chromiumArgs(profile), acceptDownloads: true});
+  try {
+    const started = Date.now();
+    const page = await openPage(context);
+    await cases[testCase](page, context);
+    console.log(backend + ' ' + testCase + ': ' + ((Date.now() - started) / 1000).toFixed(1) + ' s, ' +
+                (await page.evaluate(() => window.raylab.state.context)));
+  } finally {
+    await context.close();
+    fs.rmSync(profile, {recursive: true, force: true});
+  }
+  for (const f of failures) console.error('FAIL: ' + f);
+  process.exit(failures.length ? 1 : 0);
+})().catch((e) => { console.error('FAIL: ' + e.message); process.exit(1); });

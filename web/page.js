@@ -1,0 +1,316 @@
+// raylab-web's page: the editor, the live picture and the check, over two
+// Workers running raylab's C++ (web/worker.js). Everything is in this one
+// file: it opens from file:// with no network.
+'use strict';
+
+const WORKER_SOURCE = atob(RAYLAB_MODULE_B64) + '\n' + /*@WORKER_JS@*/'';
+const workerUrl = URL.createObjectURL(new Blob([WORKER_SOURCE], {type: 'text/javascript'}));
+// As `raylab check --timeout`: seconds allowed per exercise (native default 60).
+const CHECK_TIMEOUT_SECONDS = 60;
+const STORAGE_PREFIX = 'raylab:exercises/';
+
+// ---- a Worker with request/response calls ------------------------------------------------------
+class RaylabWorker {
+  constructor() {
+    this.worker = new Worker(workerUrl);
+    this.next = 1;
+    this.pending = new Map();
+    this.worker.onmessage = (event) => {
+      const msg = event.data;
+      const p = this.pending.get(msg.id);
+      if (!p) return;
+      if (!msg.done) { if (p.progress) p.progress(msg); return; }
+      this.pending.delete(msg.id);
+      if (msg.ok) p.resolve(msg); else p.reject(new Error(msg.error));
+    };
+    this.worker.onerror = (event) => {
+      for (const p of this.pending.values()) p.reject(new Error(event.message || 'the worker failed'));
+      this.pending.clear();
+    };
+  }
+  call(op, args = {}, progress = null, transfer = []) {
+    const id = this.next++;
+    return new Promise((resolve, reject) => {
+      this.pending.set(id, {resolve, reject, progress});
+      this.worker.postMessage(Object.assign({id, op}, args), transfer);
+    });
+  }
+  terminate() {
+    this.worker.terminate();
+    for (const p of this.pending.values()) p.reject(new Error('terminated'));
+    this.pending.clear();
+  }
+}
+
+// ---- state ----------------------------------------------------------------------------------
+const state = {exercises: [], stubs: {}, files: {}, current: null, editor: null, context: ''};
+let checker = null;   // the check Worker (replaced after a timeout)
+let painter = null;   // the live picture's Worker
+const $ = (id) => document.getElementById(id);
+const setStatus = (text) => { $('status').textContent = text; };
+
+function load(name) {
+  try {
+    const saved = localStorage.getItem(STORAGE_PREFIX + name);
+    if (saved !== null) return saved;
+  } catch (e) { /* storage refused (private mode): the stub */ }
+  return state.stubs[name];
+}
+function save(name, text) {
+  state.files[name] = text;
+  try {
+    localStorage.setItem(STORAGE_PREFIX + name, text);
+    $('saved').textContent = 'saved in this browser';
+  } catch (e) {
+    $('saved').textContent = 'NOT saved: this browser refuses storage; download your files';
+  }
+}
+
+// ---- editor ---------------------------------------------------------------------------------
+function showFile(name) {
+  state.current = name;
+  state.editor.setValue(state.files[name]);
+  state.editor.clearHistory();
+  for (const b of $('tabs').children) b.classList.toggle('active', b.dataset.file === name);
+}
+function buildTabs() {
+  for (const e of state.exercises) {
+    const b = document.createElement('button');
+    b.dataset.file = e.file;
+    b.title = e.title + ' (' + e.handout + ')';
+    b.innerHTML = '<span></span><span class="mark"></span>';
+    b.firstChild.textContent = e.file;
+    b.onclick = () => showFile(e.file);
+    $('tabs').appendChild(b);
+  }
+}
+function markTab(file, status) {
+  for (const b of $('tabs').children)
+    if (b.dataset.file === file) {
+      b.lastChild.textContent = status === 'PASS' ? '✓' : status === 'NOT STARTED' ? '' : '✗';
+      b.lastChild.className = 'mark ' + status;
+    }
+}
+
+// ---- check ----------------------------------------------------------------------------------
+function timeoutReport(exercise) {
+  // The native checker's words for a check that does not end (app/checks/checker.cpp).
+  const r = {exercise: exercise.id, number: exercise.number, status: 'TIMEOUT',
+    message: 'the check timed out after ' + CHECK_TIMEOUT_SECONDS + ' s: does a loop in ' + exercise.file + ' never end?',
+    hint: 'every loop needs a bound; the trace loop runs at most maxBounces() + 1 times', details: '', probes: [], images: []};
+  r.text = (r.exercise.padEnd(17) + ' ' + r.status.padEnd(13) + ' ' + r.message + '\n    hint: ' + r.hint + '\n');
+  return r;
+}
+
+function withTimeout(promise, seconds) {
+  let timer;
+  const limit = new Promise((resolve) => { timer = setTimeout(() => resolve('timeout'), seconds * 1000); });
+  return Promise.race([promise, limit]).finally(() => clearTimeout(timer));
+}
+
+function showImages(images) {
+  for (const [path, bytes] of Object.entries(images || {})) {
+    const fig = document.createElement('figure');
+    const img = document.createElement('img');
+    img.src = URL.createObjectURL(new Blob([bytes], {type: 'image/png'}));
+    img.alt = path;
+    fig.appendChild(img);
+    fig.appendChild(document.createTextNode(path));
+    $('check-images').appendChild(fig);
+  }
+}
+
+// Checks the given exercises (numbers) as `raylab check --exercise N...` does,
+// then the ten files together. Returns {reports, together, text}.
+async function check(numbers) {
+  numbers = numbers || state.exercises.map((e) => e.number);
+  const started = performance.now();
+  $('check-text').textContent = '';
+  $('check-images').textContent = '';
+  const reports = [];
+  for (const number of numbers) {
+    const exercise = state.exercises.find((e) => e.number === number);
+    setStatus('checking ' + exercise.file + '…');
+    const call = checker.call('check', {files: state.files, exercises: [number]},
+        (msg) => showImages(msg.images));
+    const result = await withTimeout(call.catch((e) => ({error: e})), CHECK_TIMEOUT_SECONDS);
+    let report;
+    if (result === 'timeout') {
+      // The Worker is stuck in the shader: end it and start a fresh one.
+      checker.terminate();
+      checker = new RaylabWorker();
+      report = timeoutReport(exercise);
+    } else if (result.error) {
+      report = {exercise: exercise.id, number, status: 'CRASH', message: String(result.error.message), hint: '', text:
+                exercise.id.padEnd(17) + ' CRASH         ' + result.error.message + '\n'};
+    } else {
+      report = result.reports[0];
+    }
+    reports.push(report);
+    markTab(exercise.file, report.status);
+    $('check-text').textContent += report.text;
+  }
+  const has = (s) => reports.some((r) => r.status === s);
+  let together = null;
+  if (numbers.length === state.exercises.length && (has('PASS') || has('FAIL')) &&
+      !has('COMPILE ERROR') && !has('TIMEOUT') && !has('CRASH')) {
+    const result = await withTimeout(checker.call('together', {files: state.files}), CHECK_TIMEOUT_SECONDS);
+    together = result === 'timeout' ? null : result.together;
+  }
+  const togetherOk = !together || together.status === 'PASS';
+  if (!togetherOk) $('check-text').textContent += together.text;
+  const passed = reports.filter((r) => r.status === 'PASS').length;
+  const seconds = Math.round((performance.now() - started) / 1000);
+  const summary = passed + ' of ' + reports.length + ' exercises pass' +
+      (togetherOk ? '' : '; the files do not compile together') + ' (' + seconds + ' s)\n';
+  $('check-text').textContent += summary;
+  setStatus(passed + ' of ' + reports.length + ' pass');
+  return {reports, together, text: $('check-text').textContent};
+}
+
+// ---- the live picture -----------------------------------------------------------------------
+const live = {busy: false, again: false, width: 320, height: 240};
+async function drawLive() {
+  if (live.busy) { live.again = true; return; }
+  live.busy = true;
+  try {
+    do {
+      live.again = false;
+      const r = await painter.call('liveFrame', {view: $('view').value});
+      if (r.pixels) {
+        const image = new ImageData(r.pixels, live.width, live.height);
+        $('live').getContext('2d').putImageData(image, 0, 0);
+      }
+    } while (live.again);
+  } catch (e) {
+    $('live-error').textContent = String(e.message);
+  } finally {
+    live.busy = false;
+  }
+}
+async function compileLive() {
+  const r = await painter.call('liveCompile', {files: state.files});
+  $('live-error').textContent = r.error;
+  await drawLive();
+  return r.error;
+}
+async function setScene() {
+  const r = await painter.call('liveScene', {scene: $('scene').value, width: live.width, height: live.height});
+  if (r.error) $('live-error').textContent = r.error;
+  await compileLive();
+}
+function canvasPixel(event) {
+  const rect = $('live').getBoundingClientRect();
+  return {x: (event.clientX - rect.left) * live.width / rect.width, y: (event.clientY - rect.top) * live.height / rect.height};
+}
+function wireTrackball() {
+  const canvas = $('live');
+  canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+  canvas.addEventListener('pointerdown', (e) => {
+    canvas.setPointerCapture(e.pointerId);
+    const p = canvasPixel(e);
+    // Left drag orbits (Trackball::Mode::Rotate = 0), right or shift drag pans (Pan = 1).
+    painter.call('trackball', {action: 'begin', x: p.x, y: p.y, mode: e.button === 0 && !e.shiftKey ? 0 : 1});
+  });
+  canvas.addEventListener('pointermove', (e) => {
+    if (!canvas.hasPointerCapture(e.pointerId)) return;
+    const p = canvasPixel(e);
+    painter.call('trackball', {action: 'drag', x: p.x, y: p.y});
+    drawLive();
+  });
+  canvas.addEventListener('pointerup', () => painter.call('trackball', {action: 'end'}));
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    painter.call('trackball', {action: 'zoom', steps: -Math.sign(e.deltaY)});
+    drawLive();
+  }, {passive: false});
+}
+
+// ---- download: exercises.zip (stored, no compression), ready for `raylab grade` --------------
+const crcTable = (() => {
+  const t = new Uint32Array(256);
+  for (let n = 0; n < 256; n++) {
+    let c = n;
+    for (let k = 0; k < 8; k++) c = c & 1 ? 0xEDB88320 ^ (c >>> 1) : c >>> 1;
+    t[n] = c >>> 0;
+  }
+  return t;
+})();
+function crc32(bytes) {
+  let c = 0xFFFFFFFF;
+  for (const b of bytes) c = crcTable[(c ^ b) & 0xFF] ^ (c >>> 8);
+  return (c ^ 0xFFFFFFFF) >>> 0;
+}
+// A zip of named byte arrays (PKWARE APPNOTE 4.3: local headers, central directory, end record).
+function makeZip(entries) {
+  const parts = [], central = [];
+  let offset = 0;
+  const u16 = (v) => [v & 0xFF, (v >>> 8) & 0xFF];
+  const u32 = (v) => [v & 0xFF, (v >>> 8) & 0xFF, (v >>> 16) & 0xFF, (v >>> 24) & 0xFF];
+  for (const [name, data] of entries) {
+    const nameBytes = new TextEncoder().encode(name);
+    const crc = crc32(data);
+    // version 2.0, flag bit 11 (UTF-8 names), stored, DOS time 00:00 1 Jan 1980
+    const common = [...u16(20), ...u16(0x0800), ...u16(0), ...u16(0), ...u16(0x21), ...u32(crc), ...u32(data.length), ...u32(data.length), ...u16(nameBytes.length), ...u16(0)];
+    const local = new Uint8Array([...u32(0x04034b50), ...common]);
+    parts.push(local, nameBytes, data);
+    central.push(new Uint8Array([...u32(0x02014b50), ...u16(20), ...common, ...u16(0), ...u16(0), ...u16(0), ...u32(0), ...u32(offset)]), nameBytes);
+    offset += local.length + nameBytes.length + data.length;
+  }
+  const size = central.reduce((s, p) => s + p.length, 0);
+  const end = new Uint8Array([...u32(0x06054b50), ...u16(0), ...u16(0), ...u16(entries.length), ...u16(entries.length), ...u32(size), ...u32(offset), ...u16(0)]);
+  return new Blob([...parts, ...central, end], {type: 'application/zip'});
+}
+function exercisesZip() {
+  const encoder = new TextEncoder();
+  return makeZip(state.exercises.map((e) => ['exercises/' + e.file, encoder.encode(state.files[e.file])]));
+}
+function download() {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(exercisesZip());
+  a.download = 'exercises.zip';
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+}
+
+// ---- start ----------------------------------------------------------------------------------
+async function start() {
+  checker = new RaylabWorker();
+  painter = new RaylabWorker();
+  const hello = await checker.call('hello');
+  Object.assign(state, {exercises: hello.exercises, stubs: hello.stubs, context: hello.context});
+  for (const e of state.exercises) state.files[e.file] = load(e.file);
+  state.editor = CodeMirror($('editor'), {mode: 'x-shader/x-fragment', lineNumbers: true, indentUnit: 4,
+                                          matchBrackets: true, value: ''});
+  buildTabs();
+  showFile(state.exercises[0].file);
+  let recompile = null;
+  state.editor.on('change', () => {
+    save(state.current, state.editor.getValue());
+    clearTimeout(recompile);
+    recompile = setTimeout(compileLive, 400);  // the live view's hot reload
+  });
+  $('revert').onclick = () => { if (confirm('Replace ' + state.current + ' with the stub?')) state.editor.setValue(state.stubs[state.current]); };
+  $('check-all').onclick = () => check();
+  $('check-one').onclick = () => check([state.exercises.find((e) => e.file === state.current).number]);
+  $('download').onclick = download;
+  $('scene').onchange = setScene;
+  $('view').onchange = drawLive;
+  $('reset-camera').onclick = () => { painter.call('trackball', {action: 'reset'}); drawLive(); };
+  wireTrackball();
+  await setScene();
+  // Without WebGL2 the editor and the download still work; say why nothing else does.
+  setStatus(/^no context/.test(state.context) ? state.context : 'ready');
+  $('status').title = state.context;  // which WebGL2 draws: a GPU, SwiftShader, Mesa
+  document.body.dataset.ready = 'true';
+}
+
+// What the tests drive (tests/browser/): the same functions as the buttons.
+window.raylab = {
+  state, check, compileLive, exercisesZip,
+  setFile(name, text) { if (state.current === name) state.editor.setValue(text); else save(name, text); },
+  compareLive: () => painter.call('compareLive'),
+  liveFrame: () => painter.call('liveFrame', {view: $('view').value}),
+};
+start().catch((e) => { setStatus('failed: ' + e.message); document.body.dataset.ready = 'failed'; console.error(e); });
