@@ -107,6 +107,19 @@ void expectOthersFull(const Student& s, const std::string& id, const std::set<st
 const std::vector<std::string> kMutants = {"03-lambert--missing-pi", "07-fresnel--one-plus-f0",
                                            "09-reflections--reflect-swapped", "10-display--pow-gamma"};
 
+// Student id -> the line put at the top of toneMap in 10-display.glsl.
+std::map<std::string, std::string> runawayLoops() {
+    return {{"runaway-bound", "    for (int i = 0; i < 1000000000 + maxBounces(); ++i) { c = c * 0.5 + 0.5 * c; }\n"},
+            {"runaway-break", "    float spin = 1.0; while (true) { spin += 1.0; if (spin < 0.0) break; }\n"}};
+}
+
+// The line of toneMap's first statement in 10-display.glsl.
+int toneMapBodyLine() {
+    const std::string text = solutionFiles()["10-display.glsl"];
+    const auto at = text.find("vec3 toneMap(vec3 c, int op) {\n");
+    return 2 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+}
+
 // The whole class: every case of the grading policy.
 fs::path buildClass(const fs::path& root) {
     fs::path sub = root / "submissions";
@@ -123,6 +136,14 @@ fs::path buildClass(const fs::path& root) {
     std::string whileTrue = solutionFiles()["10-display.glsl"];
     whileTrue.insert(whileTrue.find("vec3 toneMap(vec3 c, int op) {\n") + 31, "    while (true) {}\n");
     writeFolder(sub / "while-true", solutionFiles({{"10-display.glsl", whileTrue}}));
+    // Loops that never end but that no reading can prove endless: a bound a
+    // billion iterations away read from a uniform, a break never met. The
+    // loop guard ends both (app/shader/loop_guard.h): TIMEOUT with the loop's line.
+    for (const auto& [id, loop] : runawayLoops()) {
+        std::string text = solutionFiles()["10-display.glsl"];
+        text.insert(text.find("vec3 toneMap(vec3 c, int op) {\n") + 31, loop);
+        writeFolder(sub / id, solutionFiles({{"10-display.glsl", text}}));
+    }
     writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
     writeFolder(sub / "include-escape",
                 solutionFiles({{"05-ggx.glsl", "#include \"../../full/05-ggx.glsl\"\n"}}));
@@ -199,7 +220,8 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
     for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
     for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
-                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true"})
+                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true", "runaway-bound",
+                           "runaway-break"})
         expected.push_back(id);
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
@@ -265,6 +287,19 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     EXPECT_TRUE(contains(whileTrue.exercises.at("10-display").message, "this loop never ends"))
         << whileTrue.exercises.at("10-display").message;
     EXPECT_DOUBLE_EQ(whileTrue.score, 90);
+    // Real work in every iteration: the guard bounds the loop, the wall clock
+    // ends it, and the reason says it was the shader's time, not the compiler's.
+    EXPECT_TRUE(contains(loop.message, "(shader time)")) << loop.message;
+    for (const auto& [id, text] : runawayLoops()) {
+        Student s = load(out, id);
+        const Graded& g = s.exercises.at("10-display");
+        EXPECT_EQ(g.status, "TIMEOUT") << id << ": " << g.message;
+        EXPECT_TRUE(contains(g.message, "a loop in 10-display.glsl:" + std::to_string(toneMapBodyLine()) +
+                                            " ran more than 16384 iterations"))
+            << id << ": " << g.message;
+        EXPECT_DOUBLE_EQ(s.score, 90) << id;
+        expectOthersFull(s, id, {"10-display"});
+    }
     expectOthersFull(endless, "endless", {"10-display"});
 
     Student nan = load(out, "nan");
@@ -336,7 +371,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     json summary = readJson(out / "summary.json");
     EXPECT_EQ(summary.at("students").get<int>(), int(expected.size()));
-    EXPECT_EQ(summary.at("timeouts").get<int>(), 2);
+    EXPECT_EQ(summary.at("timeouts").get<int>(), 4);
     EXPECT_EQ(summary.at("compile_errors").get<int>(), 2);
     EXPECT_EQ(summary.at("full_marks").get<int>(), 4);  // full, zipped, messy-repo, renamed
     if (!HasFailure()) fs::remove_all(root);
