@@ -17,7 +17,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -314,14 +313,6 @@ char* g_phase = nullptr;
 constexpr std::size_t kPhaseBytes = 256;
 
 void setPhase(const std::string& phase) {
-    if (std::getenv("RAYLAB_PHASES")) {
-        static auto t0 = std::chrono::steady_clock::now();
-        static std::string last = "start";
-        auto now = std::chrono::steady_clock::now();
-        std::fprintf(stderr, "PHASE %-40s %.3f\n", last.c_str(), std::chrono::duration<double>(now - t0).count());
-        t0 = now;
-        last = phase;
-    }
     if (!g_phase) return;
     std::snprintf(g_phase, kPhaseBytes, "%s", phase.c_str());
 }
@@ -474,7 +465,6 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         }
         report.images.push_back(s);
     }
-    setPhase("end");
     report.details = table;
     bool probesOk = std::all_of(report.probes.begin(), report.probes.end(),
                                 [](const ProbeSummary& p) { return p.passed == p.total; });
