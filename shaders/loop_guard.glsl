@@ -1,6 +1,6 @@
 // loop_guard.glsl: the iteration guard the host writes into every loop of an
 // exercise file (app/shader/loop_guard.h): `while (cond)` is compiled as
-// `while (rl_loop(cond, ID))`. A loop that never ends would hang a GPU and
+// `while (rl_loop((cond), ID))`. A loop that never ends would hang a GPU and
 // freeze a browser; llvmpipe would cut it after 65535 iterations and draw a
 // plausible picture. With the guard it ends the same way everywhere: past
 // RL_LOOP_LIMIT iterations of all guarded loops in one invocation, every

@@ -162,7 +162,7 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
             ++k;
         return k + 2 < to && tokens[k].ident && tokens[k + 1].ident && is(text, tokens[k + 2], "=");
     };
-    // Wraps the condition between tokens (from, to) exclusive: `rl_loop(cond, ID)`.
+    // Wraps the condition between tokens (from, to) exclusive: `rl_loop((cond), ID)`.
     auto guard = [&](std::size_t from, std::size_t to, int line) {
         const int id = firstId + int(out.loopLines.size());
         out.loopLines.push_back(line);
@@ -174,8 +174,9 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
         if (empty) {
             edits.push_back({begin, " rl_loop(true, " + std::to_string(id) + ")"});
         } else {
-            edits.push_back({tokens[from + 1].at, "rl_loop("});
-            edits.push_back({end, ", " + std::to_string(id) + ")"});
+            // Parenthesised, so a comma expression stays one argument.
+            edits.push_back({tokens[from + 1].at, "rl_loop(("});
+            edits.push_back({end, "), " + std::to_string(id) + ")"});
         }
     };
     struct Do {

@@ -4,9 +4,9 @@
 // TIMEOUT, a frozen page or a plausible picture with marks. So the host
 // rewrites every loop of an exercise file (never a framework file) before
 // the driver sees it:
-//     for (init; cond; step)   ->  for (init; rl_loop(cond, ID); step)
-//     while (cond)             ->  while (rl_loop(cond, ID))
-//     do { } while (cond);     ->  do { } while (rl_loop(cond, ID));
+//     for (init; cond; step)   ->  for (init; rl_loop((cond), ID); step)
+//     while (cond)             ->  while (rl_loop((cond), ID))
+//     do { } while (cond);     ->  do { } while (rl_loop((cond), ID));
 // rl_loop (shaders/loop_guard.glsl) counts the iterations of all guarded
 // loops of one invocation (one pixel, one probe case); past kLoopLimit it
 // ends every loop and records the first loop that went over, which main.frag

@@ -208,10 +208,10 @@ fs::path buildClass(const fs::path& root) {
     folderNamed.erase("06-geometry.glsl");
     folderNamed["06-geometry.glsl/notes.glsl"] = "// my notes\n";
     writeFolder(sub / "folder-named", folderNamed);
-    std::string bomb = solutionFiles()["10-display.glsl"] + "#define A0 1.0\n";
+    std::string macros = solutionFiles()["10-display.glsl"] + "#define A0 1.0\n";
     for (int k = 1; k <= 24; ++k)
-        bomb += "#define A" + std::to_string(k) + " A" + std::to_string(k - 1) + " + A" + std::to_string(k - 1) + "\n";
-    writeFolder(sub / "macro-bomb", solutionFiles({{"10-display.glsl", bomb + "float bomb() { return A24; }\n"}}));
+        macros += "#define A" + std::to_string(k) + " A" + std::to_string(k - 1) + " + A" + std::to_string(k - 1) + "\n";
+    writeFolder(sub / "macro-bomb", solutionFiles({{"10-display.glsl", macros + "float bomb() { return A24; }\n"}}));
     writeText(sub / "roster.txt", "not a student\n");
     return sub;
 }
@@ -461,6 +461,36 @@ TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
     EXPECT_TRUE(contains(changed.output, "graded 1, skipped 5")) << changed.output;
     EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,100.00\n"))
         << readText(out / "grades.csv");
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+// The run's shader cache (OUT/.shader-cache) holds compiled code keyed by
+// the whole source, never a result: swap two students' files and run again
+// over the same OUT, with the cache warm, and each gets what the files now
+// deserve.
+TEST(GradeRun, TheRunsShaderCacheCannotCarryResultsBetweenStudents) {
+    fs::path root = freshTempDir("grade_cache");
+    fs::path sub = root / "submissions", out = root / "out";
+    const std::string mutant = "05-ggx--missing-pi";
+    auto assign = [&](const std::string& who) {
+        fs::remove_all(sub);
+        writeFolder(sub / who, solutionFiles());
+        writeFolder(sub / (who == "ann" ? "bob" : "ann"), solutionFiles({{"05-ggx.glsl", mutantText(mutant)}}));
+    };
+    assign("ann");  // ann full, bob the mutant
+    writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"05-ggx\", \"weight\": 10}]}");
+    CommandResult first = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    ASSERT_EQ(first.status, 0) << first.output;
+    ASSERT_TRUE(fs::is_directory(out / ".shader-cache"));
+    EXPECT_FALSE(fs::is_empty(out / ".shader-cache")) << "the run filled its cache";
+    EXPECT_DOUBLE_EQ(load(out, "ann").score, 10);
+    EXPECT_LT(load(out, "bob").score, 10);
+    assign("bob");  // now bob full, ann the mutant: both resubmitted, graded again over the warm cache
+    CommandResult second = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    ASSERT_EQ(second.status, 0) << second.output;
+    EXPECT_DOUBLE_EQ(load(out, "bob").score, 10);
+    EXPECT_LT(load(out, "ann").score, 10);
+    EXPECT_EQ(load(out, "ann").exercises.at("05-ggx").status, "FAIL");
     if (!HasFailure()) fs::remove_all(root);
 }
 

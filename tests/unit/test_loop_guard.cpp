@@ -45,10 +45,10 @@ TEST(LoopGuard, EveryKindOfLoopIsGuardedOnItsOwnLine) {
     GuardedSource g = guardLoops(text, "05-ggx.glsl", 7);
     EXPECT_EQ(lines(g.text), lines(text));
     EXPECT_EQ(g.loopLines, (std::vector<int>{2, 3, 4, 6}));  // the do-while is where its `do` is
-    EXPECT_NE(g.text.find("for (int i = 0; rl_loop(i < 4, 7); ++i)"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("for (int i = 0; rl_loop((i < 4), 7); ++i)"), std::string::npos) << g.text;
     EXPECT_NE(g.text.find("for (; rl_loop(true, 8);)"), std::string::npos) << g.text;
-    EXPECT_NE(g.text.find("while (rl_loop(x < 100.0, 9))"), std::string::npos) << g.text;
-    EXPECT_NE(g.text.find("} while (rl_loop(x > 3.0 &&\n             x < 1000.0, 10));"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("while (rl_loop((x < 100.0), 9))"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("} while (rl_loop((x > 3.0 &&\n             x < 1000.0), 10));"), std::string::npos) << g.text;
     EXPECT_NE(g.text.find("// while (true) in a comment"), std::string::npos);
     EXPECT_NE(g.text.find("/* for (;;) {} */"), std::string::npos);
     // A file without loops is unchanged, byte for byte.
