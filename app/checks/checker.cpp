@@ -509,7 +509,7 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
     // A page shared with the child: what it was doing when it ran out of time.
     void* shared = mmap(nullptr, kPhaseBytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
     g_phase = shared == MAP_FAILED ? nullptr : static_cast<char*>(shared);
-    setPhase("starting");
+    setPhase("starting the OpenGL context");
     IsolatedResult result = runIsolated(work, limits);
     const std::string phase = g_phase ? std::string(g_phase, strnlen(g_phase, kPhaseBytes)) : "";
     if (g_phase) munmap(g_phase, kPhaseBytes);
@@ -531,8 +531,9 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
         report.hint = "look for a loop with a large constant bound (compilers unroll them) or very long code";
     } else if (result.outcome == IsolatedResult::Outcome::TimedOut) {
         report.status = CheckStatus::TimedOut;
+        const bool shaderRunning = phase.rfind("running", 0) == 0 || phase.rfind("rendering", 0) == 0;
         report.message = "the check " + result.reason + " while " + (phase.empty() ? "running" : phase) +
-                         " (shader time): " + name + " does too much work per pixel";
+                         (shaderRunning ? " (shader time): " + name + " does too much work per pixel" : " (time)");
         report.hint = "every loop is bounded at " + std::to_string(kLoopLimit) +
                       " iterations per pixel; look for a loop that does heavy work each time round";
     } else if (result.outcome == IsolatedResult::Outcome::OutOfMemory) {
