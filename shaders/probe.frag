@@ -5,4 +5,7 @@
 
 layout(location = 0) out vec4 o_result;
 
-void main() { o_result = evaluateProbe(); }
+void main() {
+    o_result = evaluateProbe();
+    o_result.w = loopGuardAlpha(o_result.w);  // -ID when a loop of the exercise went over its bound
+}

@@ -7,6 +7,7 @@
 #include "declarations.glsl"
 #include "error_bounds.glsl"
 #include "intersect_scene.glsl"
+#include "loop_guard.glsl"
 #include "exercises.glsl"
 #ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)
 #include "model_variants.glsl"

@@ -10,16 +10,21 @@
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
+#include "render/shader_config.h"
+#include "shader/loop_guard.h"
 #include "shader/shader_library.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <optional>
 #include <sstream>
+
+#include <sys/mman.h>
 
 namespace fs = std::filesystem;
 
@@ -301,6 +306,35 @@ namespace {
 
 // ---- one exercise, inside the child --------------------------------------------------------
 
+// What the check's child process is doing, in memory it shares with the
+// parent (set up by checkExercise before forking), so that a wall-clock
+// timeout can say what ran out of time: the compiler, or the shader.
+char* g_phase = nullptr;
+constexpr std::size_t kPhaseBytes = 256;
+
+void setPhase(const std::string& phase) {
+    if (!g_phase) return;
+    std::snprintf(g_phase, kPhaseBytes, "%s", phase.c_str());
+}
+
+// TIMEOUT for a loop that went over the guard's bound (shader/loop_guard.h).
+ExerciseReport& loopTimeout(ExerciseReport& report, const ShaderProgram& program, int loop, const std::string& where) {
+    report.status = CheckStatus::TimedOut;
+    report.message = loopTimeoutMessage(program.guardedLoops(), loop, where);
+    report.hint = "every loop needs a bound that it reaches: check the loop's condition and what changes it";
+    report.probes.clear();
+    report.images.clear();
+    return report;
+}
+
+// llvmpipe: LLVM's optimisation passes are most of a check's time (a check
+// compiles two shaders and runs them on a few thousand pixels, once), so the
+// check's child turns them off (GALLIVM_PERF=nopt, llvmpipe's own switch; a
+// value the user set wins). They change how fast the code runs, not what it
+// computes (llvmpipe's IR carries no fast-math flags): the solutions and the
+// mutants gave byte-identical records and images with and without (docs/grading.md).
+void fastShaderCompiles() { setenv("GALLIVM_PERF", "nopt", 0); }
+
 std::string imagePath(const fs::path& dir, const std::string& scene, const std::string& kind) {
     return (dir / (scene + "-" + kind + ".png")).string();
 }
@@ -310,15 +344,21 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
+    fastShaderCompiles();
     auto context = createHeadlessContext(parseBackend(options.backend));
     Implementation impl{solutionsDir(), {{exercise.file(), file}}};
     ShaderProgram probe, program;
+    setPhase("compiling");
     try {
         AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
         // Only this exercise's functions in the probe: the compiler drops the rest.
         ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
         probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
-        program = buildRayTracer(impl);
+        setPhase("compiling the ray tracer");
+        // Without the teaching views: a third less code for LLVM, the same
+        // picture. Not for 09, whose traceRay may still return NOT_STARTED
+        // for some rays, where the full program falls back to the first hit.
+        program = buildRayTracer(impl, exercise.number == 9 ? ShaderDefines{} : pictureOnlyDefines());
     } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
         report.status = CheckStatus::CompileError;
         std::string text = e.what();
@@ -331,9 +371,24 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     // Probes.
     Scene scene = probeScene();
     std::vector<std::pair<std::string, ProbeOutcome>> outcomes;
-    for (const ProbeSpec& spec : probesForExercise(exercise.number))
-        outcomes.emplace_back(spec.signature,
-                              evaluateProbe(spec, runProbe(probe, spec, spec.needsScene ? &scene : nullptr)));
+    for (const ProbeSpec& spec : probesForExercise(exercise.number)) {
+        setPhase(std::string("running the probe ") + spec.name);
+        std::vector<std::array<float, 4>> raw = runProbe(probe, spec, spec.needsScene ? &scene : nullptr);
+        std::vector<float> alpha;
+        for (const auto& texel : raw) alpha.push_back(texel[3]);
+        if (int loop = trippedLoop(alpha)) {
+            // Name the kind of input it ran away on, and that kind's hint.
+            const std::size_t k = std::size_t(std::find_if(alpha.begin(), alpha.end(), [](float a) { return a < 0; }) -
+                                              alpha.begin());
+            const std::string group = k < spec.cases.size() ? spec.cases[k].group : "";
+            loopTimeout(report, probe, loop,
+                        "for one input of " + spec.name + (group.empty() ? "" : " (" + group + ")"));
+            for (const auto& [name, hint] : spec.groupHints)
+                if (name == group) report.hint = hint;
+            return report;
+        }
+        outcomes.emplace_back(spec.signature, evaluateProbe(spec, raw));
+    }
     bool allStub = std::all_of(outcomes.begin(), outcomes.end(), [](const auto& o) { return o.second.allStub; });
     if (allStub) {
         report.status = CheckStatus::NotStarted;
@@ -365,8 +420,11 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     GlRenderer renderer;
     fs::path outDir = options.outputDir / exercise.id;
     for (const CheckScene& c : scenes) {
+        setPhase("rendering the check scene " + c.name);
         renderer.setScene(c.scene);
         renderer.draw(program, frameFromScene(c.scene));
+        if (int loop = trippedLoopInFramebuffer(renderer.framebuffer(), 1, renderer.width(), renderer.height()))
+            return loopTimeout(report, program, loop, "in one pixel of the check scene " + c.name);
         Rendering got = renderer.readBack();
         ImageDiff diff = compareRenderings(got, c.reference);
         ImageSummary s;
@@ -448,7 +506,15 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
     }
     IsolationLimits limits;
     limits.timeoutSeconds = options.timeoutSeconds;
+    // A page shared with the child: what it was doing when it ran out of time.
+    void* shared = mmap(nullptr, kPhaseBytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    g_phase = shared == MAP_FAILED ? nullptr : static_cast<char*>(shared);
+    setPhase("starting the OpenGL context");
     IsolatedResult result = runIsolated(work, limits);
+    const std::string phase = g_phase ? std::string(g_phase, strnlen(g_phase, kPhaseBytes)) : "";
+    if (g_phase) munmap(g_phase, kPhaseBytes);
+    g_phase = nullptr;
+    const std::string name = file.filename().string();
     if (result.outcome == IsolatedResult::Outcome::Finished) {
         try {
             report = reportFromJson(json::parse(result.output));
@@ -456,14 +522,29 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
             report.status = CheckStatus::Crashed;
             report.message = "the check's child process returned no result";
         }
+    } else if (result.outcome == IsolatedResult::Outcome::TimedOut && phase.rfind("compiling", 0) == 0) {
+        // The compiler, not the shader: every loop is bounded, so this is code
+        // the driver cannot compile in time (a loop it unrolls, a huge function).
+        report.status = CheckStatus::TimedOut;
+        report.message = "the check " + result.reason + " while the driver was still compiling " + name +
+                         " (compiler time): the file is more code than a shader compiler handles";
+        report.hint = "look for a loop with a large constant bound (compilers unroll them) or very long code";
     } else if (result.outcome == IsolatedResult::Outcome::TimedOut) {
         report.status = CheckStatus::TimedOut;
-        report.message = "the check " + result.reason + ": does a loop in " + file.filename().string() + " never end?";
-        report.hint = "every loop needs a bound; the trace loop runs at most maxBounces() + 1 times";
+        const bool shaderRunning = phase.rfind("running", 0) == 0 || phase.rfind("rendering", 0) == 0;
+        report.message = "the check " + result.reason + " while " + (phase.empty() ? "running" : phase) +
+                         (shaderRunning ? " (shader time): " + name + " does too much work per pixel" : " (time)");
+        report.hint = "every loop is bounded at " + std::to_string(kLoopLimit) +
+                      " iterations per pixel; look for a loop that does heavy work each time round";
+    } else if (result.outcome == IsolatedResult::Outcome::OutOfMemory) {
+        report.status = CheckStatus::Crashed;
+        report.message = "the check ran out of memory while " + (phase.empty() ? "running" : phase) + " (memory): " +
+                         name + " needs more than the " + std::to_string(limits.memoryBytes >> 30) + " GiB allowed";
+        report.hint = "look for large arrays or code the compiler expands";
     } else {
         report.status = CheckStatus::Crashed;
-        report.message = "the check " + result.reason;
-        report.hint = "the driver or the check failed while running " + file.filename().string();
+        report.message = "the check " + result.reason + " while " + (phase.empty() ? "running" : phase);
+        report.hint = "the driver or the check failed while running " + name;
     }
     report.seconds = result.seconds;
     return report;

@@ -11,6 +11,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -267,6 +268,22 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     return grade;
 }
 
+// The run's own shader cache: Mesa's on-disk cache in OUT/.shader-cache
+// (unless the user set MESA_SHADER_CACHE_DIR or turned the cache off), so a
+// resumed or repeated run and byte-identical files reuse compiled shaders,
+// and nothing is written to $HOME (read-only or shared on cluster nodes).
+// It cannot carry one student's results to another: the key of an entry is a
+// SHA-1 of the complete shader source (every exercise file and #define in it)
+// with the driver's build, so an entry is found only for a byte-identical
+// program, and what it holds is compiled code, never a result: every check
+// still runs its probes and renders its scenes.
+static void useRunShaderCache(const fs::path& out) {
+    if (std::getenv("MESA_SHADER_CACHE_DIR") || std::getenv("MESA_SHADER_CACHE_DISABLE")) return;
+    std::error_code ec;
+    fs::create_directories(out / ".shader-cache", ec);
+    if (!ec) setenv("MESA_SHADER_CACHE_DIR", fs::absolute(out / ".shader-cache").c_str(), 1);
+}
+
 GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const GradeSettings& settings,
                          std::ostream& progress) {
     GradeBatch batch;
@@ -289,6 +306,7 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
     writeReferenceImages(settings.out, scenes);
     if (todo.empty()) return batch;
 
+    useRunShaderCache(settings.out);
     InterruptHandlers handlers;
     struct Running {
         const SubmissionEntry* entry;

@@ -1,6 +1,7 @@
 #include "shader/program.h"
 
 #include "shader/driver_log.h"
+#include "shader/loop_guard.h"
 #include "shader/source_checks.h"
 
 #include <utility>
@@ -71,10 +72,11 @@ std::vector<ShaderDiagnostic> mapDriverLog(const std::string& log, const Assembl
         d.message = m.text;
         if (auto where = source.locate(m.line)) {
             d.where = *where;
-            d.sourceLine = source.lineText(m.line);
+            d.sourceLine = source.authorLine(m.line);
             auto first = d.sourceLine.find_first_not_of(" \t");
             d.sourceLine = first == std::string::npos ? "" : d.sourceLine.substr(first);
         }
+        explainLoopGuard(d);
         out.push_back(std::move(d));
     }
     explainDriverDiagnostics(out, source);
@@ -105,7 +107,7 @@ GLuint compile(GLenum stage, const AssembledSource& source, std::vector<ShaderDi
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const AssembledSource& vertex, const AssembledSource& fragment) {
+ShaderProgram::ShaderProgram(const AssembledSource& vertex, const AssembledSource& fragment) : loops_(fragment.loops) {
     // What the host can tell before the driver: the exercises' contract,
     // names defined in two exercise files (shader/source_checks.h).
     for (const AssembledSource* source : {&vertex, &fragment}) {
@@ -149,7 +151,8 @@ ShaderProgram::~ShaderProgram() {
 }
 
 ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
-    : id_(std::exchange(other.id_, 0)), locations_(std::move(other.locations_)), warnings_(std::move(other.warnings_)) {}
+    : id_(std::exchange(other.id_, 0)), locations_(std::move(other.locations_)), warnings_(std::move(other.warnings_)),
+      loops_(std::move(other.loops_)) {}
 
 ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
     if (this != &other) {
@@ -157,6 +160,7 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
         id_ = std::exchange(other.id_, 0);
         locations_ = std::move(other.locations_);
         warnings_ = std::move(other.warnings_);
+        loops_ = std::move(other.loops_);
     }
     return *this;
 }

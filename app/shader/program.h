@@ -56,11 +56,14 @@ public:
     GLint uniform(const std::string& name) const;
     // Warnings the driver printed for a program that did build.
     const std::vector<ShaderDiagnostic>& warnings() const { return warnings_; }
+    // The fragment shader's guarded loops (shader/loop_guard.h), loop ID - 1 first.
+    const std::vector<SourceLocation>& guardedLoops() const { return loops_; }
 
 private:
     GLuint id_ = 0;
     mutable std::unordered_map<std::string, GLint> locations_;
     std::vector<ShaderDiagnostic> warnings_;
+    std::vector<SourceLocation> loops_;
 };
 
 }  // namespace rl

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "shader/loop_guard.h"
 
 #include <algorithm>
 #include <cctype>
@@ -28,6 +29,21 @@ std::string AssembledSource::lineText(int combinedLine) const {
     std::size_t start = lineStarts[std::size_t(combinedLine) - 1];
     std::size_t end = text.find('\n', start);
     return text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+std::string AssembledSource::authorLine(int combinedLine) const {
+    std::optional<SourceLocation> where = locate(combinedLine);
+    const SourceFile* file = where && !where->endOfFile ? source(where->file) : nullptr;
+    if (!file || file->guarded.empty()) return lineText(combinedLine);
+    std::size_t start = 0;
+    for (int k = 1; k < where->line && start != std::string::npos; ++k) {
+        start = file->text.find('\n', start);
+        if (start != std::string::npos) ++start;
+    }
+    if (start == std::string::npos) return lineText(combinedLine);
+    std::string line = file->text.substr(start, file->text.find('\n', start) - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return line;
 }
 
 const SourceFile* AssembledSource::source(const std::string& shown) const {
@@ -251,6 +267,10 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
         source.includedAs = includedAs;
         source.exercise = isFramework_ && !isFramework_(file);
         if (source.exercise) {
+            // Every loop bounded, the same on every machine (shader/loop_guard.h).
+            GuardedSource guarded = guardLoops(source.text, source.shown, int(out.loops.size()) + 1);
+            for (int line : guarded.loopLines) out.loops.push_back({source.shown, line});
+            source.guarded = std::move(guarded.text);
             bool fromFramework = includer < 0 || !out.sources[std::size_t(includer)].exercise;
             source.owner = fromFramework ? int(out.sources.size()) : out.sources[std::size_t(includer)].owner;
         }
@@ -265,7 +285,8 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
         Frame& f = stack.back();
         const SourceFile& src = out.sources[std::size_t(f.source)];
         const std::string& shown = src.shown;
-        if (f.pos >= src.text.size()) {
+        const std::string& code = src.guarded.empty() ? src.text : src.guarded;
+        if (f.pos >= code.size()) {
             if (src.exercise) {
                 if (f.inComment)
                     throw Error(shown + ":" + std::to_string(f.commentLine) +
@@ -283,9 +304,9 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
             stack.pop_back();
             continue;
         }
-        std::size_t end = src.text.find('\n', f.pos);
-        if (end == std::string::npos) end = src.text.size();
-        std::string line = src.text.substr(f.pos, end - f.pos);
+        std::size_t end = code.find('\n', f.pos);
+        if (end == std::string::npos) end = code.size();
+        std::string line = code.substr(f.pos, end - f.pos);
         f.pos = end + 1;
         const int k = ++f.line;
         if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -33,6 +33,9 @@ struct SourceFile {
     // For exercise files: the index of the file the framework included, whose
     // scope this one belongs to (itself for those); -1 for framework files.
     int owner = -1;
+    // What the driver gets of an exercise file: `text` with every loop
+    // guarded (shader/loop_guard.h), line for line; empty for framework files.
+    std::string guarded;
 };
 
 struct AssembledSource {
@@ -41,11 +44,17 @@ struct AssembledSource {
     std::vector<std::size_t> lineStarts;  // byte offset of line k+1 in text
     std::vector<std::filesystem::path> files;  // every file read, for hot reload
     std::vector<SourceFile> sources;   // every file read, with its text
+    // The guarded loops of the exercise files (shader/loop_guard.h): loops[ID - 1]
+    // is where loop ID starts in the file the author wrote.
+    std::vector<SourceLocation> loops;
 
     // The origin of a 1-based line of `text`; nullopt when out of range.
     std::optional<SourceLocation> locate(int combinedLine) const;
     // The text of a 1-based line of `text`, without its newline.
     std::string lineText(int combinedLine) const;
+    // That line as its author wrote it (before the loop guard); lineText for
+    // lines raylab added.
+    std::string authorLine(int combinedLine) const;
     // The source file shown as `shown`, or nullptr.
     const SourceFile* source(const std::string& shown) const;
     void append(const std::string& line, SourceLocation where);

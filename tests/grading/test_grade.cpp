@@ -107,6 +107,19 @@ void expectOthersFull(const Student& s, const std::string& id, const std::set<st
 const std::vector<std::string> kMutants = {"03-lambert--missing-pi", "07-fresnel--one-plus-f0",
                                            "09-reflections--reflect-swapped", "10-display--pow-gamma"};
 
+// Student id -> the line put at the top of toneMap in 10-display.glsl.
+std::map<std::string, std::string> runawayLoops() {
+    return {{"runaway-bound", "    for (int i = 0; i < 1000000000 + maxBounces(); ++i) { c = c * 0.5 + 0.5 * c; }\n"},
+            {"runaway-break", "    float spin = 1.0; while (true) { spin += 1.0; if (spin < 0.0) break; }\n"}};
+}
+
+// The line of toneMap's first statement in 10-display.glsl.
+int toneMapBodyLine() {
+    const std::string text = solutionFiles()["10-display.glsl"];
+    const auto at = text.find("vec3 toneMap(vec3 c, int op) {\n");
+    return 2 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+}
+
 // The whole class: every case of the grading policy.
 fs::path buildClass(const fs::path& root) {
     fs::path sub = root / "submissions";
@@ -123,6 +136,14 @@ fs::path buildClass(const fs::path& root) {
     std::string whileTrue = solutionFiles()["10-display.glsl"];
     whileTrue.insert(whileTrue.find("vec3 toneMap(vec3 c, int op) {\n") + 31, "    while (true) {}\n");
     writeFolder(sub / "while-true", solutionFiles({{"10-display.glsl", whileTrue}}));
+    // Loops that never end but that no reading can prove endless: a bound a
+    // billion iterations away read from a uniform, a break never met. The
+    // loop guard ends both (app/shader/loop_guard.h): TIMEOUT with the loop's line.
+    for (const auto& [id, loop] : runawayLoops()) {
+        std::string text = solutionFiles()["10-display.glsl"];
+        text.insert(text.find("vec3 toneMap(vec3 c, int op) {\n") + 31, loop);
+        writeFolder(sub / id, solutionFiles({{"10-display.glsl", text}}));
+    }
     writeFolder(sub / "nan", solutionFiles({{"03-lambert.glsl", nanLambert()}}));
     writeFolder(sub / "include-escape",
                 solutionFiles({{"05-ggx.glsl", "#include \"../../full/05-ggx.glsl\"\n"}}));
@@ -177,6 +198,20 @@ fs::path buildClass(const fs::path& root) {
     renamed.erase("07-fresnel.glsl");
     renamed["03-lambert.glsl"] = "\xEF\xBB\xBF" + renamed["03-lambert.glsl"];
     writeFolder(sub / "renamed", renamed);
+    // Four folders deep inside a zip inside a zip; a folder named like an
+    // exercise file; a macro bomb.
+    std::vector<ZipEntry> inner;
+    for (const auto& [name, text] : solutionFiles()) inner.push_back({"Desktop/graphics/hw/raylab/exercises/" + name, text});
+    writeZip(root / "inner.zip", inner);
+    writeZip(sub / "nested-zips.zip", {{"hand-in/inner.zip", readText(root / "inner.zip")}, {"notes.txt", "hi"}});
+    auto folderNamed = solutionFiles();
+    folderNamed.erase("06-geometry.glsl");
+    folderNamed["06-geometry.glsl/notes.glsl"] = "// my notes\n";
+    writeFolder(sub / "folder-named", folderNamed);
+    std::string macros = solutionFiles()["10-display.glsl"] + "#define A0 1.0\n";
+    for (int k = 1; k <= 24; ++k)
+        macros += "#define A" + std::to_string(k) + " A" + std::to_string(k - 1) + " + A" + std::to_string(k - 1) + "\n";
+    writeFolder(sub / "macro-bomb", solutionFiles({{"10-display.glsl", macros + "float bomb() { return A24; }\n"}}));
     writeText(sub / "roster.txt", "not a student\n");
     return sub;
 }
@@ -199,7 +234,8 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
     for (const std::string& m : kMutants) expected.push_back("mutant-" + m);
     for (const char* id : {"nan", "non-utf8", "oversize", "partial", "symlink", "zero", "zip-bomb", "zip-slip",
-                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true"})
+                           "zip-symlink", "zipped", "messy-repo", "renamed", "while-true", "runaway-bound",
+                           "runaway-break", "nested-zips", "folder-named", "macro-bomb"})
         expected.push_back(id);
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(ids, expected) << readText(out / "grades.csv");
@@ -229,6 +265,25 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     EXPECT_TRUE(contains(renamedNotes, "graded 05-ggx (1).glsl as 05-ggx.glsl")) << renamedNotes;
     EXPECT_TRUE(contains(renamedNotes, "graded 07-fresnel.GLSL as 07-fresnel.glsl")) << renamedNotes;
     EXPECT_TRUE(contains(renamedNotes, "byte-order mark")) << renamedNotes;
+    Student nested = load(out, "nested-zips");
+    EXPECT_DOUBLE_EQ(nested.score, 100);
+    std::string nestedNotes;
+    for (const std::string& n : nested.notes) nestedNotes += n + "\n";
+    EXPECT_TRUE(contains(nestedNotes, "graded the folder hand-in/inner.zip/Desktop/graphics/hw/raylab/exercises/"))
+        << nestedNotes;
+    Student folderNamed = load(out, "folder-named");
+    EXPECT_DOUBLE_EQ(folderNamed.score, 90);
+    EXPECT_EQ(folderNamed.exercises.at("06-geometry").status, "NOT STARTED");
+    std::string folderNotes;
+    for (const std::string& n : folderNamed.notes) folderNotes += n + "\n";
+    EXPECT_TRUE(contains(folderNotes, "06-geometry.glsl is a folder, not a file")) << folderNotes;
+    expectOthersFull(folderNamed, "folder-named", {"06-geometry"});
+    // A macro bomb: the same verdict in every run (decided before compiling), with its reason.
+    Student bomb = load(out, "macro-bomb");
+    EXPECT_EQ(bomb.exercises.at("10-display").status, "REFUSED");
+    EXPECT_TRUE(contains(bomb.exercises.at("10-display").message, "expands to more than a million tokens"))
+        << bomb.exercises.at("10-display").message;
+    EXPECT_DOUBLE_EQ(bomb.score, 90);
 
     Student zero = load(out, "zero");
     EXPECT_DOUBLE_EQ(zero.score, 0);
@@ -265,6 +320,23 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     EXPECT_TRUE(contains(whileTrue.exercises.at("10-display").message, "this loop never ends"))
         << whileTrue.exercises.at("10-display").message;
     EXPECT_DOUBLE_EQ(whileTrue.score, 90);
+    // Real work in every iteration (256 sines): the guard bounds the loop at
+    // 16384 iterations per probe case, which takes llvmpipe longer than the
+    // timeout on this machine; a fast one may reach the bound first. Either
+    // way the reason names what happened: the shader's time, or the loop.
+    EXPECT_TRUE(contains(loop.message, "(shader time)") || contains(loop.message, "a loop in 10-display.glsl:"))
+        << loop.message;
+    EXPECT_FALSE(contains(loop.message, "compiler")) << loop.message;
+    for (const auto& [id, text] : runawayLoops()) {
+        Student s = load(out, id);
+        const Graded& g = s.exercises.at("10-display");
+        EXPECT_EQ(g.status, "TIMEOUT") << id << ": " << g.message;
+        EXPECT_TRUE(contains(g.message, "a loop in 10-display.glsl:" + std::to_string(toneMapBodyLine()) +
+                                            " ran more than 16384 iterations"))
+            << id << ": " << g.message;
+        EXPECT_DOUBLE_EQ(s.score, 90) << id;
+        expectOthersFull(s, id, {"10-display"});
+    }
     expectOthersFull(endless, "endless", {"10-display"});
 
     Student nan = load(out, "nan");
@@ -336,9 +408,9 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     json summary = readJson(out / "summary.json");
     EXPECT_EQ(summary.at("students").get<int>(), int(expected.size()));
-    EXPECT_EQ(summary.at("timeouts").get<int>(), 2);
+    EXPECT_EQ(summary.at("timeouts").get<int>(), 4);
     EXPECT_EQ(summary.at("compile_errors").get<int>(), 2);
-    EXPECT_EQ(summary.at("full_marks").get<int>(), 4);  // full, zipped, messy-repo, renamed
+    EXPECT_EQ(summary.at("full_marks").get<int>(), 5);  // full, zipped, messy-repo, renamed, nested-zips
     if (!HasFailure()) fs::remove_all(root);
 }
 
@@ -389,6 +461,36 @@ TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
     EXPECT_TRUE(contains(changed.output, "graded 1, skipped 5")) << changed.output;
     EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,100.00\n"))
         << readText(out / "grades.csv");
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+// The run's shader cache (OUT/.shader-cache) holds compiled code keyed by
+// the whole source, never a result: swap two students' files and run again
+// over the same OUT, with the cache warm, and each gets what the files now
+// deserve.
+TEST(GradeRun, TheRunsShaderCacheCannotCarryResultsBetweenStudents) {
+    fs::path root = freshTempDir("grade_cache");
+    fs::path sub = root / "submissions", out = root / "out";
+    const std::string mutant = "05-ggx--missing-pi";
+    auto assign = [&](const std::string& who) {
+        fs::remove_all(sub);
+        writeFolder(sub / who, solutionFiles());
+        writeFolder(sub / (who == "ann" ? "bob" : "ann"), solutionFiles({{"05-ggx.glsl", mutantText(mutant)}}));
+    };
+    assign("ann");  // ann full, bob the mutant
+    writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"05-ggx\", \"weight\": 10}]}");
+    CommandResult first = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    ASSERT_EQ(first.status, 0) << first.output;
+    ASSERT_TRUE(fs::is_directory(out / ".shader-cache"));
+    EXPECT_FALSE(fs::is_empty(out / ".shader-cache")) << "the run filled its cache";
+    EXPECT_DOUBLE_EQ(load(out, "ann").score, 10);
+    EXPECT_LT(load(out, "bob").score, 10);
+    assign("bob");  // now bob full, ann the mutant: both resubmitted, graded again over the warm cache
+    CommandResult second = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    ASSERT_EQ(second.status, 0) << second.output;
+    EXPECT_DOUBLE_EQ(load(out, "bob").score, 10);
+    EXPECT_LT(load(out, "ann").score, 10);
+    EXPECT_EQ(load(out, "ann").exercises.at("05-ggx").status, "FAIL");
     if (!HasFailure()) fs::remove_all(root);
 }
 

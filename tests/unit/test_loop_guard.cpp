@@ -1,0 +1,107 @@
+// The loop guard (app/shader/loop_guard.h): every loop of an exercise file
+// gets the guard in its condition, on the same line; what cannot be bounded
+// is refused with the file and line.
+#include "core/error.h"
+#include "core/paths.h"
+#include "shader/loop_guard.h"
+#include "shader/shader_library.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+using namespace rl;
+
+namespace {
+
+int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+std::string refusal(const std::string& text) {
+    try {
+        guardLoops(text, "student/05-ggx.glsl", 1);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(LoopGuard, EveryKindOfLoopIsGuardedOnItsOwnLine) {
+    const std::string text =
+        "float f(float x) {\n"                                   // 1
+        "    for (int i = 0; i < 4; ++i) x += 1.0;\n"           // 2
+        "    for (;;) { if (x > 9.0) break; x += 1.0; }\n"      // 3
+        "    while (x < 100.0)\n"                               // 4
+        "        x *= 2.0;\n"                                   // 5
+        "    do {\n"                                            // 6
+        "        x -= 1.0;  // while (true) in a comment\n"     // 7
+        "    } while (x > 3.0 &&\n"                             // 8
+        "             x < 1000.0);\n"                           // 9
+        "    /* for (;;) {} */ return x;\n"                     // 10
+        "}\n";
+    GuardedSource g = guardLoops(text, "05-ggx.glsl", 7);
+    EXPECT_EQ(lines(g.text), lines(text));
+    EXPECT_EQ(g.loopLines, (std::vector<int>{2, 3, 4, 6}));  // the do-while is where its `do` is
+    EXPECT_NE(g.text.find("for (int i = 0; rl_loop((i < 4), 7); ++i)"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("for (; rl_loop(true, 8);)"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("while (rl_loop((x < 100.0), 9))"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("} while (rl_loop((x > 3.0 &&\n             x < 1000.0), 10));"), std::string::npos) << g.text;
+    EXPECT_NE(g.text.find("// while (true) in a comment"), std::string::npos);
+    EXPECT_NE(g.text.find("/* for (;;) {} */"), std::string::npos);
+    // A file without loops is unchanged, byte for byte.
+    const std::string plain = "float g(float x) { return x * (x + 1.0); }\n// for (;;)\n";
+    EXPECT_EQ(guardLoops(plain, "a.glsl", 1).text, plain);
+    // Names that contain the keywords are no loops.
+    const std::string names = "float format(float whiley) { float do_it = whiley; return do_it; }\n";
+    EXPECT_EQ(guardLoops(names, "a.glsl", 1).text, names);
+}
+
+TEST(LoopGuard, RefusesWhatItCannotBound) {
+    EXPECT_EQ(refusal("#define FOREVER while (true)\nvoid f() { FOREVER {} }\n").substr(0, 31),
+              "student/05-ggx.glsl:1: error: a")
+        << refusal("#define FOREVER while (true)\n");
+    EXPECT_NE(refusal("#define LOOP(n) \\\n  for (int i = 0; i < n; ++i)\n").find("05-ggx.glsl:2: error: a loop inside a #define"),
+              std::string::npos);
+    EXPECT_NE(refusal("void f() {\n  float b = 1.0;\n  while (bool c = b > 0.0) b -= 1.0;\n}\n")
+                  .find("05-ggx.glsl:3: error: a loop condition that declares a variable"),
+              std::string::npos);
+    EXPECT_NE(refusal("void f() {\n  float big[100000000];\n}\n").find("05-ggx.glsl:2: error: an array of 100000000 elements"),
+              std::string::npos);
+    EXPECT_EQ(refusal("void f() {\n  float small[16];\n  vec3 v[3] = vec3[3](vec3(0.0), vec3(1.0), vec3(2.0));\n}\n"), "");
+    // A syntax error is the driver's to report: left as it is.
+    EXPECT_EQ(refusal("void f() { for (int i = 0; i < 3) {} while x {} }\n"), "");
+}
+
+TEST(LoopGuard, TheShaderLimitIsTheHostLimit) {
+    std::ifstream in(shadersDir() / "loop_guard.glsl");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::smatch m;
+    const std::string s = text.str();
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_LIMIT = (\d+);)")));
+    EXPECT_EQ(std::stoi(m[1]), kLoopLimit);
+}
+
+TEST(LoopGuard, TrippedLoopIsTheLowestIdMarked) {
+    EXPECT_EQ(trippedLoop({1.0f, 0.0f, 1.0f}), 0);
+    EXPECT_EQ(trippedLoop({1.0f, -3.0f, -2.0f, 1.0f}), 2);
+    EXPECT_EQ(trippedLoop({-1.0e30f}), 0);  // NOT_STARTED is no loop
+}
+
+TEST(LoopGuard, TheAssemblerGuardsExerciseFilesOnlyAndKeepsTheAuthorsLines) {
+    AssembledSource a = assembleShader("main.frag", Implementation{solutionsDir(), {}}, {});
+    // The solutions' one loop (09's bounce loop) is guarded; no framework file is.
+    ASSERT_EQ(a.loops.size(), 1u);
+    EXPECT_NE(a.loops[0].file.find("09-reflections.glsl"), std::string::npos);
+    for (const SourceFile& f : a.sources) EXPECT_EQ(f.exercise, !f.guarded.empty()) << f.shown;
+    for (int k = 1; k <= int(a.lines.size()); ++k) {
+        if (a.lineText(k).find("rl_loop(") == std::string::npos || a.lines[std::size_t(k) - 1].file.find("shaders/") != std::string::npos)
+            continue;
+        EXPECT_EQ(a.lines[std::size_t(k) - 1].line, a.loops[0].line);
+        EXPECT_EQ(a.authorLine(k).find("rl_loop"), std::string::npos) << a.authorLine(k);
+        EXPECT_NE(a.authorLine(k).find("for (int bounce = 0; bounce <= maxBounces(); ++bounce)"), std::string::npos);
+    }
+}
