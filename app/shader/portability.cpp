@@ -31,20 +31,6 @@ std::string trim(const std::string& s) {
     return s.substr(first, last - first + 1);
 }
 
-// From `begin`, the end of the expression: a ';' or '{', or a ')' / ',' that
-// closes nothing opened inside it.
-std::size_t expressionEnd(const std::string& line, std::size_t begin) {
-    int depth = 0;
-    for (std::size_t i = begin; i < line.size(); ++i) {
-        char c = line[i];
-        if (c == '(' || c == '[') ++depth;
-        else if ((c == ')' || c == ']') && depth-- == 0) return i;
-        else if (c == ',' && depth == 0) return i;
-        else if (c == ';' || c == '{') return i;
-    }
-    return line.size();
-}
-
 // `expression` with each integer literal that takes part in float arithmetic
 // written as a float (5 -> 5.0). Literals inside an index ([i + 1]) or inside
 // a constructor (int(...), float(i + 1), vec3(1, 0, 0)) stay as they are; so do 0x.. and 5u.
@@ -108,17 +94,11 @@ std::string floatLiterals(const std::string& expression, bool& changed) {
 
 std::string shown(const std::string& code) { return printable(trim(code), kMaxShownFix); }
 
-// "write EXPR" with the expression's integer literals as floats, or, where
-// it has none, EXPR wrapped in float(...) when `wrap`, else "".
-std::string fixOf(const std::string& expression, bool wrap) {
-    bool changed = false;
-    std::string rewritten = floatLiterals(expression, changed);
-    if (changed) return "write " + shown(rewritten);
-    if (wrap && !trim(expression).empty()) return "write float(" + shown(expression) + ")";
-    return "";
-}
+// `code` in backquotes, trimmed and cut for the terminal.
+std::string codeSpan(const std::string& code) { return "`" + shown(code) + "`"; }
 
-// Splits "a, f(b, c), d" at its top-level commas (positions kept).
+// Splits "a, f(b, c), d" at its top-level commas (positions kept); `close`
+// is the closing parenthesis, npos when the line ends first.
 std::vector<std::pair<std::size_t, std::size_t>> splitArguments(const std::string& line, std::size_t open,
                                                                 std::size_t& close) {
     std::vector<std::pair<std::size_t, std::size_t>> args;
@@ -128,7 +108,7 @@ std::vector<std::pair<std::size_t, std::size_t>> splitArguments(const std::strin
         char c = line[i];
         if (c == '(' || c == '[') ++depth;
         else if ((c == ')' || c == ']') && depth > 0) --depth;
-        else if ((c == ')' && depth == 0) || (c == ',' && depth == 0)) {
+        else if ((c == ')' || c == ',') && depth == 0) {
             args.emplace_back(start, i);
             start = i + 1;
             if (c == ')') {
@@ -153,58 +133,54 @@ std::vector<std::string> splitTypes(const std::string& list) {
     return types;
 }
 
-bool isIntType(const std::string& t) { return t == "int" || t == "uint" || t.rfind("ivec", 0) == 0 || t.rfind("uvec", 0) == 0; }
+bool isScalarInt(const std::string& t) { return t == "int" || t == "uint"; }
 bool isFloatType(const std::string& t) { return t == "float" || t.rfind("vec", 0) == 0 || t.rfind("mat", 0) == 0; }
 
-// A call `name(T1, T2, ...)` with float and int arguments mixed: the call
-// rewritten with each int argument as a float.
-std::string callFix(const std::string& name, const std::vector<std::string>& types, const std::string& line, int column) {
-    // Mesa points at the start of the call; otherwise take the first call of that name on the line.
-    std::size_t at = column > 0 ? std::size_t(column - 1) : std::string::npos;
-    if (at == std::string::npos || line.compare(at, name.size(), name) != 0) {
-        at = std::string::npos;
-        for (std::size_t p = line.find(name); p != std::string::npos; p = line.find(name, p + 1))
-            if ((p == 0 || !identChar(line[p - 1])) && !identChar(line[p + name.size()] )) {
-                at = p;
-                break;
-            }
-    }
-    if (at == std::string::npos) return "";
-    std::size_t open = line.find_first_not_of(" \t", at + name.size());
-    if (open == std::string::npos || line[open] != '(') return "";
-    std::size_t close = 0;
-    auto args = splitArguments(line, open, close);
-    if (close == std::string::npos || args.size() != types.size()) return "";
+// A call `name(T1, T2, ...)` that mixes float and int arguments, found on
+// the line (the first call of that name with as many arguments), rewritten
+// with each int argument as a float: a literal gets its point, anything else
+// float(...). "" when the line does not show the call.
+std::string callFix(const std::string& name, const std::vector<std::string>& types, const std::string& line) {
     bool anyFloat = false;
     for (const auto& t : types) anyFloat = anyFloat || isFloatType(t);
     if (!anyFloat) return "";
-    std::string call = name + "(";
-    for (std::size_t k = 0; k < args.size(); ++k) {
-        std::string arg = trim(line.substr(args[k].first, args[k].second - args[k].first));
-        if (isIntType(types[k]) && types[k].find("vec") == std::string::npos) {
-            bool changed = false;
-            std::string asFloat = floatLiterals(arg, changed);
-            bool literal = arg.find_first_not_of("0123456789") == std::string::npos;
-            arg = literal ? asFloat : "float(" + arg + ")";
+    for (std::size_t at = line.find(name); at != std::string::npos; at = line.find(name, at + 1)) {
+        if ((at > 0 && identChar(line[at - 1])) || identChar(line[at + name.size()])) continue;
+        std::size_t open = line.find_first_not_of(" \t", at + name.size());
+        if (open == std::string::npos || line[open] != '(') continue;
+        std::size_t close = 0;
+        auto args = splitArguments(line, open, close);
+        if (close == std::string::npos || args.size() != types.size()) continue;
+        std::string call = name + "(";
+        for (std::size_t k = 0; k < args.size(); ++k) {
+            std::string arg = trim(line.substr(args[k].first, args[k].second - args[k].first));
+            if (isScalarInt(types[k])) {
+                bool literal = !arg.empty() && arg.find_first_not_of("0123456789") == std::string::npos;
+                arg = literal ? arg + ".0" : "float(" + arg + ")";
+            }
+            call += (k ? ", " : "") + arg;
         }
-        call += (k ? ", " : "") + arg;
+        return "write " + codeSpan(call + ")");
     }
-    return "write " + shown(call + ")");
+    return "";
 }
 
-std::string afterWord(const std::string& line, std::size_t from, const std::string& word) {
-    std::size_t at = line.find(word, from);
-    return at == std::string::npos ? "" : line.substr(at + word.size(), expressionEnd(line, at + word.size()) -
-                                                                           (at + word.size()));
+// The line with its integer literals written as floats (floatLiterals), as
+// "write `...`"; "" when it has none.
+std::string lineFix(const std::string& line) {
+    bool changed = false;
+    std::string rewritten = floatLiterals(line, changed);
+    return changed ? "write " + codeSpan(rewritten) : "";
 }
 
 }  // namespace
 
-std::string explainPortability(const std::string& message, const std::string& line, int column) {
-    const std::size_t start = column > 0 && std::size_t(column - 1) < line.size() ? std::size_t(column - 1) : 0;
-    const std::string expression = line.substr(start, expressionEnd(line, start) - start);
+// Mesa's columns are not used: its preprocessor collapses white space and
+// expands macros before the compiler counts, so they drift from the line the
+// student wrote. The fixes are found on the line itself.
+std::string explainPortability(const std::string& message, const std::string& line) {
     std::string what, fix;
-    auto with = [&](const std::string& text) { return what + (text.empty() ? "" : ": " + text); };
+    auto with = [&](const std::string& otherwise) { return what + ": " + (fix.empty() ? otherwise : fix); };
     // Mesa: "no matching function for call to `pow(float, int)'; candidates are:"
     const std::string noMatch = "no matching function for call to `";
     if (auto at = message.find(noMatch); at != std::string::npos) {
@@ -212,56 +188,46 @@ std::string explainPortability(const std::string& message, const std::string& li
         call = call.substr(0, call.find('\''));
         auto open = call.find('(');
         if (open != std::string::npos && call.back() == ')') {
-            std::string name = call.substr(0, open);
-            auto types = splitTypes(call.substr(open + 1, call.size() - open - 2));
             what = call + " does not exist in GLSL ES";
-            fix = callFix(name, types, line, column);
-            if (fix.empty()) fix = "convert the int arguments with float(...) or write them as 5.0";
-            return with(fix);
+            fix = callFix(call.substr(0, open), splitTypes(call.substr(open + 1, call.size() - open - 2)), line);
+            return with("write the int arguments as floats: 5.0, float(n)");
         }
     }
     if (message.find("could not implicitly convert operands to arithmetic operator") != std::string::npos) {
         what = "an int in float arithmetic";
-        fix = fixOf(expression, false);
-        return with(fix.empty() ? "convert the int with float(...)" : fix);
+        fix = lineFix(line);
+        return with("convert the int with float(...)");
     }
     if (message.find("operands of `") != std::string::npos && message.find("must have the same type") != std::string::npos) {
         std::string op = message.substr(message.find('`') + 1);
         op = op.substr(0, op.find('\''));
         what = "`" + op + "` between a float and an int";
-        fix = fixOf(expression, false);
-        return with(fix.empty() ? "convert the int with float(...)" : fix);
+        fix = lineFix(line);
+        return with("convert the int with float(...)");
     }
     if (message.find("second and third operands of ?: operator") != std::string::npos) {
         what = "?: with a float and an int branch";
-        // Mesa points at the second operand: the fix covers both branches.
-        fix = fixOf(expression, false);
-        std::size_t question = line.rfind('?', start);
-        if (question != std::string::npos) {
-            std::size_t from = line.find_first_not_of(" \t", question + 1);
-            std::size_t colon = line.find(':', from);
-            if (colon != std::string::npos) {
-                std::size_t end = expressionEnd(line, colon + 1);
-                bool changed = false;
-                std::string branches = floatLiterals(line.substr(from, end - from), changed);
-                if (changed) fix = "write ? " + shown(branches);
-            }
-        }
-        return with(fix.empty() ? "make both branches floats" : fix);
+        fix = lineFix(line);
+        return with("make both branches floats");
     }
     // "initializer of type int cannot be assigned to variable of type float",
     // "value of type int cannot be assigned to variable of type float".
     if (message.find("of type int cannot be assigned to variable of type float") != std::string::npos) {
         what = message.rfind("initializer", 0) == 0 ? "an int initialises a float" : "an int assigned to a float";
-        std::string value = afterWord(line, start, "=");
-        fix = fixOf(value, true);
-        return with(fix);
+        fix = lineFix(line);
+        std::size_t equals = line.find('=');
+        if (fix.empty() && equals != std::string::npos) {
+            std::size_t end = line.find(';', equals);
+            std::string value = trim(line.substr(equals + 1, end == std::string::npos ? std::string::npos : end - equals - 1));
+            fix = "write " + codeSpan(line.substr(0, equals + 1) + " float(" + value + ");");
+        }
+        return with("convert the int with float(...)");
     }
     // "`return' with wrong type int, in function `f' returning type float"
     if (message.find("`return' with wrong type int") != std::string::npos) {
         what = "a float function returns an int";
-        fix = fixOf(afterWord(line, 0, "return"), true);
-        return with(fix);
+        fix = lineFix(line);
+        return with("return float(...)");
     }
     return message;
 }
@@ -295,7 +261,7 @@ std::string portabilityErrors(const AssembledSource& es) {
         }
         const std::string raw = es.lineText(m.line);
         out += (out.empty() ? "" : "\n") + where->file + ":" + std::to_string(where->line) +
-               ": portability error: " + explainPortability(m.text, raw, m.column) + "\n    " + shown(raw);
+               ": portability error: " + explainPortability(m.text, raw) + "\n    " + shown(raw);
         ++shownErrors;
     }
     if (more) out += "\n... and " + std::to_string(more) + " more line" + (more == 1 ? "" : "s") + " the same way";

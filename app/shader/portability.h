@@ -7,8 +7,8 @@
 // rules, so the check needs nothing but the context it already has.
 //
 // Each error in an exercise file becomes one line
-//     exercises/07-fresnel.glsl:5: portability error: pow(float, int) does not exist in GLSL ES: write pow(1.0 - VoH, 5.0)
-//         return F0 + (1.0 - F0) * pow(1.0 - VoH, 5);
+//     exercises/07-fresnel.glsl:5: portability error: pow(float, int) does not exist in GLSL ES: write `pow(m, 5.0)`
+//         return F0 + (1.0 - F0) * pow(m, 5);
 // with the fix spelled out where the line shows it (an integer literal
 // written as a float, an int expression wrapped in float(...)).
 #pragma once
@@ -30,9 +30,9 @@ extern const char* const kPortabilityHint;
 // are not the student's and give "".
 std::string portabilityErrors(const AssembledSource& esSource);
 
-// The part after "portability error: " for one driver message about
-// `line` (the raw source line, `column` 1-based where the driver says the
-// expression starts, 0 when unknown). Pure: unit-tested on Mesa's messages.
-std::string explainPortability(const std::string& driverMessage, const std::string& line, int column);
+// The part after "portability error: " for one driver message about the
+// source line `line`: what GLSL ES lacks and the line (or call) as it should
+// read. Pure: unit-tested on Mesa's messages.
+std::string explainPortability(const std::string& driverMessage, const std::string& line);
 
 }  // namespace rl

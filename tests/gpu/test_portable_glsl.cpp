@@ -62,7 +62,7 @@ TEST(PortableGlsl, StrictCompileReallyIsStrict) {
     EXPECT_NO_THROW(ShaderProgram(vertex, assembleShader("main.frag", impl, {})));
     std::string errors = portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
     EXPECT_NE(errors.find("03-lambert.glsl:"), std::string::npos) << errors;
-    EXPECT_NE(errors.find("portability error: an int in float arithmetic: write albedo / PI * 1.0"), std::string::npos)
+    EXPECT_NE(errors.find("portability error: an int in float arithmetic: write `return albedo / PI * 1.0;`"), std::string::npos)
         << errors;
 }
 

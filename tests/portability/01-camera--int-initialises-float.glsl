@@ -1,6 +1,6 @@
 // portability slip in: 01-camera
 // slip: float fn = n;  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
-// reported as: "an int initialises a float: write float(n)"
+// reported as: "an int initialises a float: write `float fn = float(n);`"
 // Exercise 01: camera rays. Handout: docs/exercises/01-camera.md
 
 // Offset of sample s inside its pixel, for n*n samples per pixel: the centre

@@ -1,6 +1,6 @@
 // portability slip in: 08-cook-torrance
 // slip: float r = clamp(roughness, 0.045, 1);  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
-// reported as: "clamp(float, float, int) does not exist in GLSL ES: write clamp(roughness, 0.045, 1.0)"
+// reported as: "clamp(float, float, int) does not exist in GLSL ES: write `clamp(roughness, 0.045, 1.0)`"
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: docs/exercises/08-cook-torrance.md
 
 // GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),

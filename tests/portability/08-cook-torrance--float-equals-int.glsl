@@ -1,6 +1,6 @@
 // portability slip in: 08-cook-torrance
 // slip: if (NoL == 0) return vec3(0.0);  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
-// reported as: "`==` between a float and an int: write NoL == 0.0"
+// reported as: "`==` between a float and an int: write `if (NoL == 0.0) return vec3(0.0);`"
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: docs/exercises/08-cook-torrance.md
 
 // GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
