@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     rl::addRecordCommand(app);
 #else
     app.add_subcommand("view", "The live window (not in this build)")->allow_extras()->callback([] {
-        throw rl::Error("view: this build has no window support (RAYLAB_WITH_GLFW=OFF); use `raylab render`");
+        throw rl::Error("view: this build has no window support (RAYLAB_WITH_VIEW=OFF); use `raylab render`");
     });
 #endif
     std::vector<std::string> names;  // what was registered above: one list, never out of date

@@ -12,6 +12,7 @@
 #include "render/gl_renderer.h"
 #include "render/shader_config.h"
 #include "shader/loop_guard.h"
+#include "shader/portability.h"
 #include "shader/shader_library.h"
 
 #include <nlohmann/json.hpp>
@@ -365,6 +366,16 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         report.message = text.substr(0, text.find('\n'));
         report.details = text;
         report.hint = "fix the first error; the line after it is the line it is about";
+        return report;
+    }
+    // Portable GLSL: the same files as GLSL ES 3.00, which stricter drivers
+    // and browsers compile; a COMPILE ERROR marked "portability error" (docs/decisions.md).
+    if (std::string errors = portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
+        !errors.empty()) {
+        report.status = CheckStatus::CompileError;
+        report.message = errors.substr(0, errors.find('\n'));
+        report.details = errors;
+        report.hint = kPortabilityHint;
         return report;
     }
 

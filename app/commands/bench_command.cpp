@@ -115,7 +115,7 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--sweeps", options->sweeps,
                     "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all); "
                     "view: the live view's programs against the generic one (1280x720 unless --size)");
-    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--clock", options->clock,
                     "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")
         ->capture_default_str();

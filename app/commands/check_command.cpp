@@ -108,7 +108,7 @@ void addCheckCommand(CLI::App& app) {
     cmd->add_option("--timeout", o->timeout, "Seconds allowed per exercise")
         ->capture_default_str()
         ->check(secondsIn(0, 86400));
-    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_flag("-v,--verbose", o->verbose, "Print every detail");
     cmd->callback([o] {
         int status = runCheck(*o);

@@ -140,7 +140,7 @@ void addGradeCommand(CLI::App& app) {
     cmd->add_option("--shard", o->shard, "Grade only slice I of N (I/N); join the slices with `grade merge`")
         ->check(notEmpty());
     cmd->add_flag("--force", o->force, "Grade again students already graded in OUT");
-    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--backend", o->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_flag("--gradescope", o->gradescope,
                   "Run as Gradescope's autograder: ROOT/submission in, ROOT/results/results.json out");
     cmd->add_option("--gradescope-root", o->gradescopeRoot,

@@ -14,6 +14,7 @@
 #include "camera/trackball.h"
 #include "core/error.h"
 #include "core/image.h"
+#include "core/isolated.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -23,9 +24,6 @@
 #include "view/caption_layer.h"
 #include "view/view_caption.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,7 +32,6 @@
 #include <memory>
 #include <vector>
 
-extern char** environ;
 
 namespace fs = std::filesystem;
 
@@ -56,16 +53,7 @@ struct RecordOptions {
 };
 
 // Runs argv; true on exit status 0. Output goes to this process's stderr.
-bool run(std::vector<std::string> args) {
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    pid_t pid = 0;
-    if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return false;
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-}
+bool run(const std::vector<std::string>& args) { return runProgram(args); }
 
 bool onPath(const std::string& program) {
     const char* path = std::getenv("PATH");

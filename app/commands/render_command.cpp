@@ -1,5 +1,5 @@
 // raylab render [SCENE] -o out.png [--hdr out.pfm] [--size WxH] [--spp N]
-//               [--backend auto|egl|osmesa] [--impl DIR] [--cpu] [--view NAME]
+//               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu] [--view NAME]
 #include "commands/commands.h"
 
 #include "checks/exercise_registry.h"
@@ -87,7 +87,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--size", options->size, "Override the scene's size, WIDTHxHEIGHT")->check(sizeValue());
     cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)")
         ->check(squareNumberIn(1, 1024));
-    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl or osmesa")->capture_default_str();
+    cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)")
         ->check(notEmpty());
     cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")

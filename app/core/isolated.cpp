@@ -6,12 +6,28 @@
 #include <exception>
 
 #include <fcntl.h>
+#include <spawn.h>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+extern char** environ;
+
 namespace rl {
+
+bool runProgram(const std::vector<std::string>& args) {
+    if (args.empty()) return false;
+    std::vector<std::string> copies = args;
+    std::vector<char*> argv;
+    for (auto& a : copies) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return false;
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid) return false;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
 
 IsolatedResult runIsolated(const std::function<std::string()>& work, const IsolationLimits& limits) {
     IsolatedResult result;

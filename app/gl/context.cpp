@@ -10,7 +10,8 @@ Backend parseBackend(const std::string& name) {
     if (name == "auto") return Backend::Auto;
     if (name == "egl") return Backend::Egl;
     if (name == "osmesa") return Backend::OsMesa;
-    throw Error("--backend: unknown backend " + quotedValue(name) + " (expected auto, egl or osmesa)");
+    if (name == "glfw") return Backend::Glfw;
+    throw Error("--backend: unknown backend " + quotedValue(name) + " (expected auto, egl, osmesa or glfw)");
 }
 
 std::string backendName(Backend backend) {
@@ -18,6 +19,7 @@ std::string backendName(Backend backend) {
         case Backend::Auto: return "auto";
         case Backend::Egl: return "egl";
         case Backend::OsMesa: return "osmesa";
+        case Backend::Glfw: return "glfw";
     }
     return "?";
 }
@@ -35,6 +37,9 @@ std::unique_ptr<GlContext> createHeadlessContext(Backend backend) {
     }
     if (backend == Backend::Auto || backend == Backend::OsMesa) {
         if (auto c = attempt("OSMesa", detail::createOsMesaContext)) return c;
+    }
+    if (backend == Backend::Auto || backend == Backend::Glfw) {
+        if (auto c = attempt("GLFW", detail::createHiddenGlfwContext)) return c;
     }
     throw Error("no OpenGL 3.3 context could be created (tried " + tried +
                 "); install Mesa with scripts/setup.sh");
@@ -58,10 +63,28 @@ std::string describeCurrentContext(const std::string& backend) {
 
 }  // namespace detail
 
+#ifndef RAYLAB_WITH_EGL
+namespace detail {
+std::unique_ptr<GlContext> createEglContext(std::string& why) {
+    why = "not built (RAYLAB_WITH_EGL=OFF)";
+    return nullptr;
+}
+}  // namespace detail
+#endif
+
 #ifndef RAYLAB_WITH_OSMESA
 namespace detail {
 std::unique_ptr<GlContext> createOsMesaContext(std::string& why) {
     why = "not built (RAYLAB_WITH_OSMESA=OFF)";
+    return nullptr;
+}
+}  // namespace detail
+#endif
+
+#ifndef RAYLAB_WITH_GLFW_CONTEXT
+namespace detail {
+std::unique_ptr<GlContext> createHiddenGlfwContext(std::string& why) {
+    why = "not built (RAYLAB_WITH_GLFW=OFF)";
     return nullptr;
 }
 }  // namespace detail

@@ -1,7 +1,8 @@
 // An OpenGL 3.3 core context, made current on the calling thread, with the
-// gl:: functions loaded. Headless backends (EGL, OSMesa) live here; the
-// window backend (GLFW) is in context_glfw.h. The backend is named and chosen
-// in one place: createHeadlessContext().
+// gl:: functions loaded. Headless backends (EGL, OSMesa, and a hidden GLFW
+// window where neither is built: macOS, Windows) live here; the live
+// window (GLFW) is in context_glfw.h. The backend is named and chosen in one
+// place: createHeadlessContext().
 #pragma once
 
 #include <memory>
@@ -9,9 +10,9 @@
 
 namespace rl {
 
-enum class Backend { Auto, Egl, OsMesa };
+enum class Backend { Auto, Egl, OsMesa, Glfw };
 
-Backend parseBackend(const std::string& name);  // "auto" | "egl" | "osmesa", throws rl::Error
+Backend parseBackend(const std::string& name);  // "auto" | "egl" | "osmesa" | "glfw", throws rl::Error
 std::string backendName(Backend backend);
 
 class GlContext {
@@ -24,14 +25,17 @@ public:
 };
 
 // EGL first (device platform, then Mesa surfaceless, then the default
-// display), then OSMesa. Throws rl::Error with one line saying what was
-// tried and why each failed.
+// display), then OSMesa, then a hidden GLFW window (3.3 core, never shown;
+// needs a window system, e.g. Xvfb on a server). Each only where it is built
+// (RAYLAB_WITH_EGL, RAYLAB_WITH_OSMESA, RAYLAB_WITH_GLFW). Throws rl::Error
+// with one line saying what was tried and why each failed.
 std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
 
 namespace detail {
 // Each returns nullptr and fills `why` when the backend cannot start.
 std::unique_ptr<GlContext> createEglContext(std::string& why);
 std::unique_ptr<GlContext> createOsMesaContext(std::string& why);
+std::unique_ptr<GlContext> createHiddenGlfwContext(std::string& why);
 // Common tail: loads gl:: through `resolve`, checks the version is >= 3.3.
 std::string describeCurrentContext(const std::string& backend);
 }  // namespace detail

@@ -8,6 +8,10 @@
 #define GLFW_INCLUDE_NONE  // gl_api.h brings the GL declarations; GLFW must not add its own
 #include <GLFW/glfw3.h>
 
+#include <chrono>
+#include <memory>
+#include <thread>
+
 namespace rl {
 namespace {
 
@@ -40,8 +44,8 @@ GLFWmonitor* monitorOf(GLFWwindow* window) {
 
 GlfwWindowContext::GlfwWindowContext(const WindowSettings& settings) {
     if (!glfwInit())
-        throw Error("no window system (" + lastGlfwError("glfwInit failed") +
-                    "); use `raylab render` for pictures without a window");
+        throw Error("no window system (" + lastGlfwError("glfwInit failed") + ")" +
+                    (settings.visible ? "; use `raylab render` for pictures without a window" : ""));
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
 #ifdef __APPLE__
     // macOS offers core profiles only as 3.2+ forward-compatible; 4.1 is its newest.
@@ -72,13 +76,38 @@ GlfwWindowContext::GlfwWindowContext(const WindowSettings& settings) {
     glfwSwapInterval(settings.vsync ? 1 : 0);
     try {
         gl::load([](const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); });
-        description_ = detail::describeCurrentContext("GLFW");
+        description_ = detail::describeCurrentContext(settings.visible ? "GLFW" : "GLFW (hidden window)");
     } catch (...) {
         glfwDestroyWindow(window_);
         glfwTerminate();
         throw;
     }
 }
+
+namespace detail {
+std::unique_ptr<GlContext> createHiddenGlfwContext(std::string& why) {
+    // Rendering goes into framebuffer objects: the window only carries the
+    // context, so it is tiny and never shown, and vsync is irrelevant.
+    WindowSettings hidden;
+    hidden.width = 16;
+    hidden.height = 16;
+    hidden.title = "raylab (hidden)";
+    hidden.visible = false;
+    hidden.vsync = false;
+    // A busy X server (Xvfb on a loaded CI machine) now and then refuses a
+    // connection it accepts a moment later: three tries, 0.2 s apart.
+    constexpr int kTries = 3;
+    for (int attempt = 1;; ++attempt) {
+        try {
+            return std::make_unique<GlfwWindowContext>(hidden);
+        } catch (const Error& e) {
+            why = e.what();
+            if (attempt == kTries || why.rfind("no window system", 0) != 0) return nullptr;
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        }
+    }
+}
+}  // namespace detail
 
 GlfwWindowContext::~GlfwWindowContext() {
     glfwDestroyWindow(window_);

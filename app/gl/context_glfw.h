@@ -1,8 +1,8 @@
 // The window backend: a GLFW window with an OpenGL 3.3 core context (4.1
 // forward-compatible on macOS, the only core versions Apple offers), made
 // current on the calling thread with gl:: loaded through glfwGetProcAddress.
-// Only `raylab view` uses it; headless rendering never opens a window
-// (gl/context.h).
+// `raylab view` uses it; headless work uses a hidden one only where no EGL
+// or OSMesa is built or starts (gl/context.h: --backend glfw).
 #pragma once
 
 #include "gl/context.h"
@@ -17,7 +17,7 @@ struct WindowSettings {
     int width = 640;  // initial size in screen coordinates (HiDPI: the framebuffer is larger)
     int height = 480;
     std::string title = "raylab";
-    bool visible = true;  // false: hidden window (never used for headless work, see context.h)
+    bool visible = true;  // false: hidden window, the last headless backend (see context.h)
     bool vsync = true;    // false: swap as fast as the driver allows (timing runs)
 };
 
