@@ -28,6 +28,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     int sphere = NO_SPHERE;
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
     float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
+    bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
@@ -36,6 +37,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             leavingGeometry = sphereI;
 #ifdef RL_SPHERE_COUNT
             leavingC = sphereCameraC(i);
+            leavingResidual = residualFormCandidate(i);
 #endif
         }
         if (t > 0.0 && i != leaving) {
@@ -46,6 +48,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
                 geometry = sphereI;
 #ifdef RL_SPHERE_COUNT  // unrolled: a direct load; a loop would gather it for every sphere
                 cameraC = sphereCameraC(i);
+                residual = residualFormCandidate(i);  // a constant: the residual form folds away where no sphere needs it
 #endif
             }
         }
@@ -57,12 +60,13 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             sphere = leaving;
             geometry = leavingGeometry;
             cameraC = leavingC;
+            residual = leavingResidual;
         }
     }
 #ifndef RL_SPHERE_COUNT
     if (sphere != NO_SPHERE) cameraC = sphereCameraC(sphere);
 #endif
-    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC);
+    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC, residual);
 #if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
     if (g_probeCalls == 0) g_probeFirstHit = hit;
     if (g_probeCalls == 1) g_probeSecondOrigin = origin;
@@ -77,8 +81,27 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
 // sphere a shadow ray leaves is decided before, exactly (lighting.glsl,
 // shadowVisibility): from outside it hides nothing the ray goes to, from
 // inside it hides every light outside it.
+//
+// A program for one picture knows where everything is: RL_OCCLUDERS lists,
+// per light, the spheres that can lie between that light and some point of
+// another sphere (a bit mask per light, computed in double by
+// occluderDefines(), app/render/specialisation.cpp); the others are left out
+// of that light's shadow rays. g_shadowLight is the light directLight() asks
+// about (lighting.glsl); -1 (views, probes): every sphere may occlude.
+int g_shadowLight = -1;
+
+bool mayOcclude(int light, int i) {
+#ifdef RL_OCCLUDERS
+    const int occluders[RL_LIGHT_COUNT] = int[RL_LIGHT_COUNT](RL_OCCLUDERS);
+    return light < 0 || ((occluders[light] >> i) & 1) != 0;
+#else
+    return true;
+#endif
+}
+
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
     for (int i = 0; i < sphereCount(); ++i) {
+        if (!mayOcclude(g_shadowLight, i)) continue;
         float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
         if (t > 0.0 && t < tMax && i != leaving) return true;
     }

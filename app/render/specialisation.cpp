@@ -12,7 +12,16 @@
 // which runs both sides of every branch under a mask.
 #include "render/shader_config.h"
 
+#include "checks/exercise_registry.h"
+#include "core/error.h"
+#include "core/file_io.h"
 #include "core/float_range.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
 
 namespace rl {
 
@@ -24,6 +33,10 @@ ShaderDefines specialisationDefines(const Scene& scene) {
     d["RL_SPHERE_COUNT"] = std::to_string(spheres);  // scene.glsl: loops unrolled, uniform block read directly
     d["RL_LIGHT_COUNT"] = std::to_string(lights);
     d["RL_MAX_BOUNCES"] = std::to_string(bounces);   // 0: the bounce code of traceRay folds away
+    // ... but with bounces, traceRay's loop over them stays a loop (scene.glsl):
+    // llvmpipe leaves it once none of 8 pixels needs another bounce, where an
+    // unrolled bounce runs for every pixel.
+    if (bounces > 0) d["RL_BOUNCE_LOOP"] = "1";
 
     bool metals = false;
     for (const Sphere& s : scene.spheres) metals = metals || s.material.metallic != 0.0;
@@ -61,6 +74,139 @@ ShaderDefines pictureOnlyDefines() {
     // the first hit behind a started traceRay. On llvmpipe, which runs both
     // sides of every branch, each costs about a bounce per pixel even unused.
     return {{"RL_PICTURE_ONLY", "1"}};
+}
+
+namespace {
+
+// Float32's unit roundoff and Higham's gamma_k, as in shaders/error_bounds.glsl.
+constexpr double kUnitRoundoff = 5.9604644775390625e-8;
+double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
+
+// Whether makeHit()'s residual form can bound some point of `s` more tightly
+// than its length form (shaders/error_bounds.glsl), the sphere seen from the
+// camera at the origin of `centre` (camera-relative, scene units). Over the
+// points p of the sphere, with d = |c|:
+//   residual bound >= gamma_10 (|C_eye| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
+// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and the length form's is
+// gamma_9 (r + |s|) >= gamma_9 r. A factor of 4 leaves room for the float32
+// hit point and its rounding: a sphere near the limit stays a candidate.
+bool residualFormCandidate(glm::dvec3 centre, double radius) {
+    double d = glm::length(centre);
+    double cEye = (d - radius) * (d + radius);
+    double residualAtBest = roundingGamma(10) *
+                            (std::abs(cEye) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
+                            (2.0 * radius);
+    return residualAtBest < 4.0 * roundingGamma(9) * radius;
+}
+
+// Whether a segment from some point of `receiver` to `light` can meet
+// `occluder`. False only where proved: a plane separates the occluder from
+// both the light and the receiver (normals tried: towards the light, towards
+// the receiver, between the two), or, seen from the light, the two spheres'
+// cones do not overlap, or the occluder lies wholly beyond the receiver. A
+// light inside either sphere is not worth proving anything for.
+bool canShadow(const Sphere& receiver, const Sphere& occluder, glm::dvec3 light) {
+    glm::dvec3 ci = receiver.center, cj = occluder.center;
+    double ri = receiver.radius, rj = occluder.radius;
+    double di = glm::length(ci - light), dj = glm::length(cj - light), dij = glm::length(ci - cj);
+    if (di <= ri || dj <= rj || dij == 0.0) return true;
+    // The occluder lies in m.(x - cj) <= rj; the light and the whole receiver
+    // in m.(x - cj) >= rj: every segment between them stays there and meets
+    // the occluder at most in its one point on the plane (touching spheres).
+    auto separates = [&](glm::dvec3 m) { return glm::dot(m, light - cj) >= rj && glm::dot(m, ci - cj) - ri >= rj; };
+    glm::dvec3 towardsLight = (light - cj) / dj, towardsReceiver = (ci - cj) / dij;
+    if (separates(towardsLight) || separates(towardsReceiver)) return false;
+    glm::dvec3 between = towardsLight + towardsReceiver;
+    if (glm::length(between) > 0.0 && separates(glm::normalize(between))) return false;
+    // Every segment from the light to a point of the receiver runs inside the
+    // receiver's cone (half angle asin(ri / di)) and ends within di + ri.
+    double cosine = std::clamp(glm::dot(ci - light, cj - light) / (di * dj), -1.0, 1.0);
+    if (std::acos(cosine) > std::asin(ri / di) + std::asin(rj / dj) + 1e-9) return false;
+    if (dj - rj > di + ri) return false;
+    return true;
+}
+
+// GLSL source of a scan: comments dropped (// to the end of the line, /* */).
+std::string withoutComments(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text.compare(i, 2, "//") == 0) {
+            while (i < text.size() && text[i] != '\n') ++i;
+            out += '\n';
+        } else if (text.compare(i, 2, "/*") == 0) {
+            std::size_t end = text.find("*/", i + 2);
+            i = end == std::string_view::npos ? text.size() : end + 1;
+            out += ' ';
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
+}
+
+bool namesIdentifier(const std::string& code, const std::string& name) {
+    auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+        bool before = at > 0 && isWord(code[at - 1]);
+        bool after = at + name.size() < code.size() && isWord(code[at + name.size()]);
+        if (!before && !after) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+ShaderDefines pictureValueDefines(const Scene& scene) {
+    ShaderDefines d;
+    const glm::dvec3 eye = scene.camera.position;
+    int spheres = int(scene.spheres.size());
+    int lights = int(scene.lights.size());
+    // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
+    // division (emulated on a CPU's vector units) and the loop's bound fold.
+    d["RL_SAMPLE_GRID"] = std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
+    if (spheres == 0 || spheres > 31) return d;  // the masks are one int per set
+
+    long residual = 0;
+    for (int i = 0; i < spheres; ++i)
+        if (residualFormCandidate(scene.spheres[i].center - eye, scene.spheres[i].radius)) residual |= 1L << i;
+    d["RL_RESIDUAL_SPHERES"] = std::to_string(residual);
+
+    if (lights > 0) {
+        std::string masks;
+        for (int l = 0; l < lights; ++l) {
+            long mask = 0;
+            for (int j = 0; j < spheres; ++j)
+                for (int i = 0; i < spheres && !(mask >> j & 1); ++i)
+                    if (i != j && canShadow(scene.spheres[i], scene.spheres[j], scene.lights[l].position))
+                        mask |= 1L << j;
+            masks += (l ? ", " : "") + std::to_string(mask);
+        }
+        d["RL_OCCLUDERS"] = masks;
+    }
+    return d;
+}
+
+ShaderDefines finishedExerciseDefines(const Implementation& impl) {
+    constexpr std::uintmax_t kLargestExercise = 1 << 20;  // a larger file is read by the compiler, not here
+    for (const ExerciseInfo& exercise : allExercises()) {
+        std::filesystem::path file = impl.fileFor(exercise.file());
+        if (isUnchangedStub(file, exercise)) return {};
+        try {
+            if (namesIdentifier(withoutComments(readRegularFile(file, kLargestExercise)), "NOT_STARTED")) return {};
+        } catch (const Error&) {
+            return {};  // unreadable: the compiler says why
+        }
+    }
+    return {{"RL_EXERCISES_FINISHED", "1"}};
+}
+
+ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
+    ShaderDefines defines = shaderDefinesFor(scene, true);
+    const ExerciseInfo& reflections = findExercise("9");
+    if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
+    for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
+        for (const auto& [name, value] : more) defines[name] = value;
+    return defines;
 }
 
 }  // namespace rl

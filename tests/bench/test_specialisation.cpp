@@ -10,6 +10,7 @@
 #include "reference/cpu_reference.h"
 #include "render/bounce_cutoff.h"
 #include "render/gl_renderer.h"
+#include "core/file_io.h"
 #include "render/shader_config.h"
 #include "shader/shader_library.h"
 #include "support/test_support.h"
@@ -40,9 +41,12 @@ ShaderDefines with(ShaderDefines defines, const ShaderDefines& more) {
     return defines;
 }
 
-// The three programs a scene can get: `raylab render` (specialised, picture
-// only), the live window's (specialised, every view), `render --generic`.
-ShaderDefines renderDefines(const Scene& s) { return with(shaderDefinesFor(s, true), pictureOnlyDefines()); }
+// The three programs a scene can get: `raylab render` (specialised to the
+// structure, the picture and where things are), the live window's
+// (specialised, every view), `render --generic`.
+ShaderDefines renderDefines(const Scene& s, const fs::path& impl = solutionsDir()) {
+    return renderProgramDefines(s, Implementation{impl, {}});
+}
 ShaderDefines fullDefines(const Scene& s) { return shaderDefinesFor(s, true); }
 ShaderDefines genericDefines(const Scene& s) { return shaderDefinesFor(s, false); }
 
@@ -176,7 +180,7 @@ TEST(Specialisation, EveryStageOfTheCourseRendersAsWithTheGenericShader) {
             fs::copy_file(number <= k ? solutionsDir() / name : entry.path(), impl / name);
         }
         Rendering generic = renderWith(s, genericDefines(s), impl);
-        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s), impl), generic);
+        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s, impl), impl), generic);
         SCOPED_TRACE("exercises 01.." + std::to_string(k) + " solved: " + test::describe(d));
         EXPECT_LE(d.offFraction, 0.005);
         EXPECT_LT(d.meanLsb, 0.2);
@@ -288,6 +292,148 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
     EXPECT_TRUE(shaderDefinesFor(variant, false).count("RL_FD_BURLEY"));  // the model is in the generic shader too
 
     EXPECT_EQ(pictureOnlyDefines().count("RL_PICTURE_ONLY"), 1u);
+}
+
+// ---- what a program for one picture compiles in (pictureValueDefines) ---------------------
+
+namespace {
+
+// The bit of sphere j in light l's RL_OCCLUDERS mask ("5, 7": one int per light).
+bool inOccluderMask(const ShaderDefines& d, int light, int j) {
+    std::string list = d.at("RL_OCCLUDERS");
+    for (int k = 0; k < light; ++k) list = list.substr(list.find(',') + 1);
+    return (std::stol(list) >> j & 1) != 0;
+}
+
+// Whether the segment from p to the light meets sphere s (double; the
+// segment's ends themselves do not count).
+bool segmentMeets(glm::dvec3 p, glm::dvec3 light, const Sphere& s) {
+    glm::dvec3 d = light - p;
+    double length = glm::length(d);
+    d /= length;
+    glm::dvec3 f = p - s.center;
+    double b = glm::dot(f, d), c = glm::dot(f, f) - s.radius * s.radius;
+    double disc = b * b - c;
+    if (disc < 0) return false;
+    double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
+    const double skip = 1e-9 * (length + s.radius);  // p itself on a touching sphere
+    return (t0 > skip && t0 < length - skip) || (t1 > skip && t1 < length - skip && t0 < length - skip);
+}
+
+// Scenes for the occluder proofs: the bundled ones, the bench's, the hard
+// cases, and random clusters (touching, overlapping, lights anywhere).
+std::vector<Scene> occluderScenes() {
+    std::vector<Scene> out = boundScenes();
+    for (const fs::path& f : jsonFilesIn(scenesDir() / "hard")) out.push_back(load(f));
+    for (const char* name : {"course-row-ground.json", "random-30.json"})
+        out.push_back(load(sourceRoot() / "tests" / "bench" / name));
+    Random random(12);
+    for (int k = 0; k < 40; ++k) {
+        Scene s = load(scenesDir() / "lecture.json");
+        s.spheres.resize(1 + k % 3);  // the ground, sometimes a sphere or two of the lecture
+        int n = 3 + k % 9;
+        for (int i = 0; i < n; ++i) {
+            Sphere sp = s.spheres.back();
+            sp.radius = random.range(0.1, 1.0);
+            sp.center = glm::dvec3(random.range(-3, 3), random.range(-0.5, 2.5), random.range(-6, -1));
+            if (i % 3 == 1) {  // touching the one before
+                const Sphere& other = s.spheres.back();
+                sp.center = other.center + random.direction() * (other.radius + sp.radius);
+            }
+            s.spheres.push_back(sp);
+        }
+        s.lights.resize(1 + k % 4);
+        for (Light& l : s.lights) l.position = glm::dvec3(random.range(-5, 5), random.range(-1, 6), random.range(-8, 2));
+        out.push_back(s);
+    }
+    return out;
+}
+
+}  // namespace
+
+// RL_OCCLUDERS may leave a sphere out of a light's shadow rays only if no
+// segment from a point of another sphere to that light meets it: checked on
+// 400 points per sphere in every scene above, and the proof must leave out
+// something (the ground under the lecture's spheres, for one).
+TEST(PictureValues, NoSphereLeftOutOfAShadowRayItCouldBlock) {
+    long leftOut = 0, checked = 0;
+    for (const Scene& s : occluderScenes()) {
+        ShaderDefines d = pictureValueDefines(s);
+        if (!d.count("RL_OCCLUDERS")) continue;
+        Random random(7);
+        for (int l = 0; l < int(s.lights.size()); ++l)
+            for (int j = 0; j < int(s.spheres.size()); ++j) {
+                if (inOccluderMask(d, l, j)) continue;
+                ++leftOut;
+                for (int i = 0; i < int(s.spheres.size()); ++i) {
+                    if (i == j) continue;
+                    for (int k = 0; k < 400; ++k) {
+                        glm::dvec3 p = s.spheres[i].center + s.spheres[i].radius * random.direction();
+                        ++checked;
+                        ASSERT_FALSE(segmentMeets(p, s.lights[l].position, s.spheres[j]))
+                            << "sphere " << j << " left out of light " << l << "'s shadow rays blocks a point of sphere "
+                            << i << " (" << s.spheres.size() << " spheres)";
+                    }
+                }
+            }
+    }
+    std::printf("[ measured ] %ld (light, sphere) pairs left out of shadow rays, %ld segments checked\n", leftOut,
+                checked);
+    ShaderDefines lecture = pictureValueDefines(load(scenesDir() / "lecture.json"));
+    EXPECT_FALSE(inOccluderMask(lecture, 0, 0)) << "the ground shadows none of the spheres resting on it";
+    EXPECT_FALSE(inOccluderMask(lecture, 1, 0));
+    EXPECT_TRUE(inOccluderMask(lecture, 0, 2)) << "the spheres of the row can shadow the ground";
+    EXPECT_GT(leftOut, 100);
+}
+
+// The residual form of makeHit is compiled in for the huge spheres near the
+// camera only: the lecture's ground, none of the metal row's spheres, and a
+// sphere around the camera.
+TEST(PictureValues, ResidualFormOnlyForHugeSpheresNearTheCamera) {
+    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "lecture.json")).at("RL_RESIDUAL_SPHERES"), "1");
+    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "metal-row.json")).at("RL_RESIDUAL_SPHERES"), "0");
+    Scene inside = load(scenesDir() / "hard" / "camera-inside.json");
+    EXPECT_NE(pictureValueDefines(inside).at("RL_RESIDUAL_SPHERES"), "0");
+    Scene lecture = load(scenesDir() / "lecture.json");
+    lecture.camera.position = {0, 2000, 3000};  // the ground seen from afar: no longer near
+    lecture.camera.target = {0, 0, -3};
+    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "0");
+}
+
+// The stub tests are compiled out only when no exercise file can return
+// NOT_STARTED: the solutions yes; the shipped stubs, a file that names it in
+// code, no; a file that names it in a comment only, yes.
+TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
+    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {}}).count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_TRUE(finishedExerciseDefines(Implementation{exercisesDir(), {}}).empty());
+    fs::path dir = test::freshTempDir("finished_exercises");
+    std::string file = readRegularFile(solutionsDir() / "07-fresnel.glsl", 1 << 20);
+    writeFileAtomic(dir / "code.glsl", file + "\nfloat unfinishedHelper() { return NOT_STARTED; }\n");
+    writeFileAtomic(dir / "comment.glsl", file + "\n// returned NOT_STARTED until it was written\n/* NOT_STARTED */\n");
+    EXPECT_TRUE(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "code.glsl"}}}).empty());
+    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "comment.glsl"}}})
+                  .count("RL_EXERCISES_FINISHED"),
+              1u);
+    // And `raylab render`'s program has it with the solutions, not with a stub left.
+    Scene lecture = load(scenesDir() / "lecture.json");
+    EXPECT_EQ(renderDefines(lecture).count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_EQ(renderDefines(lecture).count("RL_OCCLUDERS"), 1u);
+    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
+                  .count("RL_EXERCISES_FINISHED"),
+              0u);
+}
+
+// The bench's own scenes through `raylab render`'s program: within the core's
+// budget of the CPU reference, and of the program without the picture's
+// values (occluders, residual set, sample grid, stub tests).
+TEST(PictureValues, BenchScenesRenderAsWithoutThePictureValues) {
+    for (const char* name : {"course-row-ground.json", "random-30.json"}) {
+        Scene s = sized(load(sourceRoot() / "tests" / "bench" / name));
+        Rendering picture = renderWith(s, renderDefines(s));
+        expectWithinBudget(picture, ref::renderCpu(s), std::string(name) + ": render vs CPU reference");
+        expectWithinBudget(picture, renderWith(s, with(fullDefines(s), pictureOnlyDefines())),
+                           std::string(name) + ": render vs structure and picture only");
+    }
 }
 
 // ---- the bound behind the early stop, one step at a time ----------------------------------
