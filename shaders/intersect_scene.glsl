@@ -14,6 +14,54 @@ Hit g_probeFirstHit;
 vec3 g_probeSecondOrigin;
 #endif
 
+// ---- Candidates (a program for one picture: RL_CANDIDATE_HITS in closestHit,
+// RL_CANDIDATE_SHADOWS in anyHitBefore) ------------------------------------------------------
+//
+// llvmpipe runs every line of unrolled code for all 8 pixels it shades
+// together, but a loop only as often as the pixel that needs it most. So a
+// program for one picture first asks each sphere a cheap question, "can this
+// ray come near it at all?" (mayHitSphere: a few dot products, no root, no
+// division), collects the spheres that can in a bit mask, and runs the
+// exercise's intersectSphere() in a loop over those only. mayHitSphere()
+// never says no to a sphere intersectSphere() would hit (its margins cover
+// float32's rounding many times over), so the picture stays the same; a
+// sphere it lets through in vain costs one turn of the loop.
+
+// Whether o + t d, 0 < t < tMax (d unit), can meet the sphere (xyz centre,
+// w radius). A hit needs the ray's closest approach b = (c - o).d within
+// [-r, tMax + r] and its squared distance from the centre |c - o|^2 - b^2
+// at most r^2. Both sides round by a few u of |c - o|^2 (b^2 cancels against
+// |c - o|^2 for a far sphere near the ray): the margins, 1e-5 of the terms,
+// are 40 times that.
+bool mayHitSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
+    vec3 f = sphere.xyz - o;
+    float b = dot(f, d);
+    float ff = dot(f, f);
+    float rr = sphere.w * sphere.w;
+    float margin = 1e-5 * (ff + rr);
+    return ff - b * b <= rr + margin && b + sphere.w >= -1e-5 * (abs(b) + sphere.w) && b - sphere.w <= tMax + 1e-5 * abs(b);
+}
+
+// The lowest sphere index in the mask, taken out of it. float(bit) is exact
+// (a power of two below 2^31); its exponent field is the index.
+int nextCandidate(inout int candidates) {
+    int bit = candidates & -candidates;
+    candidates ^= bit;
+    return (floatBitsToInt(float(bit)) >> 23) - 127;
+}
+
+// Whether sphere i is asked in the loop (RL_CANDIDATE_HITS) rather than in
+// the unrolled pass: not the spheres whose roots are refined or whose hits
+// may need the residual form, which need their constants (a direct load in
+// the unrolled pass, a gather in the loop).
+bool askedInLoop(int i) {
+#ifdef RL_CANDIDATE_HITS
+    return !refinesRoot(i) && !residualFormCandidate(i);
+#else
+    return false;
+#endif
+}
+
 // Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
 // renormalised first: a reflected direction is unit length only to ~1e-7,
 // and intersectSphere() assumes |dir| = 1 (over a chord of 8 that is 8e-6).
@@ -29,10 +77,9 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
     float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
     bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
+    int candidates = 0;  // RL_CANDIDATE_HITS: the spheres left for the loop below
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
-        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (i == leaving) {
             leavingGeometry = sphereI;
 #ifdef RL_SPHERE_COUNT
@@ -40,6 +87,14 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             leavingResidual = residualFormCandidate(i);
 #endif
         }
+#ifdef RL_CANDIDATE_HITS
+        if (askedInLoop(i)) {
+            if (i != leaving && mayHitSphere(origin, dir, 3.4e38, sphereI)) candidates |= 1 << i;
+            continue;
+        }
+#endif
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
+        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (t > 0.0 && i != leaving) {
             if (refinesRoot(i)) t = refineRoot(origin, dir, i, t);
             if (t > 0.0 && t < nearest) {
@@ -53,6 +108,21 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             }
         }
     }
+#ifdef RL_CANDIDATE_HITS
+    while (candidates != 0) {  // a loop: as many turns as the pixel of 8 with the most candidates needs
+        int i = nextCandidate(candidates);
+        vec4 sphereI = u_sphereGeometry[i];
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
+        if (isGeometryStub(t)) return hit;
+        if (t > 0.0 && t < nearest) {
+            nearest = t;
+            sphere = i;
+            geometry = sphereI;
+            cameraC = 0.0;  // not read: askedInLoop() spheres never take the residual form
+            residual = false;
+        }
+    }
+#endif
     if (leaving != NO_SPHERE) {
         float t = leavingSphereHit(origin, dir, leavingGeometry);
         if (t > 0.0 && t < nearest) {
@@ -90,20 +160,41 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
 // about (lighting.glsl); -1 (views, probes): every sphere may occlude.
 int g_shadowLight = -1;
 
-bool mayOcclude(int light, int i) {
+// The mask of light `light`, -1 (every sphere) for none. A chain of selects
+// over constant indices: it folds to a constant where the light loop is
+// unrolled, and costs two operations per light where it is not (a dynamic
+// index into a local array would go through memory on llvmpipe).
+int occluderMask(int light) {
+    int mask = -1;
 #ifdef RL_OCCLUDERS
-    const int occluders[RL_LIGHT_COUNT] = int[RL_LIGHT_COUNT](RL_OCCLUDERS);
-    return light < 0 || ((occluders[light] >> i) & 1) != 0;
-#else
-    return true;
+    const int masks[RL_LIGHT_COUNT] = int[RL_LIGHT_COUNT](RL_OCCLUDERS);
+    for (int l = 0; l < RL_LIGHT_COUNT; ++l)
+        if (l == light) mask = masks[l];
 #endif
+    return mask;
 }
 
+bool mayOcclude(int light, int i) { return ((occluderMask(light) >> i) & 1) != 0; }
+
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
+#ifdef RL_CANDIDATE_SHADOWS
+    int candidates = 0;
+    for (int i = 0; i < sphereCount(); ++i)
+        if (i != leaving && mayHitSphere(origin, dir, tMax, u_sphereGeometry[i])) candidates |= 1 << i;
+    candidates &= occluderMask(g_shadowLight);
+    while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
+        int i = nextCandidate(candidates);
+        vec4 sphereI = u_sphereGeometry[i];
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
+        if (t > 0.0 && t < tMax) return true;
+    }
+    return false;
+#else
     for (int i = 0; i < sphereCount(); ++i) {
         if (!mayOcclude(g_shadowLight, i)) continue;
         float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
         if (t > 0.0 && t < tMax && i != leaving) return true;
     }
     return false;
+#endif
 }

@@ -125,13 +125,22 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         // The specialised program with one of its layers taken out again, one
         // at a time: what each costs or saves (docs/performance.md).
         ShaderDefines all = specialisationDefines(scene);
-        for (const auto& [name, value] : pictureValueDefines(scene)) all[name] = value;
-        all["RL_EXERCISES_FINISHED"] = "1";
-        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_BOUNCE_LOOP", "RL_OCCLUDERS", "RL_RESIDUAL_SPHERES"}) {
+        for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
+            all[name] = value;
+        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_HITS", "RL_CANDIDATE_SHADOWS", "RL_BOUNCE_LOOP",
+                                 "RL_OCCLUDERS", "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID"}) {
             if (!all.count(name)) continue;
             Variant* v = add(std::string("without:") + name, "layers", true, scene);
             v->withoutDefines.push_back(name);
         }
+        // The choices made by a count (the candidate loops): the other side too,
+        // so that the bench shows whether the threshold is right for this scene.
+        if (scene.spheres.size() <= 31)
+            for (const char* name : {"RL_CANDIDATE_HITS", "RL_CANDIDATE_SHADOWS"}) {
+                if (all.count(name)) continue;
+                Variant* v = add(std::string("with:") + name, "layers", true, scene);
+                v->withDefines[name] = "1";
+            }
     }
     if (wanted(options, "bounces")) {
         for (int b : {0, 1, 2, 3, 4}) {
@@ -281,6 +290,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     else if (v.picture)
                         for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
                     for (const std::string& name : v.withoutDefines) defines.erase(name);
+                    for (const auto& [name, value] : v.withDefines) defines[name] = value;
                     programs[i] = buildRayTracer(impl, defines);
                 }
                 m.compileMs = msSince(start);

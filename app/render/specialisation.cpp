@@ -200,12 +200,26 @@ ShaderDefines finishedExerciseDefines(const Implementation& impl) {
     return {{"RL_EXERCISES_FINISHED", "1"}};
 }
 
+// From how many spheres on the candidate loops pay (docs/performance.md, the
+// bench's layers sweep measures both sides of the choice).
+constexpr int kCandidateHitSpheres = 12;
+constexpr int kCandidateShadowSpheres = 12;
+
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
     ShaderDefines defines = shaderDefinesFor(scene, true);
     const ExerciseInfo& reflections = findExercise("9");
     if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
     for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
         for (const auto& [name, value] : more) defines[name] = value;
+    // Rays ask every sphere a cheap question first and run the exercise's
+    // intersectSphere() in a loop over the spheres that pass
+    // (intersect_scene.glsl): a sphere mask is one int, and a stub must see
+    // every sphere to stripe the picture, so only with every exercise written.
+    int spheres = int(scene.spheres.size());
+    if (defines.count("RL_EXERCISES_FINISHED") && spheres <= 31) {
+        if (spheres >= kCandidateHitSpheres) defines["RL_CANDIDATE_HITS"] = "1";
+        if (spheres >= kCandidateShadowSpheres && !scene.lights.empty()) defines["RL_CANDIDATE_SHADOWS"] = "1";
+    }
     return defines;
 }
 
