@@ -14,16 +14,15 @@ Hit g_probeFirstHit;
 vec3 g_probeSecondOrigin;
 #endif
 
-// ---- Candidates (a program for one picture: RL_CANDIDATE_HITS in closestHit,
-// RL_CANDIDATE_SHADOWS in anyHitBefore) ------------------------------------------------------
+// ---- Candidates (RL_CANDIDATE_SHADOWS, a program for one picture) --------------------------
 //
 // llvmpipe runs every line of unrolled code for all 8 pixels it shades
 // together, but a loop only as often as the pixel that needs it most. So a
 // program for one picture first asks each sphere a cheap question, "can this
 // ray come near it at all?" (mayHitSphere: a few dot products, no root, no
 // division), collects the spheres that can in a bit mask, and runs the
-// exercise's intersectSphere() in a loop over those only. mayHitSphere()
-// never says no to a sphere intersectSphere() would hit (its margins cover
+// shadow test proper (blocksSegment) in a loop over those only. mayHitSphere()
+// never says no to a sphere the test proper would find (its margins cover
 // float32's rounding many times over), so the picture stays the same; a
 // sphere it lets through in vain costs one turn of the loop.
 
@@ -50,18 +49,6 @@ int nextCandidate(inout int candidates) {
     return (floatBitsToInt(float(bit)) >> 23) - 127;
 }
 
-// Whether sphere i is asked in the loop (RL_CANDIDATE_HITS) rather than in
-// the unrolled pass: not the spheres whose roots are refined or whose hits
-// may need the residual form, which need their constants (a direct load in
-// the unrolled pass, a gather in the loop).
-bool askedInLoop(int i) {
-#ifdef RL_CANDIDATE_HITS
-    return !refinesRoot(i) && !residualFormCandidate(i);
-#else
-    return false;
-#endif
-}
-
 // Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
 // renormalised first: a reflected direction is unit length only to ~1e-7,
 // and intersectSphere() assumes |dir| = 1 (over a chord of 8 that is 8e-6).
@@ -77,7 +64,6 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
     float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
     bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
-    int candidates = 0;  // RL_CANDIDATE_HITS: the spheres left for the loop below
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
         if (i == leaving) {
@@ -87,12 +73,6 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             leavingResidual = residualFormCandidate(i);
 #endif
         }
-#ifdef RL_CANDIDATE_HITS
-        if (askedInLoop(i)) {
-            if (i != leaving && mayHitSphere(origin, dir, 3.4e38, sphereI)) candidates |= 1 << i;
-            continue;
-        }
-#endif
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
         if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (t > 0.0 && i != leaving) {
@@ -108,21 +88,6 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             }
         }
     }
-#ifdef RL_CANDIDATE_HITS
-    while (candidates != 0) {  // a loop: as many turns as the pixel of 8 with the most candidates needs
-        int i = nextCandidate(candidates);
-        vec4 sphereI = u_sphereGeometry[i];
-        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (isGeometryStub(t)) return hit;
-        if (t > 0.0 && t < nearest) {
-            nearest = t;
-            sphere = i;
-            geometry = sphereI;
-            cameraC = 0.0;  // not read: askedInLoop() spheres never take the residual form
-            residual = false;
-        }
-    }
-#endif
     if (leaving != NO_SPHERE) {
         float t = leavingSphereHit(origin, dir, leavingGeometry);
         if (t > 0.0 && t < nearest) {
@@ -143,6 +108,35 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     ++g_probeCalls;
 #endif
     return hit;
+}
+
+// Whether the segment o + t d, 0 < t < tMax (d unit), crosses the sphere's
+// surface: the point of the segment nearest the centre lies within r, and
+// the segment does not lie wholly inside the sphere (then it crosses no
+// surface, as intersectSphere() sees it: its far root lies beyond tMax). The
+// same answer as intersectSphere()'s 0 < t < tMax without a root: no square
+// root, no division. RL_SEGMENT_TEST: a program for one picture whose
+// 02-intersect is the course's solution (the host compares the file), so
+// that a student's own intersectSphere() is what every picture of it shows.
+bool segmentCrossesSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
+    vec3 f = sphere.xyz - o;
+    float b = dot(f, d);
+    float s = clamp(b, 0.0, tMax);  // along the segment, nearest the centre
+    vec3 nearest = f - s * d;
+    vec3 end = f - tMax * d;
+    float rr = sphere.w * sphere.w;
+    return dot(nearest, nearest) <= rr && (dot(f, f) > rr || dot(end, end) > rr);
+}
+
+// The shadow test of sphere i on a segment: the exercise's intersectSphere(),
+// or in a program for one picture with the course's 02, the test above.
+bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
+#ifdef RL_SEGMENT_TEST
+    return segmentCrossesSphere(o, d, tMax, sphere);
+#else
+    float t = intersectSphere(o, d, sphere.xyz, sphere.w);
+    return t > 0.0 && t < tMax;
+#endif
 }
 
 // True when some sphere other than `leaving` is hit at 0 < t < tMax. Stops
@@ -184,16 +178,13 @@ bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
     candidates &= occluderMask(g_shadowLight);
     while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
         int i = nextCandidate(candidates);
-        vec4 sphereI = u_sphereGeometry[i];
-        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (t > 0.0 && t < tMax) return true;
+        if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
     }
     return false;
 #else
     for (int i = 0; i < sphereCount(); ++i) {
         if (!mayOcclude(g_shadowLight, i)) continue;
-        float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
-        if (t > 0.0 && t < tMax && i != leaving) return true;
+        if (i != leaving && blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
     }
     return false;
 #endif

@@ -41,14 +41,8 @@ int lightCount() {
 #endif
 }
 
-// RL_BOUNCE_LOOP (specialised, at least one bounce): the bounce limit stays
-// the uniform, so that traceRay's loop over the bounces is a loop and not
-// unrolled. llvmpipe leaves a loop once no pixel of its 8 needs another
-// iteration (a ray that left the scene), while an unrolled bounce runs, under
-// a mask, for every pixel (docs/performance.md). The host sets the uniform to
-// RL_MAX_BOUNCES.
 int maxBounces() {
-#if defined(RL_MAX_BOUNCES) && !defined(RL_BOUNCE_LOOP)
+#ifdef RL_MAX_BOUNCES
     return RL_MAX_BOUNCES;
 #else
     return u_maxBounces;

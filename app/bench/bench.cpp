@@ -127,20 +127,16 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         ShaderDefines all = specialisationDefines(scene);
         for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
             all[name] = value;
-        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_HITS", "RL_CANDIDATE_SHADOWS", "RL_BOUNCE_LOOP",
-                                 "RL_OCCLUDERS", "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID"}) {
+        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SEGMENT_TEST", "RL_OCCLUDERS",
+                                 "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID"}) {
             if (!all.count(name)) continue;
             Variant* v = add(std::string("without:") + name, "layers", true, scene);
             v->withoutDefines.push_back(name);
         }
-        // The choices made by a count (the candidate loops): the other side too,
+        // The choice made by a count (the candidate loop): the other side too,
         // so that the bench shows whether the threshold is right for this scene.
-        if (scene.spheres.size() <= 31)
-            for (const char* name : {"RL_CANDIDATE_HITS", "RL_CANDIDATE_SHADOWS"}) {
-                if (all.count(name)) continue;
-                Variant* v = add(std::string("with:") + name, "layers", true, scene);
-                v->withDefines[name] = "1";
-            }
+        if (scene.spheres.size() <= 31 && !scene.lights.empty() && !all.count("RL_CANDIDATE_SHADOWS"))
+            add("with:RL_CANDIDATE_SHADOWS", "layers", true, scene)->withDefines["RL_CANDIDATE_SHADOWS"] = "1";
     }
     if (wanted(options, "bounces")) {
         for (int b : {0, 1, 2, 3, 4}) {

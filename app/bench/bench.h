@@ -31,7 +31,7 @@ struct Variant {
     bool textbook = false;   // the yardstick instead (bench/textbook.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
-    ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_CANDIDATE_HITS")
+    ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_CANDIDATE_SHADOWS")
     // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
     std::map<std::string, std::filesystem::path> overrides;
     std::string skipReason;  // non-empty: not measured, reported with this note

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/float_range.h"
+#include "core/paths.h"
 
 #include <glm/geometric.hpp>
 
@@ -33,10 +34,6 @@ ShaderDefines specialisationDefines(const Scene& scene) {
     d["RL_SPHERE_COUNT"] = std::to_string(spheres);  // scene.glsl: loops unrolled, uniform block read directly
     d["RL_LIGHT_COUNT"] = std::to_string(lights);
     d["RL_MAX_BOUNCES"] = std::to_string(bounces);   // 0: the bounce code of traceRay folds away
-    // ... but with bounces, traceRay's loop over them stays a loop (scene.glsl):
-    // llvmpipe leaves it once none of 8 pixels needs another bounce, where an
-    // unrolled bounce runs for every pixel.
-    if (bounces > 0) d["RL_BOUNCE_LOOP"] = "1";
 
     bool metals = false;
     for (const Sphere& s : scene.spheres) metals = metals || s.material.metallic != 0.0;
@@ -200,9 +197,20 @@ ShaderDefines finishedExerciseDefines(const Implementation& impl) {
     return {{"RL_EXERCISES_FINISHED", "1"}};
 }
 
-// From how many spheres on the candidate loops pay (docs/performance.md, the
-// bench's layers sweep measures both sides of the choice).
-constexpr int kCandidateHitSpheres = 12;
+// Whether two implementations have the same text for an exercise file (white
+// space aside, as isUnchangedStub() compares).
+bool sameExercise(const Implementation& a, const Implementation& b, const std::string& file) {
+    constexpr std::uintmax_t kLargestExercise = 1 << 20;
+    try {
+        return normalisedGlsl(readRegularFile(a.fileFor(file), kLargestExercise)) ==
+               normalisedGlsl(readRegularFile(b.fileFor(file), kLargestExercise));
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+// From how many spheres on the candidate loop of the shadow rays pays
+// (docs/performance.md; the bench's layers sweep measures both sides).
 constexpr int kCandidateShadowSpheres = 12;
 
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
@@ -211,13 +219,15 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
     for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
         for (const auto& [name, value] : more) defines[name] = value;
-    // Rays ask every sphere a cheap question first and run the exercise's
-    // intersectSphere() in a loop over the spheres that pass
-    // (intersect_scene.glsl): a sphere mask is one int, and a stub must see
-    // every sphere to stripe the picture, so only with every exercise written.
+    // Shadow rays ask every sphere a cheap question first and run the test
+    // proper in a loop over the spheres that pass (intersect_scene.glsl): a
+    // sphere mask is one int, and only with every exercise written.
+    // Shadow rays need whether, not where: with the course's own 02 (the host
+    // compares the file), a closed-form segment test without the root
+    // (intersect_scene.glsl); a student's intersectSphere() stays in every ray.
+    if (sameExercise(impl, Implementation{solutionsDir(), {}}, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
     int spheres = int(scene.spheres.size());
     if (defines.count("RL_EXERCISES_FINISHED") && spheres <= 31) {
-        if (spheres >= kCandidateHitSpheres) defines["RL_CANDIDATE_HITS"] = "1";
         if (spheres >= kCandidateShadowSpheres && !scene.lights.empty()) defines["RL_CANDIDATE_SHADOWS"] = "1";
     }
     return defines;
