@@ -145,47 +145,19 @@ bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
 // sphere a shadow ray leaves is decided before, exactly (lighting.glsl,
 // shadowVisibility): from outside it hides nothing the ray goes to, from
 // inside it hides every light outside it.
-//
-// A program for one picture knows where everything is: RL_OCCLUDERS lists,
-// per light, the spheres that can lie between that light and some point of
-// another sphere (a bit mask per light, computed in double by
-// occluderDefines(), app/render/specialisation.cpp); the others are left out
-// of that light's shadow rays. g_shadowLight is the light directLight() asks
-// about (lighting.glsl); -1 (views, probes): every sphere may occlude.
-int g_shadowLight = -1;
-
-// The mask of light `light`, -1 (every sphere) for none. A chain of selects
-// over constant indices: it folds to a constant where the light loop is
-// unrolled, and costs two operations per light where it is not (a dynamic
-// index into a local array would go through memory on llvmpipe).
-int occluderMask(int light) {
-    int mask = -1;
-#ifdef RL_OCCLUDERS
-    const int masks[RL_LIGHT_COUNT] = int[RL_LIGHT_COUNT](RL_OCCLUDERS);
-    for (int l = 0; l < RL_LIGHT_COUNT; ++l)
-        if (l == light) mask = masks[l];
-#endif
-    return mask;
-}
-
-bool mayOcclude(int light, int i) { return ((occluderMask(light) >> i) & 1) != 0; }
-
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
 #ifdef RL_CANDIDATE_SHADOWS
     int candidates = 0;
     for (int i = 0; i < sphereCount(); ++i)
         if (i != leaving && mayHitSphere(origin, dir, tMax, u_sphereGeometry[i])) candidates |= 1 << i;
-    candidates &= occluderMask(g_shadowLight);
     while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
         int i = nextCandidate(candidates);
         if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
     }
     return false;
 #else
-    for (int i = 0; i < sphereCount(); ++i) {
-        if (!mayOcclude(g_shadowLight, i)) continue;
+    for (int i = 0; i < sphereCount(); ++i)
         if (i != leaving && blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
-    }
     return false;
 #endif
 }

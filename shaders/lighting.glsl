@@ -63,10 +63,7 @@ vec3 directLight(Hit hit, vec3 v, Material m) {
     for (int i = 0; i < lightCount(); ++i) {
         vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
         if (E == vec3(0.0)) continue;            // facing away, or light at p: no shadow ray needed
-        g_shadowLight = i;                       // which spheres can shadow it (intersect_scene.glsl)
-        float visibility = shadowVisibility(hit, lightPosition(i));
-        g_shadowLight = -1;
-        if (visibility == 0.0) continue;
+        if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
         vec3 l = normalize(lightPosition(i) - hit.p);
 #ifdef RL_MODEL_VARIANTS
         radiance += surfaceBRDF(hit.n, v, l, m, sphereEdgeTint(hit.sphere)) * E;

@@ -32,10 +32,8 @@ ShaderDefines pictureOnlyDefines();
 // (`raylab render`): choices that depend on where things are, so a live view,
 // whose camera and values move, must not compile them in. Computed in double
 // (app/render/specialisation.cpp): RL_RESIDUAL_SPHERES, the spheres for which
-// makeHit() can need its residual form (a huge sphere near the camera), and
-// RL_OCCLUDERS, per light the spheres that can lie between it and a point of
-// another sphere (the others are left out of its shadow rays) (neither for
-// more than 31 spheres), and RL_SAMPLE_GRID, sqrt(spp).
+// makeHit() can need its residual form (a huge sphere near the camera; none
+// for more than 31 spheres), and RL_SAMPLE_GRID, sqrt(spp).
 ShaderDefines pictureValueDefines(const Scene& scene);
 
 // RL_EXERCISES_FINISHED when every exercise file of `impl` is written and none

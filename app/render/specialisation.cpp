@@ -29,7 +29,6 @@ namespace rl {
 ShaderDefines specialisationDefines(const Scene& scene) {
     ShaderDefines d;
     int spheres = int(scene.spheres.size());
-    int lights = int(scene.lights.size());
     int bounces = scene.render.maxBounces;
     d["RL_SPHERE_COUNT"] = std::to_string(spheres);  // scene.glsl: loops unrolled, uniform block read directly
     d["RL_LIGHT_COUNT"] = std::to_string(lights);
@@ -96,33 +95,6 @@ bool residualFormCandidate(glm::dvec3 centre, double radius) {
     return residualAtBest < 4.0 * roundingGamma(9) * radius;
 }
 
-// Whether a segment from some point of `receiver` to `light` can meet
-// `occluder`. False only where proved: a plane separates the occluder from
-// both the light and the receiver (normals tried: towards the light, towards
-// the receiver, between the two), or, seen from the light, the two spheres'
-// cones do not overlap, or the occluder lies wholly beyond the receiver. A
-// light inside either sphere is not worth proving anything for.
-bool canShadow(const Sphere& receiver, const Sphere& occluder, glm::dvec3 light) {
-    glm::dvec3 ci = receiver.center, cj = occluder.center;
-    double ri = receiver.radius, rj = occluder.radius;
-    double di = glm::length(ci - light), dj = glm::length(cj - light), dij = glm::length(ci - cj);
-    if (di <= ri || dj <= rj || dij == 0.0) return true;
-    // The occluder lies in m.(x - cj) <= rj; the light and the whole receiver
-    // in m.(x - cj) >= rj: every segment between them stays there and meets
-    // the occluder at most in its one point on the plane (touching spheres).
-    auto separates = [&](glm::dvec3 m) { return glm::dot(m, light - cj) >= rj && glm::dot(m, ci - cj) - ri >= rj; };
-    glm::dvec3 towardsLight = (light - cj) / dj, towardsReceiver = (ci - cj) / dij;
-    if (separates(towardsLight) || separates(towardsReceiver)) return false;
-    glm::dvec3 between = towardsLight + towardsReceiver;
-    if (glm::length(between) > 0.0 && separates(glm::normalize(between))) return false;
-    // Every segment from the light to a point of the receiver runs inside the
-    // receiver's cone (half angle asin(ri / di)) and ends within di + ri.
-    double cosine = std::clamp(glm::dot(ci - light, cj - light) / (di * dj), -1.0, 1.0);
-    if (std::acos(cosine) > std::asin(ri / di) + std::asin(rj / dj) + 1e-9) return false;
-    if (dj - rj > di + ri) return false;
-    return true;
-}
-
 // GLSL source of a scan: comments dropped (// to the end of the line, /* */).
 std::string withoutComments(std::string_view text) {
     std::string out;
@@ -157,29 +129,15 @@ ShaderDefines pictureValueDefines(const Scene& scene) {
     ShaderDefines d;
     const glm::dvec3 eye = scene.camera.position;
     int spheres = int(scene.spheres.size());
-    int lights = int(scene.lights.size());
     // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
     // division (emulated on a CPU's vector units) and the loop's bound fold.
     d["RL_SAMPLE_GRID"] = std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
-    if (spheres == 0 || spheres > 31) return d;  // the masks are one int per set
+    if (spheres == 0 || spheres > 31) return d;  // the mask is one int
 
     long residual = 0;
     for (int i = 0; i < spheres; ++i)
         if (residualFormCandidate(scene.spheres[i].center - eye, scene.spheres[i].radius)) residual |= 1L << i;
     d["RL_RESIDUAL_SPHERES"] = std::to_string(residual);
-
-    if (lights > 0) {
-        std::string masks;
-        for (int l = 0; l < lights; ++l) {
-            long mask = 0;
-            for (int j = 0; j < spheres; ++j)
-                for (int i = 0; i < spheres && !(mask >> j & 1); ++i)
-                    if (i != j && canShadow(scene.spheres[i], scene.spheres[j], scene.lights[l].position))
-                        mask |= 1L << j;
-            masks += (l ? ", " : "") + std::to_string(mask);
-        }
-        d["RL_OCCLUDERS"] = masks;
-    }
     return d;
 }
 
@@ -219,13 +177,13 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
     for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
         for (const auto& [name, value] : more) defines[name] = value;
-    // Shadow rays ask every sphere a cheap question first and run the test
-    // proper in a loop over the spheres that pass (intersect_scene.glsl): a
-    // sphere mask is one int, and only with every exercise written.
     // Shadow rays need whether, not where: with the course's own 02 (the host
     // compares the file), a closed-form segment test without the root
     // (intersect_scene.glsl); a student's intersectSphere() stays in every ray.
     if (sameExercise(impl, Implementation{solutionsDir(), {}}, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
+    // Shadow rays ask every sphere a cheap question first and run the test
+    // proper in a loop over the spheres that pass (intersect_scene.glsl): a
+    // sphere mask is one int, and only with every exercise written.
     int spheres = int(scene.spheres.size());
     if (defines.count("RL_EXERCISES_FINISHED") && spheres <= 31) {
         if (spheres >= kCandidateShadowSpheres && !scene.lights.empty()) defines["RL_CANDIDATE_SHADOWS"] = "1";

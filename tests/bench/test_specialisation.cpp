@@ -296,96 +296,6 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
 
 // ---- what a program for one picture compiles in (pictureValueDefines) ---------------------
 
-namespace {
-
-// The bit of sphere j in light l's RL_OCCLUDERS mask ("5, 7": one int per light).
-bool inOccluderMask(const ShaderDefines& d, int light, int j) {
-    std::string list = d.at("RL_OCCLUDERS");
-    for (int k = 0; k < light; ++k) list = list.substr(list.find(',') + 1);
-    return (std::stol(list) >> j & 1) != 0;
-}
-
-// Whether the segment from p to the light meets sphere s (double; the
-// segment's ends themselves do not count).
-bool segmentMeets(glm::dvec3 p, glm::dvec3 light, const Sphere& s) {
-    glm::dvec3 d = light - p;
-    double length = glm::length(d);
-    d /= length;
-    glm::dvec3 f = p - s.center;
-    double b = glm::dot(f, d), c = glm::dot(f, f) - s.radius * s.radius;
-    double disc = b * b - c;
-    if (disc < 0) return false;
-    double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
-    const double skip = 1e-9 * (length + s.radius);  // p itself on a touching sphere
-    return (t0 > skip && t0 < length - skip) || (t1 > skip && t1 < length - skip && t0 < length - skip);
-}
-
-// Scenes for the occluder proofs: the bundled ones, the bench's, the hard
-// cases, and random clusters (touching, overlapping, lights anywhere).
-std::vector<Scene> occluderScenes() {
-    std::vector<Scene> out = boundScenes();
-    for (const fs::path& f : jsonFilesIn(scenesDir() / "hard")) out.push_back(load(f));
-    for (const char* name : {"course-row-ground.json", "random-30.json"})
-        out.push_back(load(sourceRoot() / "tests" / "bench" / name));
-    Random random(12);
-    for (int k = 0; k < 40; ++k) {
-        Scene s = load(scenesDir() / "lecture.json");
-        s.spheres.resize(1 + k % 3);  // the ground, sometimes a sphere or two of the lecture
-        int n = 3 + k % 9;
-        for (int i = 0; i < n; ++i) {
-            Sphere sp = s.spheres.back();
-            sp.radius = random.range(0.1, 1.0);
-            sp.center = glm::dvec3(random.range(-3, 3), random.range(-0.5, 2.5), random.range(-6, -1));
-            if (i % 3 == 1) {  // touching the one before
-                const Sphere& other = s.spheres.back();
-                sp.center = other.center + random.direction() * (other.radius + sp.radius);
-            }
-            s.spheres.push_back(sp);
-        }
-        s.lights.resize(1 + k % 4);
-        for (Light& l : s.lights) l.position = glm::dvec3(random.range(-5, 5), random.range(-1, 6), random.range(-8, 2));
-        out.push_back(s);
-    }
-    return out;
-}
-
-}  // namespace
-
-// RL_OCCLUDERS may leave a sphere out of a light's shadow rays only if no
-// segment from a point of another sphere to that light meets it: checked on
-// 400 points per sphere in every scene above, and the proof must leave out
-// something (the ground under the lecture's spheres, for one).
-TEST(PictureValues, NoSphereLeftOutOfAShadowRayItCouldBlock) {
-    long leftOut = 0, checked = 0;
-    for (const Scene& s : occluderScenes()) {
-        ShaderDefines d = pictureValueDefines(s);
-        if (!d.count("RL_OCCLUDERS")) continue;
-        Random random(7);
-        for (int l = 0; l < int(s.lights.size()); ++l)
-            for (int j = 0; j < int(s.spheres.size()); ++j) {
-                if (inOccluderMask(d, l, j)) continue;
-                ++leftOut;
-                for (int i = 0; i < int(s.spheres.size()); ++i) {
-                    if (i == j) continue;
-                    for (int k = 0; k < 400; ++k) {
-                        glm::dvec3 p = s.spheres[i].center + s.spheres[i].radius * random.direction();
-                        ++checked;
-                        ASSERT_FALSE(segmentMeets(p, s.lights[l].position, s.spheres[j]))
-                            << "sphere " << j << " left out of light " << l << "'s shadow rays blocks a point of sphere "
-                            << i << " (" << s.spheres.size() << " spheres)";
-                    }
-                }
-            }
-    }
-    std::printf("[ measured ] %ld (light, sphere) pairs left out of shadow rays, %ld segments checked\n", leftOut,
-                checked);
-    ShaderDefines lecture = pictureValueDefines(load(scenesDir() / "lecture.json"));
-    EXPECT_FALSE(inOccluderMask(lecture, 0, 0)) << "the ground shadows none of the spheres resting on it";
-    EXPECT_FALSE(inOccluderMask(lecture, 1, 0));
-    EXPECT_TRUE(inOccluderMask(lecture, 0, 2)) << "the spheres of the row can shadow the ground";
-    EXPECT_GT(leftOut, 100);
-}
-
 // The residual form of makeHit is compiled in for the huge spheres near the
 // camera only: the lecture's ground, none of the metal row's spheres, and a
 // sphere around the camera.
@@ -417,7 +327,11 @@ TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
     // And `raylab render`'s program has it with the solutions, not with a stub left.
     Scene lecture = load(scenesDir() / "lecture.json");
     EXPECT_EQ(renderDefines(lecture).count("RL_EXERCISES_FINISHED"), 1u);
-    EXPECT_EQ(renderDefines(lecture).count("RL_OCCLUDERS"), 1u);
+    EXPECT_EQ(renderDefines(lecture).count("RL_SEGMENT_TEST"), 1u);
+    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"02-intersect.glsl",
+                                                                              exercisesDir() / "02-intersect.glsl"}}})
+                  .count("RL_SEGMENT_TEST"),
+              0u);  // a student's own intersectSphere() stays in every ray
     EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
                   .count("RL_EXERCISES_FINISHED"),
               0u);
@@ -425,7 +339,7 @@ TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
 
 // The bench's own scenes through `raylab render`'s program: within the core's
 // budget of the CPU reference, and of the program without the picture's
-// values (occluders, residual set, sample grid, stub tests).
+// layers (residual set, sample grid, stub tests, segment test, candidates).
 TEST(PictureValues, BenchScenesRenderAsWithoutThePictureValues) {
     for (const char* name : {"course-row-ground.json", "random-30.json"}) {
         Scene s = sized(load(sourceRoot() / "tests" / "bench" / name));
