@@ -29,6 +29,7 @@ namespace rl {
 ShaderDefines specialisationDefines(const Scene& scene) {
     ShaderDefines d;
     int spheres = int(scene.spheres.size());
+    int lights = int(scene.lights.size());
     int bounces = scene.render.maxBounces;
     d["RL_SPHERE_COUNT"] = std::to_string(spheres);  // scene.glsl: loops unrolled, uniform block read directly
     d["RL_LIGHT_COUNT"] = std::to_string(lights);
