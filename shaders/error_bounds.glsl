@@ -90,22 +90,24 @@ bool residualFormCandidate(int i) {
 
 // The hit at o + t d on sphere i, taken back onto the sphere along its normal,
 // p' = p - n s (s: how far p lies off the sphere), with the componentwise
-// bound on its distance from the sphere (Hit.error). Two ways to compute s;
-// the one with the smaller bound along n is kept:
-//   length form    s = |p - c| - r:                      e_n = gamma_9 (r + |s|)
-//                  (p - c rounds by u of itself, not of |c|: small or far spheres)
-//   residual form  s = (C_eye - 2 p.c + |p|^2) / 2r:     e_n = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r
+// bound on its distance from the sphere (Hit.error). Two ways to compute s:
+//   length form    s = |p - c| - r                      (small or far spheres)
+//                  (p - c rounds by u of itself, not of |c|; cheaper than
+//                  rebuilding c + r n). Its error, gamma_9 (r + |s|) along n
+//                  plus gamma_8 |s| + gamma_2 |p'|, is covered by the centre
+//                  form's bound, which the exercises' checks model:
+//                  e = gamma_12 (|p'| + r |n|)
+//   residual form  s = (C_eye - 2 p.c + |p|^2) / 2r:
+//                  e = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
 //                  (a huge sphere near the camera, where p - c would carry
 //                  ulp(|c|): 0.008 for a ground of radius 1e5)
-//   e = e_n |n| + gamma_8 |s| + gamma_2 |p'|: n's own error times the step,
-//   and the roundings of p - n s and of the later p' + offset n.
-// docs/numerics.md derives both. residualCandidate: residualFormCandidate()
-// of the sphere (a constant in a specialised program).
+// The residual form is taken where its bound is the smaller. docs/numerics.md
+// derives both. residualCandidate: residualFormCandidate() of the sphere (a
+// constant in a specialised program).
 Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC, bool residualCandidate) {
     const float GAMMA_2 = 2.0 * UNIT_ROUNDOFF / (1.0 - 2.0 * UNIT_ROUNDOFF);
-    const float GAMMA_8 = 8.0 * UNIT_ROUNDOFF / (1.0 - 8.0 * UNIT_ROUNDOFF);
-    const float GAMMA_9 = 9.0 * UNIT_ROUNDOFF / (1.0 - 9.0 * UNIT_ROUNDOFF);
     const float GAMMA_10 = 10.0 * UNIT_ROUNDOFF / (1.0 - 10.0 * UNIT_ROUNDOFF);
+    const float GAMMA_12 = 12.0 * UNIT_ROUNDOFF / (1.0 - 12.0 * UNIT_ROUNDOFF);
     Hit hit;
     hit.t = t;
     hit.sphere = i;
@@ -118,18 +120,18 @@ Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC, bool r
     float inverseLength = inversesqrt(vv);
     vec3 n = v * inverseLength;
     float s = vv * inverseLength - r;  // length form: |p - c| - r
-    float depthError = GAMMA_9 * (r + abs(s));
+    bool residualForm = false;
+    float residualError = 0.0;
     if (residualCandidate) {
         float pp = dot(p, p);
         float halfInverseRadius = 0.5 / r;
-        float residualError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
-        if (residualError < depthError) {
-            s = (cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius;
-            depthError = residualError;
-        }
+        residualError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+        residualForm = residualError < GAMMA_12 * (maxAbs(c) + 2.0 * r);  // |p'| + r <= |c| + 2r
+        if (residualForm) s = (cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius;
     }
     hit.p = p - n * s;
-    hit.error = depthError * abs(n) + (GAMMA_8 * abs(s) + GAMMA_2 * abs(hit.p));
+    vec3 an = abs(n);
+    hit.error = residualForm ? residualError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
     hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
     return hit;
 }

@@ -585,6 +585,26 @@ std::string loadAverage() {
 namespace {
 const char* const kBegin = "<!-- bench:begin -->";
 const char* const kEnd = "<!-- bench:end -->";
+
+// Where the section lies: each marker alone on its line (a document may
+// quote the markers in its text), the begin before the end. {npos, npos}
+// when there is none.
+std::pair<std::size_t, std::size_t> markedSection(const std::string& text) {
+    auto onItsOwnLine = [&](const std::string& marker, std::size_t from) {
+        for (std::size_t at = text.find(marker, from); at != std::string::npos; at = text.find(marker, at + 1)) {
+            bool starts = at == 0 || text[at - 1] == '\n';
+            std::size_t after = at + marker.size();
+            bool ends = after == text.size() || text[after] == '\n' || text[after] == '\r';
+            if (starts && ends) return at;
+        }
+        return std::string::npos;
+    };
+    std::size_t begin = onItsOwnLine(kBegin, 0);
+    if (begin == std::string::npos) return {std::string::npos, std::string::npos};
+    std::size_t end = onItsOwnLine(kEnd, begin);
+    if (end == std::string::npos) return {std::string::npos, std::string::npos};
+    return {begin, end};
+}
 }  // namespace
 
 std::string markdownSection(const MarkdownRun& run, const std::vector<Measurement>& measurements,
@@ -608,10 +628,9 @@ void checkMarkdownTarget(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(file, ec))) return;  // a new file
     std::string text = readRegularFile(file, 16 << 20, "Markdown file");
-    std::size_t begin = text.find(kBegin), end = text.find(kEnd);
-    if (begin == std::string::npos || end == std::string::npos || end < begin)
+    if (markedSection(text).first == std::string::npos)
         throw Error("--markdown: " + file.string() + " exists and has no " + kBegin + " ... " + kEnd +
-                    " section to replace (not changed)");
+                    " section (each marker on a line of its own) to replace (not changed)");
 }
 
 void writeMarkdown(const fs::path& file, const MarkdownRun& run, const std::vector<Measurement>& measurements) {
@@ -620,8 +639,8 @@ void writeMarkdown(const fs::path& file, const MarkdownRun& run, const std::vect
     std::error_code ec;
     if (fs::is_regular_file(file, ec)) {
         std::string text = readRegularFile(file, 16 << 20, "Markdown file");
-        std::size_t begin = text.find(kBegin), end = text.find(kEnd);
-        if (begin != std::string::npos && end != std::string::npos && end > begin) {
+        auto [begin, end] = markedSection(text);
+        if (begin != std::string::npos) {
             writeFileAtomic(file, text.substr(0, begin) + section + text.substr(end + std::string(kEnd).size()));
             return;
         }

@@ -127,8 +127,9 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text); 
 
 // The --markdown output: the command, the machine, the plot (a link, relative
 // to the Markdown file) and the table with the comparisons, between the
-// markers <!-- bench:begin --> and <!-- bench:end -->. An existing file with
-// both markers keeps everything outside them (docs/performance.md); a new
+// markers <!-- bench:begin --> and <!-- bench:end -->, each on a line of its
+// own. An existing file with both keeps everything outside them
+// (docs/performance.md, which also quotes them in its text); a new
 // file gets the section alone; an existing file without them is refused
 // (rl::Error), never overwritten.
 struct MarkdownRun {

@@ -79,21 +79,22 @@ namespace {
 constexpr double kUnitRoundoff = 5.9604644775390625e-8;
 double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
 
-// Whether makeHit()'s residual form can bound some point of `s` more tightly
-// than its length form (shaders/error_bounds.glsl), the sphere seen from the
-// camera at the origin of `centre` (camera-relative, scene units). Over the
-// points p of the sphere, with d = |c|:
+// Whether makeHit() can take its residual form for some point of the sphere
+// (shaders/error_bounds.glsl: where the residual bound is below
+// gamma_12 (max|c_i| + 2r)), the sphere seen from the camera at the origin
+// of `centre` (camera-relative, scene units). Over the points p of the
+// sphere, with d = |c|:
 //   residual bound >= gamma_10 (|C_eye| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
-// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and the length form's is
-// gamma_9 (r + |s|) >= gamma_9 r. A factor of 4 leaves room for the float32
-// hit point and its rounding: a sphere near the limit stays a candidate.
+// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and max|c_i| <= d. A factor
+// of 2 leaves room for the float32 hit point and its rounding: a sphere near
+// the limit stays a candidate.
 bool residualFormCandidate(glm::dvec3 centre, double radius) {
     double d = glm::length(centre);
     double cEye = (d - radius) * (d + radius);
     double residualAtBest = roundingGamma(10) *
                             (std::abs(cEye) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
                             (2.0 * radius);
-    return residualAtBest < 4.0 * roundingGamma(9) * radius;
+    return residualAtBest < 2.0 * roundingGamma(12) * (d + 2.0 * radius);
 }
 
 // GLSL source of a scan: comments dropped (// to the end of the line, /* */).
