@@ -8,7 +8,21 @@ uniform float u_fovY;          // pi/2: the field of view is in the third column
 uniform vec2 u_resolution;     // render target size in pixels
 uniform int u_spp;             // samples per pixel, a square number n*n
 
-vec3 cameraPosition() { return u_cameraToWorld[3].xyz; }
+// The camera sits at the origin of the camera-relative frame: the host always
+// hands over a zero position column (setFrameUniforms), and a constant lets
+// the compiler fold what every camera ray's origin contributes.
+vec3 cameraPosition() { return vec3(0.0); }
+
+// The field of view handed to exercise 01: the uniform (always pi/2), or in a
+// program built for pictures the constant, so that tan(fovY / 2) = 1 folds
+// instead of running per pixel (llvmpipe has no per-draw constant folding).
+float cameraFovY() {
+#ifdef RL_PICTURE_ONLY
+    return 0.5 * PI;
+#else
+    return u_fovY;
+#endif
+}
 
 // The direction of sample s (of n*n) in the pixel whose lower-left corner is
 // `pixel` (column i, row j from the bottom). Exercise 01 computes it; until
@@ -19,6 +33,6 @@ vec3 primaryRayDirection(vec2 pixel, int s, int n) {
     vec3 right = u_cameraToWorld[0].xyz;
     vec3 up = u_cameraToWorld[1].xyz;
     vec3 forward = -u_cameraToWorld[2].xyz;  // forward / tan(fov_y / 2): the same directions as forward with fov_y
-    vec3 d = cameraRayDirection(pixel + offset, u_resolution, u_fovY, right, up, forward);
+    vec3 d = cameraRayDirection(pixel + offset, u_resolution, cameraFovY(), right, up, forward);
     return isGeometryStub(d) ? normalize(forward) : d;
 }

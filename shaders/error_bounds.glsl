@@ -73,17 +73,38 @@ float leavingSphereHit(vec3 o, vec3 d, vec4 geometry) {
     return b < 0.0 ? far : NO_HIT;
 }
 
-// The hit at o + t d on sphere i, reprojected onto the sphere, with the
-// componentwise bound on its distance from the exact surface point (Hit.error).
-// Two reprojections; the one with the smaller bound along n is kept:
-//   centre form    p' = c + r n,  n = normalize(p - c):
-//                  e = gamma_12 (|p'| + r |n|)             (small or far spheres)
-//   residual form  p' = p - n s,  s = (C_eye - 2 p.c + |p|^2) / 2r:
+// Whether makeHit() below can take the residual form for sphere i: a huge
+// sphere near the camera. A program for one picture gets the set from the
+// host, computed in double over every point of every sphere
+// (RL_RESIDUAL_SPHERES, pictureValueDefines() in
+// app/render/specialisation.cpp), so that a scene without such a sphere never
+// computes the residual form; otherwise every sphere is a candidate and the
+// smaller bound is chosen per hit.
+bool residualFormCandidate(int i) {
+#ifdef RL_RESIDUAL_SPHERES
+    return i < 31 && ((RL_RESIDUAL_SPHERES >> i) & 1) != 0;
+#else
+    return true;
+#endif
+}
+
+// The hit at o + t d on sphere i, taken back onto the sphere along its normal,
+// p' = p - n s (s: how far p lies off the sphere), with the componentwise
+// bound on its distance from the sphere (Hit.error). Two ways to compute s:
+//   length form    s = |p - c| - r                      (small or far spheres)
+//                  (p - c rounds by u of itself, not of |c|; cheaper than
+//                  rebuilding c + r n). Its error, gamma_9 (r + |s|) along n
+//                  plus gamma_8 |s| + gamma_2 |p'|, is covered by the centre
+//                  form's bound, which the exercises' checks model:
+//                  e = gamma_12 (|p'| + r |n|)
+//   residual form  s = (C_eye - 2 p.c + |p|^2) / 2r:
 //                  e = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
-//                  (a huge sphere near the camera, where c + r n would carry
+//                  (a huge sphere near the camera, where p - c would carry
 //                  ulp(|c|): 0.008 for a ground of radius 1e5)
-// Both include the rounding of the later p' + offset n (u |p'|).
-Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC) {
+// The residual form is taken where its bound is the smaller. docs/numerics.md
+// derives both. residualCandidate: residualFormCandidate() of the sphere (a
+// constant in a specialised program).
+Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC, bool residualCandidate) {
     const float GAMMA_2 = 2.0 * UNIT_ROUNDOFF / (1.0 - 2.0 * UNIT_ROUNDOFF);
     const float GAMMA_10 = 10.0 * UNIT_ROUNDOFF / (1.0 - 10.0 * UNIT_ROUNDOFF);
     const float GAMMA_12 = 12.0 * UNIT_ROUNDOFF / (1.0 - 12.0 * UNIT_ROUNDOFF);
@@ -95,17 +116,22 @@ Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC) {
     float r = geometry.w;
     vec3 p = o + t * d;
     vec3 v = p - c;
-    float inverseLength = inversesqrt(dot(v, v));
+    float vv = dot(v, v);
+    float inverseLength = inversesqrt(vv);
     vec3 n = v * inverseLength;
-    float pp = dot(p, p);
-    float halfInverseRadius = 0.5 / r;
-    // Along n: the residual form's bound, and the centre form's (|c + r n| <= |c| + r).
-    float depthError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
-    bool residualForm = depthError < GAMMA_12 * (maxAbs(c) + 2.0 * r);
-    // Both forms move p along n onto the sphere: by -s, or to c + r n.
-    hit.p = residualForm ? p - n * ((cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius) : c + r * n;
+    float s = vv * inverseLength - r;  // length form: |p - c| - r
+    bool residualForm = false;
+    float residualError = 0.0;
+    if (residualCandidate) {
+        float pp = dot(p, p);
+        float halfInverseRadius = 0.5 / r;
+        residualError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+        residualForm = residualError < GAMMA_12 * (maxAbs(c) + 2.0 * r);  // |p'| + r <= |c| + 2r
+        if (residualForm) s = (cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius;
+    }
+    hit.p = p - n * s;
     vec3 an = abs(n);
-    hit.error = residualForm ? depthError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
+    hit.error = residualForm ? residualError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
     hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
     return hit;
 }

@@ -14,6 +14,41 @@ Hit g_probeFirstHit;
 vec3 g_probeSecondOrigin;
 #endif
 
+// ---- Candidates (RL_CANDIDATE_SHADOWS, a program for one picture) --------------------------
+//
+// llvmpipe runs every line of unrolled code for all 8 pixels it shades
+// together, but a loop only as often as the pixel that needs it most. So a
+// program for one picture first asks each sphere a cheap question, "can this
+// ray come near it at all?" (mayHitSphere: a few dot products, no root, no
+// division), collects the spheres that can in a bit mask, and runs the
+// shadow test proper (blocksSegment) in a loop over those only. mayHitSphere()
+// never says no to a sphere the test proper would find (its margins cover
+// float32's rounding many times over), so the picture stays the same; a
+// sphere it lets through in vain costs one turn of the loop.
+
+// Whether o + t d, 0 < t < tMax (d unit), can meet the sphere (xyz centre,
+// w radius). A hit needs the ray's closest approach b = (c - o).d within
+// [-r, tMax + r] and its squared distance from the centre |c - o|^2 - b^2
+// at most r^2. Both sides round by a few u of |c - o|^2 (b^2 cancels against
+// |c - o|^2 for a far sphere near the ray): the margins, 1e-5 of the terms,
+// are 40 times that.
+bool mayHitSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
+    vec3 f = sphere.xyz - o;
+    float b = dot(f, d);
+    float ff = dot(f, f);
+    float rr = sphere.w * sphere.w;
+    float margin = 1e-5 * (ff + rr);
+    return ff - b * b <= rr + margin && b + sphere.w >= -1e-5 * (abs(b) + sphere.w) && b - sphere.w <= tMax + 1e-5 * abs(b);
+}
+
+// The lowest sphere index in the mask, taken out of it. float(bit) is exact
+// (a power of two below 2^31); its exponent field is the index.
+int nextCandidate(inout int candidates) {
+    int bit = candidates & -candidates;
+    candidates ^= bit;
+    return (floatBitsToInt(float(bit)) >> 23) - 127;
+}
+
 // Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
 // renormalised first: a reflected direction is unit length only to ~1e-7,
 // and intersectSphere() assumes |dir| = 1 (over a chord of 8 that is 8e-6).
@@ -28,16 +63,18 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     int sphere = NO_SPHERE;
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
     float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
+    bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
-        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (i == leaving) {
             leavingGeometry = sphereI;
 #ifdef RL_SPHERE_COUNT
             leavingC = sphereCameraC(i);
+            leavingResidual = residualFormCandidate(i);
 #endif
         }
+        float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
+        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (t > 0.0 && i != leaving) {
             if (refinesRoot(i)) t = refineRoot(origin, dir, i, t);
             if (t > 0.0 && t < nearest) {
@@ -46,6 +83,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
                 geometry = sphereI;
 #ifdef RL_SPHERE_COUNT  // unrolled: a direct load; a loop would gather it for every sphere
                 cameraC = sphereCameraC(i);
+                residual = residualFormCandidate(i);  // a constant: the residual form folds away where no sphere needs it
 #endif
             }
         }
@@ -57,18 +95,48 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             sphere = leaving;
             geometry = leavingGeometry;
             cameraC = leavingC;
+            residual = leavingResidual;
         }
     }
 #ifndef RL_SPHERE_COUNT
     if (sphere != NO_SPHERE) cameraC = sphereCameraC(sphere);
 #endif
-    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC);
+    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC, residual);
 #if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
     if (g_probeCalls == 0) g_probeFirstHit = hit;
     if (g_probeCalls == 1) g_probeSecondOrigin = origin;
     ++g_probeCalls;
 #endif
     return hit;
+}
+
+// Whether the segment o + t d, 0 < t < tMax (d unit), crosses the sphere's
+// surface: the point of the segment nearest the centre lies within r, and
+// the segment does not lie wholly inside the sphere (then it crosses no
+// surface, as intersectSphere() sees it: its far root lies beyond tMax). The
+// same answer as intersectSphere()'s 0 < t < tMax without a root: no square
+// root, no division. RL_SEGMENT_TEST: a program for one picture whose
+// 02-intersect is the course's solution (the host compares the file), so
+// that a student's own intersectSphere() is what every picture of it shows.
+bool segmentCrossesSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
+    vec3 f = sphere.xyz - o;
+    float b = dot(f, d);
+    float s = clamp(b, 0.0, tMax);  // along the segment, nearest the centre
+    vec3 nearest = f - s * d;
+    vec3 end = f - tMax * d;
+    float rr = sphere.w * sphere.w;
+    return dot(nearest, nearest) <= rr && (dot(f, f) > rr || dot(end, end) > rr);
+}
+
+// The shadow test of sphere i on a segment: the exercise's intersectSphere(),
+// or in a program for one picture with the course's 02, the test above.
+bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
+#ifdef RL_SEGMENT_TEST
+    return segmentCrossesSphere(o, d, tMax, sphere);
+#else
+    float t = intersectSphere(o, d, sphere.xyz, sphere.w);
+    return t > 0.0 && t < tMax;
+#endif
 }
 
 // True when some sphere other than `leaving` is hit at 0 < t < tMax. Stops
@@ -78,9 +146,18 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
 // shadowVisibility): from outside it hides nothing the ray goes to, from
 // inside it hides every light outside it.
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
-    for (int i = 0; i < sphereCount(); ++i) {
-        float t = intersectSphere(origin, dir, sphereCenter(i), sphereRadius(i));
-        if (t > 0.0 && t < tMax && i != leaving) return true;
+#ifdef RL_CANDIDATE_SHADOWS
+    int candidates = 0;
+    for (int i = 0; i < sphereCount(); ++i)
+        if (i != leaving && mayHitSphere(origin, dir, tMax, u_sphereGeometry[i])) candidates |= 1 << i;
+    while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
+        int i = nextCandidate(candidates);
+        if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
     }
     return false;
+#else
+    for (int i = 0; i < sphereCount(); ++i)
+        if (i != leaving && blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
+    return false;
+#endif
 }

@@ -7,7 +7,11 @@ layout(location = 1) out vec4 o_radiance;  // linear radiance averaged over the 
 
 void main() {
     vec2 pixel = floor(gl_FragCoord.xy);  // (i, j), j counted from the bottom
+#ifdef RL_SAMPLE_GRID  // a program for one picture: n compiled in (pictureValueDefines), sampleOffset folds
+    const int n = RL_SAMPLE_GRID;
+#else
     int n = max(1, int(sqrt(float(u_spp)) + 0.5));
+#endif
     if (u_view == VIEW_BOUNCE) g_onlyBounce = u_viewBounce;
     bool traced = u_view == VIEW_FINAL || u_view == VIEW_BOUNCE;
     vec3 sum = vec3(0.0);

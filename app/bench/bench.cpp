@@ -26,7 +26,7 @@ namespace rl::bench {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& sweepNames() {
-    static const std::vector<std::string> names = {"modes", "bounces", "spp", "resolution", "models", "strategies"};
+    static const std::vector<std::string> names = {"modes", "layers", "bounces", "spp", "resolution", "models", "strategies"};
     return names;
 }
 
@@ -120,6 +120,23 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
         add("specialised", "modes", true, scene, true);
+    }
+    if (wanted(options, "layers")) {
+        // The specialised program with one of its layers taken out again, one
+        // at a time: what each costs or saves (docs/performance.md).
+        ShaderDefines all = specialisationDefines(scene);
+        for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
+            all[name] = value;
+        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES",
+                                 "RL_SAMPLE_GRID"}) {
+            if (!all.count(name)) continue;
+            Variant* v = add(std::string("without:") + name, "layers", true, scene);
+            v->withoutDefines.push_back(name);
+        }
+        // The choice made by a count (the candidate loop): the other side too,
+        // so that the bench shows whether the threshold is right for this scene.
+        if (scene.spheres.size() <= 31 && !scene.lights.empty() && !all.count("RL_CANDIDATE_SHADOWS"))
+            add("with:RL_CANDIDATE_SHADOWS", "layers", true, scene)->withDefines["RL_CANDIDATE_SHADOWS"] = "1";
     }
     if (wanted(options, "bounces")) {
         for (int b : {0, 1, 2, 3, 4}) {
@@ -262,11 +279,15 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     programs[i] = buildTextbook();
                     setTextbookUniforms(programs[i], v.scene);
                 } else {
+                    Implementation impl{implDir, v.overrides};
                     ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
-                    if (v.picture)
+                    if (v.picture && v.specialised)
+                        defines = renderProgramDefines(v.scene, impl);  // what `raylab render` compiles
+                    else if (v.picture)
                         for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
                     for (const std::string& name : v.withoutDefines) defines.erase(name);
-                    programs[i] = buildRayTracer(Implementation{implDir, v.overrides}, defines);
+                    for (const auto& [name, value] : v.withDefines) defines[name] = value;
+                    programs[i] = buildRayTracer(impl, defines);
                 }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
@@ -335,7 +356,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
 
 }  // namespace
 
-std::vector<Measurement> runBench(const Options& options, std::ostream& log) {
+std::vector<Measurement> runBench(const Options& options, std::ostream& log, std::string* contextOut) {
     if (options.width < 1 || options.height < 1) throw Error("bench: the size must be at least 1x1");
     if (options.frames < 1) throw Error("--frames: at least 1 timed frame");
     if (options.warmup < 0) throw Error("--warmup: cannot be negative");
@@ -345,7 +366,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log) {
                     std::to_string(options.referenceSpp));
     for (const std::string& s : options.sweeps)
         if (std::find(sweepNames().begin(), sweepNames().end(), s) == sweepNames().end())
-            throw Error("--sweeps: unknown group " + quotedValue(s) + " (expected modes, bounces, spp, resolution, models, strategies)");
+            throw Error("--sweeps: unknown group " + quotedValue(s) + " (expected modes, layers, bounces, spp, resolution, models, strategies)");
 
     std::vector<std::string> files = options.scenes;
     if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
@@ -366,6 +387,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log) {
     auto context = createHeadlessContext(parseBackend(options.backend));
     Clock clock = options.clock;
     if (clock == Clock::Auto) clock = isSoftwareRasteriser(context->description()) ? Clock::Wall : Clock::Gpu;
+    if (contextOut) *contextOut = context->description();
     log << "bench: " << context->description() << "\n"
         << "bench: timing with " << clockName(clock)
         << ", " << options.warmup << " warm-up and " << options.frames << " timed frames per variant\n";
@@ -545,6 +567,85 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
 
 void writeTextFile(const fs::path& path, const std::string& text) {
     writeFileAtomic(path, text);
+}
+
+std::string loadAverage() {
+    std::error_code ec;
+    if (!fs::is_regular_file("/proc/loadavg", ec)) return "";
+    try {
+        std::istringstream in(readRegularFile("/proc/loadavg", 4096));
+        std::string a, b, c;
+        in >> a >> b >> c;
+        return a + " " + b + " " + c;
+    } catch (const Error&) {
+        return "";
+    }
+}
+
+namespace {
+const char* const kBegin = "<!-- bench:begin -->";
+const char* const kEnd = "<!-- bench:end -->";
+
+// Where the section lies: each marker alone on its line (a document may
+// quote the markers in its text), the begin before the end. {npos, npos}
+// when there is none.
+std::pair<std::size_t, std::size_t> markedSection(const std::string& text) {
+    auto onItsOwnLine = [&](const std::string& marker, std::size_t from) {
+        for (std::size_t at = text.find(marker, from); at != std::string::npos; at = text.find(marker, at + 1)) {
+            bool starts = at == 0 || text[at - 1] == '\n';
+            std::size_t after = at + marker.size();
+            bool ends = after == text.size() || text[after] == '\n' || text[after] == '\r';
+            if (starts && ends) return at;
+        }
+        return std::string::npos;
+    };
+    std::size_t begin = onItsOwnLine(kBegin, 0);
+    if (begin == std::string::npos) return {std::string::npos, std::string::npos};
+    std::size_t end = onItsOwnLine(kEnd, begin);
+    if (end == std::string::npos) return {std::string::npos, std::string::npos};
+    return {begin, end};
+}
+}  // namespace
+
+std::string markdownSection(const MarkdownRun& run, const std::vector<Measurement>& measurements,
+                            const fs::path& markdownFile) {
+    std::ostringstream s;
+    s << kBegin << "\n<!-- written by `raylab bench --markdown`: run the command below again, do not edit -->\n\n";
+    s << "```sh\n" << run.command << "\n```\n\n";
+    s << "Context: " << run.context;
+    if (!run.load.empty()) s << "; load average before the run " << run.load << " (1, 5, 15 minutes)";
+    s << ".\n\n";
+    if (!run.plot.empty()) {
+        fs::path base = fs::absolute(markdownFile).parent_path();
+        std::string link = fs::absolute(run.plot).lexically_normal().lexically_relative(base).generic_string();
+        s << "![Error against time per frame](" << link << ")\n\n";
+    }
+    s << "```text\n" << formatTable(measurements) << "\n" << formatComparisons(measurements) << "```\n" << kEnd;
+    return s.str();
+}
+
+void checkMarkdownTarget(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(file, ec))) return;  // a new file
+    std::string text = readRegularFile(file, 16 << 20, "Markdown file");
+    if (markedSection(text).first == std::string::npos)
+        throw Error("--markdown: " + file.string() + " exists and has no " + kBegin + " ... " + kEnd +
+                    " section (each marker on a line of its own) to replace (not changed)");
+}
+
+void writeMarkdown(const fs::path& file, const MarkdownRun& run, const std::vector<Measurement>& measurements) {
+    checkMarkdownTarget(file);
+    std::string section = markdownSection(run, measurements, file);
+    std::error_code ec;
+    if (fs::is_regular_file(file, ec)) {
+        std::string text = readRegularFile(file, 16 << 20, "Markdown file");
+        auto [begin, end] = markedSection(text);
+        if (begin != std::string::npos) {
+            writeFileAtomic(file, text.substr(0, begin) + section + text.substr(end + std::string(kEnd).size()));
+            return;
+        }
+    }
+    writeFileAtomic(file, section + "\n");
 }
 
 }  // namespace rl::bench

@@ -31,6 +31,7 @@ struct Variant {
     bool textbook = false;   // the yardstick instead (bench/textbook.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
+    ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_CANDIDATE_SHADOWS")
     // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
     std::map<std::string, std::filesystem::path> overrides;
     std::string skipReason;  // non-empty: not measured, reported with this note
@@ -67,7 +68,7 @@ struct Options {
     int warmup = 2;                   // untimed frames first (llvmpipe compiles on the first draw)
     int frames = 5;                   // timed frames; the median is reported
     int referenceSpp = 16;            // samples per pixel of the converged CPU reference
-    // Which groups to run: modes, bounces, spp, resolution, models, strategies (empty: all).
+    // Which groups to run: modes, layers, bounces, spp, resolution, models, strategies (empty: all).
     std::set<std::string> sweeps;
     std::string backend = "auto";
     Clock clock = Clock::Auto;        // Auto: Wall on llvmpipe and other software rasterisers, else Gpu
@@ -92,7 +93,8 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options);
 
 // Runs everything (creates its own headless context); progress lines go to `log`.
 // Marks each scene's Pareto front. Throws rl::Error for a bad scene file or options.
-std::vector<Measurement> runBench(const Options& options, std::ostream& log);
+// `context`, when given, receives the GL context's description (renderer, version).
+std::vector<Measurement> runBench(const Options& options, std::ostream& log, std::string* context = nullptr);
 
 // Nearest-neighbour resampling to width x height (display and radiance), for
 // comparing a lower-resolution render with the full-size reference.
@@ -122,6 +124,26 @@ std::string formatTable(const std::vector<Measurement>& measurements);
 std::string formatComparisons(const std::vector<Measurement>& measurements);
 std::string toCsv(const std::vector<Measurement>& measurements);
 void writeTextFile(const std::filesystem::path& path, const std::string& text);  // throws rl::Error
+
+// The --markdown output: the command, the machine, the plot (a link, relative
+// to the Markdown file) and the table with the comparisons, between the
+// markers <!-- bench:begin --> and <!-- bench:end -->, each on a line of its
+// own. An existing file with both keeps everything outside them
+// (docs/performance.md, which also quotes them in its text); a new
+// file gets the section alone; an existing file without them is refused
+// (rl::Error), never overwritten.
+struct MarkdownRun {
+    std::string command;   // as run, e.g. "./raylab bench scenes/lecture.json --size 640x480 ..."
+    std::string context;   // the GL context's description
+    std::string load;      // the load average before the run ("" when unknown)
+    std::string plot;      // the SVG written by --plot ("" for none)
+};
+std::string markdownSection(const MarkdownRun& run, const std::vector<Measurement>& measurements,
+                            const std::filesystem::path& markdownFile);
+void writeMarkdown(const std::filesystem::path& file, const MarkdownRun& run,
+                   const std::vector<Measurement>& measurements);
+void checkMarkdownTarget(const std::filesystem::path& file);  // the refusal above, before a run
+std::string loadAverage();  // the three figures of /proc/loadavg, "" where there is none
 
 // Error against time, one panel per scene, the Pareto front marked (svg_plot.cpp).
 std::string errorTimeSvg(const std::vector<Measurement>& measurements);

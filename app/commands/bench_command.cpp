@@ -1,5 +1,5 @@
-// raylab bench [SCENE...] [--csv FILE] [--plot FILE] [--size WxH] [--warmup N] [--frames N]
-//              [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
+// raylab bench [SCENE...] [--csv FILE] [--plot FILE] [--markdown FILE] [--size WxH] [--warmup N]
+//              [--frames N] [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
 // Time per frame against error for every variant and setting
 // (app/bench/bench.h), as a table, a CSV and an SVG plot with the Pareto front.
 #include "commands/commands.h"
@@ -22,6 +22,7 @@ struct BenchCommandOptions {
     std::vector<std::string> scenes;
     std::string csv;
     std::string plot;
+    std::string markdown;
     std::string size = "320x240";
     int warmup = 2;
     int frames = 5;
@@ -42,9 +43,36 @@ std::set<std::string> splitList(const std::string& text) {
     return out;
 }
 
+// The command as it was run (every option that differs from its default), for
+// the --markdown section, so that the document says how to regenerate it.
+std::string commandLine(const BenchCommandOptions& o) {
+    BenchCommandOptions defaults;
+    std::string line = "./raylab bench";
+    for (const std::string& scene : o.scenes) line += " " + scene;
+    auto option = [&](const char* name, const std::string& value, const std::string& fallback) {
+        if (value != fallback) line += std::string(" ") + name + " " + value;
+    };
+    option("--size", o.size, defaults.size);
+    option("--sweeps", o.sweeps, defaults.sweeps);
+    option("--clock", o.clock, defaults.clock);
+    option("--warmup", std::to_string(o.warmup), std::to_string(defaults.warmup));
+    option("--frames", std::to_string(o.frames), std::to_string(defaults.frames));
+    option("--reference-spp", std::to_string(o.referenceSpp), std::to_string(defaults.referenceSpp));
+    option("--backend", o.backend, defaults.backend);
+    option("--impl", o.impl, defaults.impl);
+    option("--csv", o.csv, defaults.csv);
+    option("--plot", o.plot, defaults.plot);
+    option("--markdown", o.markdown, defaults.markdown);
+    return line;
+}
+
 void runBenchCommand(const BenchCommandOptions& o) {
     if (!o.csv.empty()) requireOutputPath(o.csv);
     if (!o.plot.empty()) requireOutputPath(o.plot);
+    if (!o.markdown.empty()) {
+        requireOutputPath(o.markdown);
+        bench::checkMarkdownTarget(o.markdown);  // minutes of measuring must not end in a refusal
+    }
     bench::Options options;
     options.scenes = o.scenes;
     Size size = parseSize(o.size);
@@ -68,7 +96,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
     for (const std::string& group : options.sweeps)  // before minutes of the view sweep
         if (std::find(bench::sweepNames().begin(), bench::sweepNames().end(), group) == bench::sweepNames().end())
             throw Error("--sweeps: unknown group " + quotedValue(group) +
-                        " (expected modes, bounces, spp, resolution, models, strategies or view)");
+                        " (expected modes, layers, bounces, spp, resolution, models, strategies or view)");
     if (viewSweep) {
         bench::Options view = options;
         if (!o.sizeGiven) {
@@ -78,7 +106,9 @@ void runBenchCommand(const BenchCommandOptions& o) {
         std::cout << bench::formatViewBench(bench::runViewBench(view, std::cerr));
         if (options.sweeps.empty()) return;  // only the view sweep was asked for
     }
-    std::vector<bench::Measurement> results = bench::runBench(options, std::cerr);
+    std::string context;
+    std::string load = bench::loadAverage();  // before the run: what the machine was doing besides
+    std::vector<bench::Measurement> results = bench::runBench(options, std::cerr, &context);
     std::cout << bench::formatTable(results) << "\n" << bench::formatComparisons(results);
     if (!o.csv.empty()) {
         bench::writeTextFile(o.csv, bench::toCsv(results));
@@ -87,6 +117,11 @@ void runBenchCommand(const BenchCommandOptions& o) {
     if (!o.plot.empty()) {
         bench::writeTextFile(o.plot, bench::errorTimeSvg(results));
         std::cout << std::filesystem::absolute(o.plot).lexically_normal().string() << "\n";
+    }
+    if (!o.markdown.empty()) {
+        bench::MarkdownRun run{commandLine(o), context, load, o.plot};
+        bench::writeMarkdown(o.markdown, run, results);
+        std::cout << std::filesystem::absolute(o.markdown).lexically_normal().string() << "\n";
     }
 }
 
@@ -99,6 +134,10 @@ void addBenchCommand(CLI::App& app) {
         ->check(notEmpty());
     cmd->add_option("--csv", options->csv, "Write one CSV row per measurement to FILE")->check(notEmpty());
     cmd->add_option("--plot", options->plot, "Write error against time, Pareto front marked, as SVG to FILE")
+        ->check(notEmpty());
+    cmd->add_option("--markdown", options->markdown,
+                    "Write the table, the comparisons, the command and the machine as Markdown to FILE; in a file "
+                    "that has the markers <!-- bench:begin --> and <!-- bench:end -->, replace only what lies between them")
         ->check(notEmpty());
     cmd->add_option("--size", options->size, "Size of every measurement and of the reference, WIDTHxHEIGHT")
         ->capture_default_str()
@@ -113,7 +152,7 @@ void addBenchCommand(CLI::App& app) {
         ->capture_default_str()
         ->check(squareNumberIn(1, 1024));
     cmd->add_option("--sweeps", options->sweeps,
-                    "Comma-separated groups to run: modes, bounces, spp, resolution, models, strategies (default: all); "
+                    "Comma-separated groups to run: modes, layers, bounces, spp, resolution, models, strategies (default: all); "
                     "view: the live view's programs against the generic one (1280x720 unless --size)");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--clock", options->clock,

@@ -2,7 +2,6 @@
 //               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu] [--view NAME]
 #include "commands/commands.h"
 
-#include "checks/exercise_registry.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/image.h"
@@ -54,13 +53,10 @@ void runRender(const RenderOptions& o) {
         if (!std::filesystem::is_directory(impl.dir, ec))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
+        // The picture (or a bounce view): the program for this picture, from
+        // this camera (renderProgramDefines); the term views need every view.
         ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
-        // The picture-only program trusts traceRay once its helpers are written;
-        // with exercise 09 still the shipped stub it keeps the first-hit fallback.
-        const ExerciseInfo& reflections = findExercise("9");
-        bool traceStub = isUnchangedStub(impl.fileFor(reflections.file()), reflections);
-        if (!o.generic && !traceStub && (view == View::Final || view == View::Bounce))
-            for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+        if (!o.generic && (view == View::Final || view == View::Bounce)) defines = renderProgramDefines(scene, impl);
         ShaderProgram program = buildRayTracer(impl, defines);
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;

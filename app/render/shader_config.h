@@ -35,4 +35,25 @@ ShaderDefines shaderDefinesFor(const Scene& scene, bool specialise);
 // half-written exercises, does not.
 ShaderDefines pictureOnlyDefines();
 
+// For a program that renders pictures of this scene from this camera
+// (`raylab render`): choices that depend on where things are, so a live view,
+// whose camera and values move, must not compile them in. Computed in double
+// (app/render/specialisation.cpp): RL_RESIDUAL_SPHERES, the spheres for which
+// makeHit() can need its residual form (a huge sphere near the camera; none
+// for more than 31 spheres), and RL_SAMPLE_GRID, sqrt(spp).
+ShaderDefines pictureValueDefines(const Scene& scene);
+
+// RL_EXERCISES_FINISHED when every exercise file of `impl` is written and none
+// of them names NOT_STARTED outside comments: no stub test can fire, and the
+// shader drops them (stub_marker.glsl). Empty otherwise.
+ShaderDefines finishedExerciseDefines(const Implementation& impl);
+
+// What `raylab render` compiles for the picture (or a bounce view) of `scene`
+// with `impl`: shaderDefinesFor(scene, true), and, unless exercise 09 is still
+// the shipped stub (then the per-ray fallback to the first hit is kept),
+// pictureOnlyDefines(), pictureValueDefines(scene) and
+// finishedExerciseDefines(impl). The bench's "specialised" row and the
+// accuracy tests compile the same.
+ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl);
+
 }  // namespace rl

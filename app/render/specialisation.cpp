@@ -12,7 +12,17 @@
 // which runs both sides of every branch under a mask.
 #include "render/shader_config.h"
 
+#include "checks/exercise_registry.h"
+#include "core/error.h"
+#include "core/file_io.h"
 #include "core/float_range.h"
+#include "core/paths.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
 
 namespace rl {
 
@@ -61,6 +71,126 @@ ShaderDefines pictureOnlyDefines() {
     // the first hit behind a started traceRay. On llvmpipe, which runs both
     // sides of every branch, each costs about a bounce per pixel even unused.
     return {{"RL_PICTURE_ONLY", "1"}};
+}
+
+namespace {
+
+// Float32's unit roundoff and Higham's gamma_k, as in shaders/error_bounds.glsl.
+constexpr double kUnitRoundoff = 5.9604644775390625e-8;
+double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
+
+// Whether makeHit() can take its residual form for some point of the sphere
+// (shaders/error_bounds.glsl: where the residual bound is below
+// gamma_12 (max|c_i| + 2r)), the sphere seen from the camera at the origin
+// of `centre` (camera-relative, scene units). Over the points p of the
+// sphere, with d = |c|:
+//   residual bound >= gamma_10 (|C_eye| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
+// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and max|c_i| <= d. A factor
+// of 2 leaves room for the float32 hit point and its rounding: a sphere near
+// the limit stays a candidate.
+bool residualFormCandidate(glm::dvec3 centre, double radius) {
+    double d = glm::length(centre);
+    double cEye = (d - radius) * (d + radius);
+    double residualAtBest = roundingGamma(10) *
+                            (std::abs(cEye) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
+                            (2.0 * radius);
+    return residualAtBest < 2.0 * roundingGamma(12) * (d + 2.0 * radius);
+}
+
+// GLSL source of a scan: comments dropped (// to the end of the line, /* */).
+std::string withoutComments(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text.compare(i, 2, "//") == 0) {
+            while (i < text.size() && text[i] != '\n') ++i;
+            out += '\n';
+        } else if (text.compare(i, 2, "/*") == 0) {
+            std::size_t end = text.find("*/", i + 2);
+            i = end == std::string_view::npos ? text.size() : end + 1;
+            out += ' ';
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
+}
+
+bool namesIdentifier(const std::string& code, const std::string& name) {
+    auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+        bool before = at > 0 && isWord(code[at - 1]);
+        bool after = at + name.size() < code.size() && isWord(code[at + name.size()]);
+        if (!before && !after) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+ShaderDefines pictureValueDefines(const Scene& scene) {
+    ShaderDefines d;
+    const glm::dvec3 eye = scene.camera.position;
+    int spheres = int(scene.spheres.size());
+    // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
+    // division (emulated on a CPU's vector units) and the loop's bound fold.
+    d["RL_SAMPLE_GRID"] = std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
+    if (spheres == 0 || spheres > 31) return d;  // the mask is one int
+
+    long residual = 0;
+    for (int i = 0; i < spheres; ++i)
+        if (residualFormCandidate(scene.spheres[i].center - eye, scene.spheres[i].radius)) residual |= 1L << i;
+    d["RL_RESIDUAL_SPHERES"] = std::to_string(residual);
+    return d;
+}
+
+ShaderDefines finishedExerciseDefines(const Implementation& impl) {
+    constexpr std::uintmax_t kLargestExercise = 1 << 20;  // a larger file is read by the compiler, not here
+    for (const ExerciseInfo& exercise : allExercises()) {
+        std::filesystem::path file = impl.fileFor(exercise.file());
+        if (isUnchangedStub(file, exercise)) return {};
+        try {
+            if (namesIdentifier(withoutComments(readRegularFile(file, kLargestExercise)), "NOT_STARTED")) return {};
+        } catch (const Error&) {
+            return {};  // unreadable: the compiler says why
+        }
+    }
+    return {{"RL_EXERCISES_FINISHED", "1"}};
+}
+
+// Whether two implementations have the same text for an exercise file (white
+// space aside, as isUnchangedStub() compares).
+bool sameExercise(const Implementation& a, const Implementation& b, const std::string& file) {
+    constexpr std::uintmax_t kLargestExercise = 1 << 20;
+    try {
+        return normalisedGlsl(readRegularFile(a.fileFor(file), kLargestExercise)) ==
+               normalisedGlsl(readRegularFile(b.fileFor(file), kLargestExercise));
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+// From how many spheres on the candidate loop of the shadow rays pays
+// (docs/performance.md; the bench's layers sweep measures both sides).
+constexpr int kCandidateShadowSpheres = 12;
+
+ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
+    ShaderDefines defines = shaderDefinesFor(scene, true);
+    const ExerciseInfo& reflections = findExercise("9");
+    if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
+    for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
+        for (const auto& [name, value] : more) defines[name] = value;
+    // Shadow rays need whether, not where: with the course's own 02 (the host
+    // compares the file), a closed-form segment test without the root
+    // (intersect_scene.glsl); a student's intersectSphere() stays in every ray.
+    if (sameExercise(impl, Implementation{solutionsDir(), {}}, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
+    // Shadow rays ask every sphere a cheap question first and run the test
+    // proper in a loop over the spheres that pass (intersect_scene.glsl): a
+    // sphere mask is one int, and only with every exercise written.
+    int spheres = int(scene.spheres.size());
+    if (defines.count("RL_EXERCISES_FINISHED") && spheres <= 31) {
+        if (spheres >= kCandidateShadowSpheres && !scene.lights.empty()) defines["RL_CANDIDATE_SHADOWS"] = "1";
+    }
+    return defines;
 }
 
 }  // namespace rl

@@ -55,7 +55,7 @@ Implementation solutionsWith(const std::map<std::string, std::filesystem::path>&
 
 Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specialise) {
     ensureContext();
-    ShaderDefines defines = shaderDefinesFor(scene, specialise);
+    ShaderDefines defines = specialise ? renderProgramDefines(scene, impl) : shaderDefinesFor(scene, false);
     auto& cache = programCache();
     std::string key = programKey("raytracer", impl, defines);
     auto it = cache.find(key);

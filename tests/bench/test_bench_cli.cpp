@@ -287,6 +287,39 @@ TEST(BenchCli, SeveralScenesAndOneSweep) {
     for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
 }
 
+// --markdown: the table, the comparisons, the command and the plot link
+// between the markers, everything around them kept; a file without the
+// markers is refused and left as it was.
+TEST(BenchCli, MarkdownReplacesOnlyItsSection) {
+    fs::path dir = test::freshTempDir("bench_markdown");
+    fs::path doc = dir / "doc.md", plain = dir / "plain.md";
+    test::writeText(doc, "# Before\n\nQuoted: `<!-- bench:begin -->` and `<!-- bench:end -->`.\n\n"
+                         "<!-- bench:begin -->\nold table\n<!-- bench:end -->\n\nAfter.\n");
+    test::writeText(plain, "# Notes\n");
+    std::string common = " --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1 --plot " +
+                         (dir / "plot.svg").string() + " --markdown ";
+    auto r = test::runRaylab("bench " + (scenesDir() / "metal-row.json").string() + common + doc.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::string text = test::readText(doc);
+    // The quoted markers are text, not the section.
+    EXPECT_EQ(text.rfind("# Before\n\nQuoted: `<!-- bench:begin -->` and `<!-- bench:end -->`.\n\n<!-- bench:begin -->", 0),
+              0u)
+        << text;
+    EXPECT_NE(text.find("<!-- bench:end -->\n\nAfter.\n"), std::string::npos) << text;
+    EXPECT_EQ(text.find("old table"), std::string::npos);
+    EXPECT_NE(text.find("./raylab bench"), std::string::npos);
+    EXPECT_NE(text.find("--size 16x12"), std::string::npos);
+    EXPECT_NE(text.find("](plot.svg)"), std::string::npos) << text;
+    EXPECT_NE(text.find("textbook"), std::string::npos);  // the yardstick's row
+    EXPECT_NE(text.find("against the textbook shader"), std::string::npos);
+    EXPECT_EQ(count(text, "<!-- bench:begin -->"), 2u);  // the quote and the section's
+
+    auto refused = test::runRaylab("bench " + (scenesDir() / "metal-row.json").string() + common + plain.string());
+    EXPECT_EQ(refused.status, 1) << refused.output;
+    EXPECT_NE(refused.output.find("no <!-- bench:begin -->"), std::string::npos) << refused.output;
+    EXPECT_EQ(test::readText(plain), "# Notes\n");
+}
+
 // The yardstick is a faithful implementation of the model: on every bundled
 // course scene its picture is as close to the CPU reference as raylab's own
 // (1/255 is one display step; the textbook's fixed relative offset may move a

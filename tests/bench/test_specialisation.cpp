@@ -10,6 +10,7 @@
 #include "reference/cpu_reference.h"
 #include "render/bounce_cutoff.h"
 #include "render/gl_renderer.h"
+#include "core/file_io.h"
 #include "render/shader_config.h"
 #include "shader/shader_library.h"
 #include "support/test_support.h"
@@ -40,9 +41,12 @@ ShaderDefines with(ShaderDefines defines, const ShaderDefines& more) {
     return defines;
 }
 
-// The three programs a scene can get: `raylab render` (specialised, picture
-// only), the live window's (specialised, every view), `render --generic`.
-ShaderDefines renderDefines(const Scene& s) { return with(shaderDefinesFor(s, true), pictureOnlyDefines()); }
+// The three programs a scene can get: `raylab render` (specialised to the
+// structure, the picture and where things are), the live window's
+// (specialised, every view), `render --generic`.
+ShaderDefines renderDefines(const Scene& s, const fs::path& impl = solutionsDir()) {
+    return renderProgramDefines(s, Implementation{impl, {}});
+}
 ShaderDefines fullDefines(const Scene& s) { return shaderDefinesFor(s, true); }
 ShaderDefines genericDefines(const Scene& s) { return shaderDefinesFor(s, false); }
 
@@ -176,7 +180,7 @@ TEST(Specialisation, EveryStageOfTheCourseRendersAsWithTheGenericShader) {
             fs::copy_file(number <= k ? solutionsDir() / name : entry.path(), impl / name);
         }
         Rendering generic = renderWith(s, genericDefines(s), impl);
-        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s), impl), generic);
+        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s, impl), impl), generic);
         SCOPED_TRACE("exercises 01.." + std::to_string(k) + " solved: " + test::describe(d));
         EXPECT_LE(d.offFraction, 0.005);
         EXPECT_LT(d.meanLsb, 0.2);
@@ -288,6 +292,62 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
     EXPECT_TRUE(shaderDefinesFor(variant, false).count("RL_FD_BURLEY"));  // the model is in the generic shader too
 
     EXPECT_EQ(pictureOnlyDefines().count("RL_PICTURE_ONLY"), 1u);
+}
+
+// ---- what a program for one picture compiles in (pictureValueDefines) ---------------------
+
+// The residual form of makeHit is compiled in for the huge spheres near the
+// camera only: the lecture's ground, none of the metal row's spheres, and a
+// sphere around the camera.
+TEST(PictureValues, ResidualFormOnlyForHugeSpheresNearTheCamera) {
+    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "lecture.json")).at("RL_RESIDUAL_SPHERES"), "1");
+    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "metal-row.json")).at("RL_RESIDUAL_SPHERES"), "0");
+    Scene inside = load(scenesDir() / "hard" / "camera-inside.json");
+    EXPECT_NE(pictureValueDefines(inside).at("RL_RESIDUAL_SPHERES"), "0");
+    Scene lecture = load(scenesDir() / "lecture.json");
+    lecture.camera.position = {0, 2000, 3000};  // the ground seen from afar: no longer near
+    lecture.camera.target = {0, 0, -3};
+    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "0");
+}
+
+// The stub tests are compiled out only when no exercise file can return
+// NOT_STARTED: the solutions yes; the shipped stubs, a file that names it in
+// code, no; a file that names it in a comment only, yes.
+TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
+    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {}}).count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_TRUE(finishedExerciseDefines(Implementation{exercisesDir(), {}}).empty());
+    fs::path dir = test::freshTempDir("finished_exercises");
+    std::string file = readRegularFile(solutionsDir() / "07-fresnel.glsl", 1 << 20);
+    writeFileAtomic(dir / "code.glsl", file + "\nfloat unfinishedHelper() { return NOT_STARTED; }\n");
+    writeFileAtomic(dir / "comment.glsl", file + "\n// returned NOT_STARTED until it was written\n/* NOT_STARTED */\n");
+    EXPECT_TRUE(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "code.glsl"}}}).empty());
+    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "comment.glsl"}}})
+                  .count("RL_EXERCISES_FINISHED"),
+              1u);
+    // And `raylab render`'s program has it with the solutions, not with a stub left.
+    Scene lecture = load(scenesDir() / "lecture.json");
+    EXPECT_EQ(renderDefines(lecture).count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_EQ(renderDefines(lecture).count("RL_SEGMENT_TEST"), 1u);
+    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"02-intersect.glsl",
+                                                                              exercisesDir() / "02-intersect.glsl"}}})
+                  .count("RL_SEGMENT_TEST"),
+              0u);  // a student's own intersectSphere() stays in every ray
+    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
+                  .count("RL_EXERCISES_FINISHED"),
+              0u);
+}
+
+// The bench's own scenes through `raylab render`'s program: within the core's
+// budget of the CPU reference, and of the program without the picture's
+// layers (residual set, sample grid, stub tests, segment test, candidates).
+TEST(PictureValues, BenchScenesRenderAsWithoutThePictureValues) {
+    for (const char* name : {"course-row-ground.json", "random-30.json"}) {
+        Scene s = sized(load(sourceRoot() / "tests" / "bench" / name));
+        Rendering picture = renderWith(s, renderDefines(s));
+        expectWithinBudget(picture, ref::renderCpu(s), std::string(name) + ": render vs CPU reference");
+        expectWithinBudget(picture, renderWith(s, with(fullDefines(s), pictureOnlyDefines())),
+                           std::string(name) + ": render vs structure and picture only");
+    }
 }
 
 // ---- the bound behind the early stop, one step at a time ----------------------------------
