@@ -89,7 +89,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.clock = clockName;
             const ShaderDefines defines = e.row.program == "generic"
                                               ? modelDefines(scene.model)
-                                              : liveViewDefines(scene, scene.model, view, traceStarted);
+                                              : liveViewDefines(scene, scene.model, view, traceStarted, fileDefines(impl));
             const auto start = std::chrono::steady_clock::now();
             e.program = buildRayTracer(impl, defines);
             e.row.compileMs = msSince(start);

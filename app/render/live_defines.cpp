@@ -4,11 +4,12 @@ namespace rl {
 
 bool isPictureView(View view) { return view == View::Final || view == View::Bounce; }
 
-ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted) {
+ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted,
+                             const ShaderDefines& files) {
     ShaderDefines defines = modelDefines(model);
     if (!traceStarted || !isPictureView(view)) return defines;  // the generic program (live_defines.h says why)
-    for (const auto& [name, value] : structuralDefines(scene)) defines[name] = value;
-    for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+    for (const ShaderDefines& more : {structuralDefines(scene), pictureOnlyDefines(), implementationDefines(scene, files)})
+        for (const auto& [name, value] : more) defines[name] = value;
     return defines;
 }
 

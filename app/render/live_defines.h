@@ -7,8 +7,10 @@
 // (view/live_program.h), chosen by what `raylab bench --sweeps view` measured
 // on llvmpipe (docs/performance.md, "The live view"):
 //   picture  the picture and the bounce views: modelDefines(), the scene's
-//            structure (structuralDefines()) and pictureOnlyDefines(), as
-//            `raylab render` draws it less RL_NO_METALS
+//            structure (structuralDefines()), pictureOnlyDefines() and what
+//            the files allow (implementationDefines()), as `raylab render`
+//            draws it less what depends on values or the camera
+//            (RL_NO_METALS, RL_SAMPLE_GRID, RL_RESIDUAL_SPHERES)
 //   views    the teaching term views (D, G, F, n.l, ...): the generic program
 //            (modelDefines() only). With the term views compiled in, the
 //            structure's unrolled loops made it slower, not faster (0.56x
@@ -30,7 +32,11 @@ bool isPictureView(View view);
 // shows (--compare-model), usually scene.model. `traceStarted`: exercise 09
 // is no longer the shipped stub (then the picture program may trust it, as
 // `raylab render` does); false keeps the first-hit fallback of the full
-// program for every view.
-ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted);
+// program for every view. `files`: fileDefines() of the side's files at
+// its last (re)build (no stub tests when every exercise is written, the
+// course's 02 as a segment test), with what they allow for the scene's
+// structure (implementationDefines()).
+ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted,
+                              const ShaderDefines& files = {});
 
 }  // namespace rl

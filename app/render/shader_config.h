@@ -48,11 +48,21 @@ ShaderDefines pictureValueDefines(const Scene& scene);
 // shader drops them (stub_marker.glsl). Empty otherwise.
 ShaderDefines finishedExerciseDefines(const Implementation& impl);
 
+// What the files of `impl` allow, whatever the scene's values and camera
+// (so the live view compiles it too, and recomputes it on a hot reload):
+// finishedExerciseDefines(impl), and RL_SEGMENT_TEST when 02-intersect is
+// the course's solution. Reads the files.
+ShaderDefines fileDefines(const Implementation& impl);
+
+// fileDefines() `files` with what they allow for the structure of `scene`:
+// RL_CANDIDATE_SHADOWS from 12 spheres when every exercise is written.
+ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& files);
+
 // What `raylab render` compiles for the picture (or a bounce view) of `scene`
 // with `impl`: shaderDefinesFor(scene, true), and, unless exercise 09 is still
 // the shipped stub (then the per-ray fallback to the first hit is kept),
 // pictureOnlyDefines(), pictureValueDefines(scene) and
-// finishedExerciseDefines(impl). The bench's "specialised" row and the
+// implementationDefines(scene, fileDefines(impl)). The bench's "specialised" row and the
 // accuracy tests compile the same.
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl);
 

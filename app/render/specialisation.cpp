@@ -173,16 +173,17 @@ bool sameExercise(const Implementation& a, const Implementation& b, const std::s
 // (docs/performance.md; the bench's layers sweep measures both sides).
 constexpr int kCandidateShadowSpheres = 12;
 
-ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
-    ShaderDefines defines = shaderDefinesFor(scene, true);
-    const ExerciseInfo& reflections = findExercise("9");
-    if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
-    for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), finishedExerciseDefines(impl)})
-        for (const auto& [name, value] : more) defines[name] = value;
+ShaderDefines fileDefines(const Implementation& impl) {
+    ShaderDefines defines = finishedExerciseDefines(impl);
     // Shadow rays need whether, not where: with the course's own 02 (the host
     // compares the file), a closed-form segment test without the root
     // (intersect_scene.glsl); a student's intersectSphere() stays in every ray.
     if (sameExercise(impl, Implementation{solutionsDir(), {}}, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
+    return defines;
+}
+
+ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& files) {
+    ShaderDefines defines = files;
     // Shadow rays ask every sphere a cheap question first and run the test
     // proper in a loop over the spheres that pass (intersect_scene.glsl): a
     // sphere mask is one int, and only with every exercise written.
@@ -190,6 +191,15 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     if (defines.count("RL_EXERCISES_FINISHED") && spheres <= 31) {
         if (spheres >= kCandidateShadowSpheres && !scene.lights.empty()) defines["RL_CANDIDATE_SHADOWS"] = "1";
     }
+    return defines;
+}
+
+ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
+    ShaderDefines defines = shaderDefinesFor(scene, true);
+    const ExerciseInfo& reflections = findExercise("9");
+    if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
+    for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), implementationDefines(scene, fileDefines(impl))})
+        for (const auto& [name, value] : more) defines[name] = value;
     return defines;
 }
 

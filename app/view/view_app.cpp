@@ -266,6 +266,7 @@ bool traceStarted(const Implementation& impl) {
 void ViewApp::rebuild(Side& side, bool initial) {
     LiveProgram& program = *side.program;
     side.traceStarted = traceStarted(program.implementation());
+    side.files = fileDefines(program.implementation());
     program.setDefines(definesFor(side));
     const bool ok = program.rebuild();
     side.watcher->watch(program.files());
@@ -289,7 +290,7 @@ ShaderDefines ViewApp::definesFor(const Side& side) const {
     // sphere count, bounce limit, model or view kind selects another program.
     const ShadingModel& model = side.model.value_or(scene_.scene().model);
     if (options_.generic) return modelDefines(model);
-    return liveViewDefines(scene_.scene(), model, state_.view, side.traceStarted);
+    return liveViewDefines(scene_.scene(), model, state_.view, side.traceStarted, side.files);
 }
 
 void ViewApp::selectProgram(Side& side) {

@@ -56,6 +56,7 @@ private:
         std::unique_ptr<FileWatcher> watcher;
         std::optional<ShadingModel> model;  // the model it shows (--compare-model); none: the scene's
         bool traceStarted = false;  // exercise 09 is not the shipped stub (render/live_defines.h), at the last build
+        ShaderDefines files;        // fileDefines() of its files, at the last build
     };
 
     // -- the loop (view_app.cpp)

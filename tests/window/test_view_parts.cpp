@@ -229,6 +229,24 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
         << "exercise 09 still the stub: the generic program with its first-hit fallback";
 }
 
+// What the files allow reaches the live picture program as it reaches
+// `raylab render`'s: the solutions are finished and their 02 is the course's.
+TEST(LiveDefines, TheFilesDefinesReachThePictureProgram) {
+    const Scene lecture = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
+    const ShaderDefines files = fileDefines(Implementation{solutionsDir(), {}});
+    EXPECT_EQ(files.count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_EQ(files.count("RL_SEGMENT_TEST"), 1u);
+    const ShaderDefines live = liveViewDefines(lecture, lecture.model, View::Final, true, files);
+    EXPECT_EQ(live.count("RL_EXERCISES_FINISHED"), 1u);
+    EXPECT_EQ(live.count("RL_SEGMENT_TEST"), 1u);
+    EXPECT_EQ(live.count("RL_CANDIDATE_SHADOWS"), 0u) << "six spheres: below the candidate loop's threshold";
+    Scene many = lecture;
+    while (many.spheres.size() < 14) many.spheres.push_back(lecture.spheres[1]);
+    EXPECT_EQ(liveViewDefines(many, many.model, View::Final, true, files).count("RL_CANDIDATE_SHADOWS"), 1u);
+    // ...and never to the teaching views' generic program.
+    EXPECT_EQ(liveViewDefines(lecture, lecture.model, View::D, true, files), modelDefines(lecture.model));
+}
+
 // The command docs/performance.md gives for the live view's program, run as
 // written (smaller and shorter: --size, --frames and --warmup appended): one
 // table with both programs for the picture and a term view, and the live
