@@ -23,12 +23,13 @@ const solutions = readDir(path.join(root, 'solutions'));
 const firstLine = (text) => String(text || '').split('\n')[0];
 
 // SwiftShader's sin and tan are less precise than GLSL's float32 on a GPU
-// (tan 7.6e-5, sin 1.6e-4 relative, measured for issue 15), beyond the
-// 01-camera probe's tolerance: the solution fails there. Kept as a listed,
-// asserted exception until the tolerances are re-justified against the
-// precision GLSL guarantees (issue 15, "portable"): when it passes, this
-// test fails and asks for the entry to go.
-const KNOWN_SWIFTSHADER_FAILURES = backend === 'swiftshader' ? ['01-camera'] : [];
+// (tan 7.6e-5, sin 1.6e-4 relative, measured for issue 15). The 01-camera
+// probe's tolerance is now justified against the precision GLSL ES 3.00
+// guarantees (app/checks, no precision for tan at all), and the solution
+// passes there. An exercise listed here must FAIL on SwiftShader with its
+// pictures passing (and its mutant's hint differ): the test says when an
+// entry can go.
+const KNOWN_SWIFTSHADER_FAILURES = [];
 
 // One mutant per exercise (tests/mutants/): a typical mistake each.
 const MUTANTS = [
