@@ -1,5 +1,6 @@
 #include "bench/bench.h"
 
+#include "bench/frame_clock.h"
 #include "bench/pareto.h"
 #include "bench/textbook.h"
 #include "core/error.h"
@@ -83,16 +84,7 @@ std::vector<ModelVariant> modelVariants() {
     return out;
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 
@@ -210,22 +202,6 @@ Rendering resampleNearest(const Rendering& image, int width, int height) {
 
 namespace {
 
-// Software rasterisers run the fragment shader on worker threads that a
-// GL_TIME_ELAPSED query does not cover: llvmpipe answers a few ms, in no
-// relation to the ~100 ms a frame takes. There the clock is the wall clock
-// around draw + glFinish, which is the frame's cost on a CPU.
-bool isSoftwareRasteriser(const std::string& description) {
-    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe"})
-        if (description.find(name) != std::string::npos) return true;
-    return false;
-}
-
-// CPU time of every thread of this process (llvmpipe's workers included), ms.
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 
 const char* clockName(Clock clock) {
     switch (clock) {

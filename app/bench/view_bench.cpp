@@ -1,5 +1,7 @@
 #include "bench/view_bench.h"
 
+#include "bench/frame_clock.h"
+
 #include "checks/exercise_registry.h"
 #include "core/error.h"
 #include "core/paths.h"
@@ -20,30 +22,6 @@ namespace fs = std::filesystem;
 
 namespace rl::bench {
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// As bench.cpp: llvmpipe's GL_TIME_ELAPSED misses its worker threads, so a
-// software rasteriser is timed by the wall clock around draw + glFinish.
-bool softwareRasteriser(const std::string& description) {
-    for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "lavapipe"})
-        if (description.find(name) != std::string::npos) return true;
-    return false;
-}
-
-double processCpuMs() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
 
 struct Entry {
     ViewBenchRow row;
@@ -70,7 +48,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
 
     auto context = createHeadlessContext(parseBackend(options.backend));
     Clock clock = options.clock;
-    if (clock == Clock::Auto) clock = softwareRasteriser(context->description()) ? Clock::Wall : Clock::Gpu;
+    if (clock == Clock::Auto) clock = isSoftwareRasteriser(context->description()) ? Clock::Wall : Clock::Gpu;
     const std::string clockName = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
     log << "bench: view: " << fs::path(file).filename().string() << " at " << scene.render.width << "x"
         << scene.render.height << ", " << context->description() << ", clock " << clockName << "\n";

@@ -3,6 +3,7 @@
 #include "core/message.h"
 #include "gl/gl_api.h"
 #include "shader/driver_log.h"
+#include "shader/program.h"
 
 #include <cctype>
 #include <set>
@@ -233,17 +234,12 @@ std::string explainPortability(const std::string& message, const std::string& li
 }
 
 std::string portabilityErrors(const AssembledSource& es) {
-    GLuint shader = gl::CreateShader(GL_FRAGMENT_SHADER);
-    const char* text = es.text.c_str();
-    gl::ShaderSource(shader, 1, &text, nullptr);
-    gl::CompileShader(shader);
-    GLint ok = 0, length = 0;
-    gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    gl::GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 0)), '\0');
-    if (length > 0) gl::GetShaderInfoLog(shader, length, nullptr, log.data());
-    gl::DeleteShader(shader);
-    if (ok) return "";
+    std::string log;
+    GLuint shader = compileShaderStage(GL_FRAGMENT_SHADER, es.text, log);
+    if (shader) {
+        gl::DeleteShader(shader);
+        return "";
+    }
     std::string out;
     std::size_t shownErrors = 0, more = 0;
     std::set<std::pair<std::string, int>> seen;  // one error per line: the first is the cause, the rest follow

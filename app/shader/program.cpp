@@ -83,21 +83,30 @@ std::vector<ShaderDiagnostic> mapDriverLog(const std::string& log, const Assembl
     return out;
 }
 
-namespace {
-
-GLuint compile(GLenum stage, const AssembledSource& source, std::vector<ShaderDiagnostic>& warnings) {
+GLuint compileShaderStage(GLenum stage, const std::string& text, std::string& log) {
     GLuint shader = gl::CreateShader(stage);
-    const char* text = source.text.c_str();
-    gl::ShaderSource(shader, 1, &text, nullptr);
+    const char* source = text.c_str();
+    gl::ShaderSource(shader, 1, &source, nullptr);
     gl::CompileShader(shader);
     GLint ok = 0, length = 0;
     gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     gl::GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 0)), '\0');
+    log.assign(std::size_t(std::max(length, 0)), '\0');
     if (length > 0) gl::GetShaderInfoLog(shader, length, nullptr, log.data());
-    auto diagnostics = mapDriverLog(log, source);
     if (!ok) {
         gl::DeleteShader(shader);
+        return 0;
+    }
+    return shader;
+}
+
+namespace {
+
+GLuint compile(GLenum stage, const AssembledSource& source, std::vector<ShaderDiagnostic>& warnings) {
+    std::string log;
+    GLuint shader = compileShaderStage(stage, source.text, log);
+    auto diagnostics = mapDriverLog(log, source);
+    if (!shader) {
         if (diagnostics.empty()) diagnostics.push_back({{}, "error", log.empty() ? "compile failed" : log, ""});
         throw ShaderError(stage == GL_VERTEX_SHADER ? "vertex shader" : "fragment shader", std::move(diagnostics));
     }

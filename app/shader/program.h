@@ -38,6 +38,10 @@ private:
 // moves errors the driver placed after the mistake into the exercise file.
 std::vector<ShaderDiagnostic> mapDriverLog(const std::string& log, const AssembledSource& source);
 
+// Compiles one shader stage; its id (0 when it did not compile: then
+// deleted), `log` the driver's info log.
+GLuint compileShaderStage(GLenum stage, const std::string& text, std::string& log);
+
 class ShaderProgram {
 public:
     ShaderProgram() = default;
