@@ -31,12 +31,16 @@ const firstLine = (text) => String(text || '').split('\n')[0];
 // entry can go.
 const KNOWN_SWIFTSHADER_FAILURES = [];
 
-// One mutant per exercise (tests/mutants/): a typical mistake each.
-const MUTANTS = [
+// One mutant per exercise (tests/mutants/): a typical mistake each. Their
+// first hint lines must equal the native ones; every other file of
+// tests/mutants/ (case `mutants`, too) must get the native verdict.
+const HINTED_MUTANTS = [
   '01-camera--aspect-on-y', '02-intersect--far-root-first', '03-lambert--pi-as-3.14', '04-shadows--no-offset',
   '05-ggx--alpha-not-squared', '06-geometry--ibl-k', '07-fresnel--power-on-voh', '08-cook-torrance--missing-four',
   '09-reflections--full-strength-bounces', '10-display--gamma-before-tonemap',
 ];
+const MUTANTS = fs.readdirSync(path.join(root, 'tests/mutants')).filter((f) => f.endsWith('.glsl'))
+    .map((f) => f.slice(0, -'.glsl'.length)).sort();
 
 function chromiumArgs(profile) {
   const args = ['--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update',
@@ -121,7 +125,8 @@ const cases = {
     expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint && native.message === reports[4].message,
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
-  // Mutants: the verdict and the first hint line the native checker gives.
+  // Mutants: every file of tests/mutants/ gets the native checker's verdict;
+  // the hinted ones also its first hint line.
   async mutants(page) {
     for (const mutant of MUTANTS) {
       const file = path.join(root, 'tests/mutants', mutant + '.glsl');
@@ -143,6 +148,7 @@ const cases = {
       expect(web.status !== 'PASS', mutant + ': passes in the browser');
       expect(web.status === native.status, mutant + ': browser ' + web.status + ', native ' + native.status);
       const sameHint = firstLine(web.hint) === firstLine(native.hint);
+      if (!HINTED_MUTANTS.includes(mutant)) continue;  // the verdict is what every mutant must share
       if (KNOWN_SWIFTSHADER_FAILURES.includes(mutant.split('--')[0])) {
         // The mistake's recogniser needs every case within the tolerance SwiftShader's tan misses.
         expect(!sameHint, mutant + ': the hint matches the native one on SwiftShader now: ' +
@@ -204,6 +210,9 @@ const cases = {
     await setFiles(page, {[name]: lines.join('\n')});
     const web = (await checkInPage(page, [3])).reports[0];
     expect(web.status === 'TIMEOUT', 'runaway loop: ' + web.status + ' ' + web.message);
+    const loopLine = at + 2;  // the for line, 1-based
+    expect((web.message + ' ' + (web.hint || '')).includes(name + ':' + loopLine),
+           'runaway loop: the message names ' + name + ':' + loopLine + ': ' + web.message + ' / ' + web.hint);
     await setFiles(page, {[name]: solutions[name]});
     const after = (await checkInPage(page, [3])).reports[0];
     expect(after.status === 'PASS', 'after the runaway loop: ' + after.status + ' ' + after.message);
