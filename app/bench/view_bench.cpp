@@ -43,8 +43,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     const fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
     if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
     const Implementation impl{implDir, {}};
-    const ExerciseInfo& reflections = findExercise("9");
-    const bool traceStarted = !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+    const bool started = traceStarted(impl);
 
     auto context = createHeadlessContext(parseBackend(options.backend));
     Clock clock = options.clock;
@@ -67,7 +66,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.clock = clockName;
             const ShaderDefines defines = e.row.program == "generic"
                                               ? modelDefines(scene.model)
-                                              : liveViewDefines(scene, scene.model, view, traceStarted, fileDefines(impl));
+                                              : liveViewDefines(scene, scene.model, view, started, fileDefines(impl));
             const auto start = std::chrono::steady_clock::now();
             e.program = buildRayTracer(impl, defines);
             e.row.compileMs = msSince(start);

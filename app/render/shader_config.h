@@ -58,6 +58,11 @@ ShaderDefines fileDefines(const Implementation& impl);
 // RL_CANDIDATE_SHADOWS from 12 spheres when every exercise is written.
 ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& files);
 
+// Whether exercise 09 of `impl` is no longer the shipped stub: then a
+// picture program may trust traceRay() and leave out the per-ray fallback
+// to the first hit (render, the live view and its bench all ask this).
+bool traceStarted(const Implementation& impl);
+
 // What `raylab render` compiles for the picture (or a bounce view) of `scene`
 // with `impl`: shaderDefinesFor(scene, true), and, unless exercise 09 is still
 // the shipped stub (then the per-ray fallback to the first hit is kept),

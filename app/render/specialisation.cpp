@@ -194,18 +194,18 @@ ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& fil
     return defines;
 }
 
+bool traceStarted(const Implementation& impl) {
+    const ExerciseInfo& reflections = findExercise("9");
+    return !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+}
+
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl) {
     ShaderDefines defines = shaderDefinesFor(scene, true);
-    const ExerciseInfo& reflections = findExercise("9");
-    if (isUnchangedStub(impl.fileFor(reflections.file()), reflections)) return defines;
+    if (!traceStarted(impl)) return defines;
     for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), implementationDefines(scene, fileDefines(impl))})
         for (const auto& [name, value] : more) defines[name] = value;
     return defines;
 }
-
-}  // namespace rl
-
-namespace rl {
 
 ShaderDefines structuralDefines(const Scene& scene) {
     // The live view's specialisation (app/render/live_defines.cpp): of

@@ -252,17 +252,6 @@ void ViewApp::applyReloads() {
     }
 }
 
-namespace {
-
-// Exercise 09 edited away from the shipped stub: the picture program may
-// trust traceRay (render/live_defines.h), as `raylab render` does.
-bool traceStarted(const Implementation& impl) {
-    const ExerciseInfo& reflections = findExercise("9");
-    return !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
-}
-
-}  // namespace
-
 void ViewApp::rebuild(Side& side, bool initial) {
     LiveProgram& program = *side.program;
     side.traceStarted = traceStarted(program.implementation());

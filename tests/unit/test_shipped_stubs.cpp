@@ -3,6 +3,7 @@
 // in place, so comparing with it would call every edited file a stub.
 #include "checks/exercise_registry.h"
 #include "core/paths.h"
+#include "render/shader_config.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -127,4 +128,16 @@ TEST(ShippedStubs, ARebuildAfterEditingKeepsTheShippedStub) {
     test::writeText(dir / "exercises" / "07-fresnel.glsl", "// new\nvec3 F_Schlick(vec3 F0, float VoH) {\n    return vec3(NOT_STARTED);\n}\n");
     generate("snapshot");
     EXPECT_EQ(test::readText(dir / "snapshot" / "07-fresnel.glsl"), test::readText(dir / "exercises" / "07-fresnel.glsl"));
+}
+
+// A picture program trusts traceRay() only once exercise 09 is written
+// (render/shader_config.h): the shipped stub keeps the first-hit fallback.
+TEST(ShippedStubs, TraceStartedOnlyWhenExercise09IsNoLongerTheStub) {
+    EXPECT_TRUE(traceStarted(Implementation{solutionsDir(), {}}));
+    fs::path dir = test::freshTempDir("stub_trace");
+    const ExerciseInfo& reflections = findExercise("9");
+    test::writeText(dir / reflections.file(), stubText(reflections));
+    EXPECT_FALSE(traceStarted(Implementation{dir, {}}));
+    test::writeText(dir / reflections.file(), test::readText(solutionsDir() / reflections.file()));
+    EXPECT_TRUE(traceStarted(Implementation{dir, {}}));
 }
