@@ -1,17 +1,15 @@
 // camera.glsl: the pinhole camera as the host hands it over (docs/uniforms.md).
 // The host computes in double and hands over what float32 can carry
-// (docs/uniforms.md): the scene relative to the camera, so the position is
-// 0, and tan(fov_y / 2) folded into the third column, so that u_fovY is
+// (docs/uniforms.md): the position in the scene block (cameraFromAnchor,
+// scene.glsl), a zero column here, and tan(fov_y / 2) folded into the third column, so that u_fovY is
 // pi/2 (tan(u_fovY / 2) = 1) and fields of view up to 180 degrees stay exact.
 uniform mat4 u_cameraToWorld;  // columns: right, up, back / tan(fov_y / 2) (back = -forward), position (0)
 uniform float u_fovY;          // pi/2: the field of view is in the third column
 uniform vec2 u_resolution;     // render target size in pixels
 uniform int u_spp;             // samples per pixel, a square number n*n
 
-// The camera sits at the origin of the camera-relative frame: the host always
-// hands over a zero position column (setFrameUniforms), and a constant lets
-// the compiler fold what every camera ray's origin contributes.
-vec3 cameraPosition() { return vec3(0.0); }
+// Where every camera ray starts, relative to the scene's anchor (scene.glsl).
+vec3 cameraPosition() { return cameraFromAnchor(); }
 
 // The field of view handed to exercise 01: the uniform (always pi/2), or in a
 // program built for pictures the constant, so that tan(fovY / 2) = 1 folds

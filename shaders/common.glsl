@@ -31,7 +31,7 @@ struct Material {
 
 struct Hit {
     float t;          // distance along the (unit) ray direction; NO_HIT for a miss
-    vec3 p;           // hit point, camera-relative world space, reprojected onto the sphere
+    vec3 p;           // hit point relative to the scene's anchor (scene.glsl), reprojected onto the sphere
     vec3 n;           // unit normal, flipped to face the incoming ray
     vec3 error;       // componentwise bound on |p - the exact surface point| (error_bounds.glsl)
     int sphere;       // index of the sphere hit (NO_SPHERE for none)

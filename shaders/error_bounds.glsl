@@ -4,9 +4,10 @@
 // section 6.8, "Managing Rounding Error"); docs/numerics.md derives every
 // bound. Exercise 04's offsetRayOrigin() turns Hit.error into the one offset.
 //
-// Coordinates are camera-relative (the host subtracts the eye in double before
-// float32, docs/uniforms.md): the camera sits at the origin, so a hit near it
-// is made of small numbers whatever the scene's position in the world.
+// Coordinates are relative to the scene's anchor (scene.glsl; the host
+// subtracts in double before float32, docs/uniforms.md), a point among the
+// spheres: a hit point carries float32's rounding of the scene's size,
+// whatever the scene's position in the world or the camera's distance.
 
 // u = 2^-24, the unit roundoff of float32: a correctly rounded operation on x
 // is off by at most u |x|.
@@ -16,9 +17,10 @@ const float UNIT_ROUNDOFF = 5.9604644775390625e-8;
 // error of k chained roundings.
 float roundingGamma(float k) { return k * UNIT_ROUNDOFF / (1.0 - k * UNIT_ROUNDOFF); }
 
-// Precomputed by the host in double for each sphere: |centre - eye|^2 - r^2,
-// the constant term of every camera ray's quadratic (scene.glsl, u_sphereExtra.z).
-float sphereCameraC(int i) { return u_sphereExtra[i].z; }
+// Precomputed by the host in double for each sphere: |centre|^2 - r^2 (the
+// centre relative to the anchor), the constant term of the quadratic of a ray
+// from the anchor (scene.glsl, u_sphereExtra.z).
+float sphereAnchorC(int i) { return u_sphereExtra[i].z; }
 
 // Whether closestHit() refines the exercise's roots on sphere i: the huge
 // spheres of the scene (radius at least REFINE_RADIUS_RATIO times the
@@ -44,15 +46,15 @@ bool refinesRoot(int i) {
 // The step is taken only where g rounds less than the exercise's C did,
 // ~u |o - c|^2: a far small sphere (t (t + 2b) ~ |o - c|^2 cancels in g too)
 // keeps the exercise's stable root.
-float refineRoot(vec3 o, vec3 d, int i, float t) {
-    vec3 f = o - sphereCenter(i);
+// `sphere`: the sphere's centre and radius, `C` its |c|^2 - r^2 (sphereAnchorC).
+float refineRoot(vec3 o, vec3 d, vec4 sphere, float C, float t) {
+    vec3 c = sphere.xyz;
+    vec3 f = o - c;
     float b = dot(f, d);
-    float r = sphereRadius(i);
-    vec3 c = sphereCenter(i);
-    float errorFromEye = abs(sphereCameraC(i)) + 2.0 * dot(abs(o), abs(c)) + dot(o, o);
-    float errorG = abs(t) * abs(t + 2.0 * b) + errorFromEye;
+    float errorFromAnchor = abs(C) + 2.0 * dot(abs(o), abs(c)) + dot(o, o);
+    float errorG = abs(t) * abs(t + 2.0 * b) + errorFromAnchor;
     if (errorG >= 0.25 * dot(f, f)) return t;
-    float g = t * (t + 2.0 * b) + (sphereCameraC(i) - 2.0 * dot(o, c) + dot(o, o));
+    float g = t * (t + 2.0 * b) + (C - 2.0 * dot(o, c) + dot(o, o));
     float step = g / (2.0 * (t + b));
     return abs(step) < 0.5 * abs(t) ? t - step : t;
 }
@@ -88,23 +90,22 @@ bool residualFormCandidate(int i) {
 #endif
 }
 
-// The hit at o + t d on sphere i, taken back onto the sphere along its normal,
-// p' = p - n s (s: how far p lies off the sphere), with the componentwise
-// bound on its distance from the sphere (Hit.error). Two ways to compute s:
-//   length form    s = |p - c| - r                      (small or far spheres)
-//                  (p - c rounds by u of itself, not of |c|; cheaper than
-//                  rebuilding c + r n). Its error, gamma_9 (r + |s|) along n
-//                  plus gamma_8 |s| + gamma_2 |p'|, is covered by the centre
-//                  form's bound, which the exercises' checks model:
+// The hit at o + t d on sphere i (`geometry`, its centre and radius, and
+// `anchorC`, its |c|^2 - r^2: sphereAnchorC), taken back onto the sphere
+// along its normal n = (p - c) / |p - c|, with the componentwise bound on its
+// distance from the sphere (Hit.error). Two forms:
+//   centre form    p' = c + r n                          (small or far spheres)
 //                  e = gamma_12 (|p'| + r |n|)
-//   residual form  s = (C_eye - 2 p.c + |p|^2) / 2r:
-//                  e = gamma_10 (|C_eye| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
-//                  (a huge sphere near the camera, where p - c would carry
+//                  (c carries u |c|, r n a few u r; an error of n moves p'
+//                  along the sphere, not off it)
+//   residual form  p' = p - n s, s = (C - 2 p.c + |p|^2) / 2r:
+//                  e = gamma_10 (|C| + 2 |p|.|c| + |p|^2) / 2r |n| + gamma_2 |p'|
+//                  (a huge sphere near the anchor, where c + r n would carry
 //                  ulp(|c|): 0.008 for a ground of radius 1e5)
 // The residual form is taken where its bound is the smaller. docs/numerics.md
 // derives both. residualCandidate: residualFormCandidate() of the sphere (a
 // constant in a specialised program).
-Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC, bool residualCandidate) {
+Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float anchorC, bool residualCandidate) {
     const float GAMMA_2 = 2.0 * UNIT_ROUNDOFF / (1.0 - 2.0 * UNIT_ROUNDOFF);
     const float GAMMA_10 = 10.0 * UNIT_ROUNDOFF / (1.0 - 10.0 * UNIT_ROUNDOFF);
     const float GAMMA_12 = 12.0 * UNIT_ROUNDOFF / (1.0 - 12.0 * UNIT_ROUNDOFF);
@@ -115,23 +116,19 @@ Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float cameraC, bool r
     vec3 c = geometry.xyz;
     float r = geometry.w;
     vec3 p = o + t * d;
-    vec3 v = p - c;
-    float vv = dot(v, v);
-    float inverseLength = inversesqrt(vv);
-    vec3 n = v * inverseLength;
-    float s = vv * inverseLength - r;  // length form: |p - c| - r
-    bool residualForm = false;
-    float residualError = 0.0;
+    vec3 n = normalize(p - c);
+    vec3 an = abs(n);
+    hit.p = c + r * n;
+    hit.error = GAMMA_12 * (abs(hit.p) + r * an);
     if (residualCandidate) {
         float pp = dot(p, p);
         float halfInverseRadius = 0.5 / r;
-        residualError = GAMMA_10 * (abs(cameraC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
-        residualForm = residualError < GAMMA_12 * (maxAbs(c) + 2.0 * r);  // |p'| + r <= |c| + 2r
-        if (residualForm) s = (cameraC - 2.0 * dot(p, c) + pp) * halfInverseRadius;
+        float residualError = GAMMA_10 * (abs(anchorC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+        if (residualError < GAMMA_12 * (maxAbs(c) + 2.0 * r)) {  // |p'| + r <= |c| + 2r
+            hit.p = p - n * ((anchorC - 2.0 * dot(p, c) + pp) * halfInverseRadius);
+            hit.error = residualError * an + GAMMA_2 * abs(hit.p);
+        }
     }
-    hit.p = p - n * s;
-    vec3 an = abs(n);
-    hit.error = residualForm ? residualError * an + GAMMA_2 * abs(hit.p) : GAMMA_12 * (abs(hit.p) + r * an);
     hit.n = dot(n, d) > 0.0 ? -n : n;  // hit from inside: face the ray
     return hit;
 }

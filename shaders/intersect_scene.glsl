@@ -62,27 +62,27 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     float nearest = 3.4e38;  // FLT_MAX: any real hit is nearer
     int sphere = NO_SPHERE;
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
-    float cameraC = 0.0, leavingC = 0.0;  // sphereCameraC() of the nearest, of `leaving`
+    float anchorC = 0.0, leavingC = 0.0;            // sphereAnchorC() of the nearest, of `leaving`
     bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
         if (i == leaving) {
             leavingGeometry = sphereI;
 #ifdef RL_SPHERE_COUNT
-            leavingC = sphereCameraC(i);
+            leavingC = sphereAnchorC(i);
             leavingResidual = residualFormCandidate(i);
 #endif
         }
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
         if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (t > 0.0 && i != leaving) {
-            if (refinesRoot(i)) t = refineRoot(origin, dir, i, t);
+            if (refinesRoot(i)) t = refineRoot(origin, dir, sphereI, sphereAnchorC(i), t);
             if (t > 0.0 && t < nearest) {
                 nearest = t;
                 sphere = i;
                 geometry = sphereI;
 #ifdef RL_SPHERE_COUNT  // unrolled: a direct load; a loop would gather it for every sphere
-                cameraC = sphereCameraC(i);
+                anchorC = sphereAnchorC(i);
                 residual = residualFormCandidate(i);  // a constant: the residual form folds away where no sphere needs it
 #endif
             }
@@ -94,14 +94,17 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             nearest = t;
             sphere = leaving;
             geometry = leavingGeometry;
-            cameraC = leavingC;
+            anchorC = leavingC;
             residual = leavingResidual;
         }
     }
 #ifndef RL_SPHERE_COUNT
-    if (sphere != NO_SPHERE) cameraC = sphereCameraC(sphere);
+    if (sphere != NO_SPHERE) {
+        anchorC = sphereAnchorC(sphere);
+        residual = residualFormCandidate(sphere);
+    }
 #endif
-    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, cameraC, residual);
+    if (sphere != NO_SPHERE) hit = makeHit(origin, dir, nearest, sphere, geometry, anchorC, residual);
 #if defined(RL_PROBE_EXERCISE) && RL_PROBE_EXERCISE == 9
     if (g_probeCalls == 0) g_probeFirstHit = hit;
     if (g_probeCalls == 1) g_probeSecondOrigin = origin;

@@ -10,13 +10,19 @@
 #define RL_MAX_LIGHTS 16
 #endif
 
+// Coordinates relative to the scene's anchor (docs/numerics.md, "The anchor
+// frame"): a point the host chooses among the spheres and subtracts in double
+// before float32, so that a hit point carries float32's rounding of the
+// scene's size, not of the camera's distance or of the scene's position in
+// the world. Every position (ray origins, Hit.p, the lights) is in it.
 layout(std140) uniform SceneBlock {
-    vec4 u_sphereGeometry[RL_MAX_SPHERES];  // xyz centre relative to the camera, w radius (scene units, docs/uniforms.md)
+    vec4 u_sphereGeometry[RL_MAX_SPHERES];  // xyz centre relative to the anchor, w radius (scene units, docs/uniforms.md)
     vec4 u_sphereSurface[RL_MAX_SPHERES];   // rgb albedo (linear), a perceptual roughness
-    vec4 u_sphereExtra[RL_MAX_SPHERES];     // x metallic, y ao, z |centre - eye|^2 - r^2 (from double), w 1: refine its roots
+    vec4 u_sphereExtra[RL_MAX_SPHERES];     // x metallic, y ao, z |centre|^2 - r^2 (from double), w 1: refine its roots
     vec4 u_sphereEdgeTint[RL_MAX_SPHERES];  // rgb conductor edge tint (model variants only)
-    vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position relative to the camera (scene units)
+    vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position relative to the anchor (scene units)
     vec4 u_lightIntensity[RL_MAX_LIGHTS];   // rgb colour * intensity (linear)
+    vec4 u_cameraFromAnchor;                // xyz the camera's position relative to the anchor
 };
 
 uniform int u_sphereCount;   // number of valid entries in the sphere arrays
@@ -51,6 +57,17 @@ int maxBounces() {
 
 vec3 sphereCenter(int i) { return u_sphereGeometry[i].xyz; }
 float sphereRadius(int i) { return u_sphereGeometry[i].w; }
+
+// The camera's position, where every camera ray starts. A program for one
+// picture gets it as a constant (RL_CAMERA_FROM_ANCHOR,
+// app/render/specialisation.cpp), so that what the camera rays share folds.
+vec3 cameraFromAnchor() {
+#ifdef RL_CAMERA_FROM_ANCHOR
+    return RL_CAMERA_FROM_ANCHOR;
+#else
+    return u_cameraFromAnchor.xyz;
+#endif
+}
 
 Material sphereMaterial(int i) {
     Material m;

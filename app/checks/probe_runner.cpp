@@ -46,7 +46,9 @@ std::vector<std::array<float, 4>> runProbe(const ShaderProgram& program, const P
     // while an active uniform block has no buffer (the browser edition, web/),
     // which desktop drivers let pass.
     SceneUniformBlock block;
-    block.upload(s, framePosition(frame));  // probe inputs are in the same coordinates
+    // Probe inputs are in the camera frame, and so are the hits they make:
+    // the anchor is the camera.
+    block.upload(s, framePosition(frame), framePosition(frame));
     block.bind(program);
     gl::ActiveTexture(GL_TEXTURE0);
     gl::BindTexture(GL_TEXTURE_2D, input);

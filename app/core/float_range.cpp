@@ -43,6 +43,21 @@ bool refinesRoots(const Scene& scene, std::size_t i) {
     return scene.spheres[i].radius >= 64.0 * smallest;
 }
 
+glm::dvec3 sceneAnchor(const Scene& scene) {
+    if (scene.spheres.empty()) return scene.camera.position;
+    double smallest = scene.spheres[0].radius;
+    for (const Sphere& s : scene.spheres) smallest = std::min(smallest, s.radius);
+    auto huge = [&](const Sphere& s) { return s.radius >= 64.0 * smallest; };
+    bool anySmall = std::any_of(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) { return !huge(s); });
+    glm::dvec3 low(INFINITY), high(-INFINITY);
+    for (const Sphere& s : scene.spheres) {
+        if (anySmall && huge(s)) continue;
+        low = glm::min(low, s.center);
+        high = glm::max(high, s.center);
+    }
+    return 0.5 * low + 0.5 * high;  // no overflow for centres near double's limit
+}
+
 std::string floatRangeProblem(const Scene& scene) {
     auto tooLarge = [](const std::string& field, double value) {
         return field + " is " + number(value) + ", beyond float32's largest value " + number(kFloat32Max) +

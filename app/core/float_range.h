@@ -39,6 +39,17 @@ ShaderUnits shaderUnits(const Scene& scene, const glm::dvec3& eye);
 // scene alone, so the live view's camera never recompiles a shader.
 bool refinesRoots(const Scene& scene, std::size_t i);
 
+// The origin of the coordinates of every ray that leaves a sphere (shadow
+// rays, mirror bounces; docs/numerics.md, "Two frames"): the centre of the
+// bounding box of the scene's spheres, the huge ones (refinesRoots() by
+// size: a ground, a room) left out unless every sphere is huge. Camera rays
+// start at the camera, the origin of their own frame; a hit point and the
+// rays leaving it then carry float32's rounding of the scene's size, not of
+// the camera's distance (a scene seen from 1000 times its size keeps its
+// contact shadows). A property of the scene alone: the live view's moving
+// camera never moves it.
+glm::dvec3 sceneAnchor(const Scene& scene);
+
 // "" when every value of the scene reaches the shader finite and meaningful;
 // otherwise "FIELD: VALUE ..., LIMIT" for the first that does not (field
 // names as in the scene file: render.exposure, lights[2].intensity, ...).

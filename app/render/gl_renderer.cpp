@@ -1,6 +1,7 @@
 #include "render/gl_renderer.h"
 
 #include "core/error.h"
+#include "core/float_range.h"
 
 #include <vector>
 
@@ -65,7 +66,7 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
     setFrameUniforms(program, scene_, frame);
     glm::dvec3 eye = framePosition(frame);
     if (!uploaded_ || eye != uploadedEye_) {  // the live view's camera moves: the block follows it
-        sceneBlock_.upload(scene_, eye);
+        sceneBlock_.upload(scene_, eye, sceneAnchor(scene_));
         uploaded_ = true;
         uploadedEye_ = eye;
     }

@@ -26,7 +26,7 @@ glm::dmat4 cameraToWorld(const Camera& c) {
 }
 
 namespace {
-// std140 layout of SceneBlock in shaders/scene.glsl: six vec4 arrays.
+// std140 layout of SceneBlock in shaders/scene.glsl: six vec4 arrays and the camera.
 struct SceneBlockData {
     glm::vec4 sphereGeometry[kMaxSpheres];
     glm::vec4 sphereSurface[kMaxSpheres];
@@ -34,6 +34,7 @@ struct SceneBlockData {
     glm::vec4 sphereEdgeTint[kMaxSpheres];
     glm::vec4 lightPosition[kMaxLights];
     glm::vec4 lightIntensity[kMaxLights];
+    glm::vec4 cameraFromAnchor;
 };
 constexpr GLuint kSceneBlockBinding = 0;
 }  // namespace
@@ -48,33 +49,34 @@ SceneUniformBlock::~SceneUniformBlock() {
     if (buffer_) gl::DeleteBuffers(1, &buffer_);
 }
 
-void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye) {
-    // Camera-relative, in double until the last step (docs/numerics.md): a
-    // scene far from the world origin, or a camera far from the scene, then
-    // loses in float32 only the rounding of what the camera sees.
+void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor) {
+    // Relative to the anchor, in double until the last step (docs/numerics.md):
+    // a scene far from the world origin, or a camera far from the scene, then
+    // loses in float32 only the rounding of the scene's own size.
     ShaderUnits units = shaderUnits(scene, eye);
     double unit = units.unit, area = unit * unit;  // powers of two: exact
     SceneBlockData data{};
     for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
         const Sphere& s = scene.spheres[i];
-        glm::dvec3 centre = (s.center - eye) / unit;
+        glm::dvec3 centre = (s.center - anchor) / unit;
         double radius = s.radius / unit;
-        // |oc|^2 - r^2 of every camera ray, as (|oc| - r)(|oc| + r): no cancellation
-        // when the camera is near a huge sphere (error_bounds.glsl, sphereRoots).
+        // |c|^2 - r^2 of every ray from the anchor, as (|c| - r)(|c| + r): no
+        // cancellation near a huge sphere (error_bounds.glsl, refineRoot).
         double distance = glm::length(centre);
-        double cameraC = (distance - radius) * (distance + radius);
+        double anchorC = (distance - radius) * (distance + radius);
         data.sphereGeometry[i] = glm::vec4(glm::vec3(centre), float(radius));
         data.sphereSurface[i] = glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness));
-        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), float(cameraC),
+        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), float(anchorC),
                                         refinesRoots(scene, i) ? 1.0f : 0.0f);
         data.sphereEdgeTint[i] = glm::vec4(glm::vec3(s.material.edgeTint), 0.0f);
     }
     for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
         const Light& l = scene.lights[i];
         glm::dvec3 intensity = units.lightsTooClose ? glm::dvec3(0.0) : l.color * l.intensity / area;
-        data.lightPosition[i] = glm::vec4(glm::vec3((l.position - eye) / unit), 1.0f);
+        data.lightPosition[i] = glm::vec4(glm::vec3((l.position - anchor) / unit), 1.0f);
         data.lightIntensity[i] = glm::vec4(glm::vec3(intensity), 0.0f);
     }
+    data.cameraFromAnchor = glm::vec4(glm::vec3((eye - anchor) / unit), 0.0f);
     gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
     gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
 }
@@ -120,7 +122,7 @@ FrameSettings frameFromScene(const Scene& scene) {
 void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSettings& frame) {
     const RenderSettings& r = scene.render;
     gl::UseProgram(p.id());
-    // Camera-relative (the scene block is uploaded relative to this position),
+    // The camera basis only (its position is in the scene block, relative to the anchor),
     // with tan(fov_y / 2), in double, folded into right and up: the spec's
     // x r + y u + f with x, y computed at tan = 1 (u_fovY = pi/2) points the
     // same way, and a fov near 180 degrees no longer rounds past 90 in float.

@@ -22,10 +22,11 @@ public:
     SceneUniformBlock(const SceneUniformBlock&) = delete;
     SceneUniformBlock& operator=(const SceneUniformBlock&) = delete;
 
-    // Spheres and lights relative to `eye` (the camera position), computed in
-    // double and rounded to float32 last, with each sphere's |centre - eye|^2
-    // - r^2 (docs/uniforms.md). The frame drawn must be seen from `eye`.
-    void upload(const Scene& scene, const glm::dvec3& eye);
+    // Spheres, lights and the camera `eye` relative to `anchor` (sceneAnchor()),
+    // computed in double and rounded to float32 last, with each sphere's
+    // |centre - anchor|^2 - r^2 (docs/uniforms.md). The frame drawn must be
+    // seen from `eye`.
+    void upload(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor);
     void bind(const ShaderProgram& program) const;
 
 private:

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string_view>
 
 namespace rl {
@@ -79,22 +80,34 @@ namespace {
 constexpr double kUnitRoundoff = 5.9604644775390625e-8;
 double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
 
-// Whether makeHit() can take its residual form for some point of the sphere
-// (shaders/error_bounds.glsl: where the residual bound is below
-// gamma_12 (max|c_i| + 2r)), the sphere seen from the camera at the origin
-// of `centre` (camera-relative, scene units). Over the points p of the
-// sphere, with d = |c|:
-//   residual bound >= gamma_10 (|C_eye| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
-// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and max|c_i| <= d. A factor
-// of 2 leaves room for the float32 hit point and its rounding: a sphere near
-// the limit stays a candidate.
+// Whether makeHit()'s residual form can pay for some point of the sphere
+// (shaders/error_bounds.glsl: it is taken where its bound is below the centre
+// form's, gamma_12 (max|c_i| + 2r)), the sphere at `centre` relative to the
+// scene's anchor (the origin of makeHit()'s coordinates, scene units). Over
+// the points p of the sphere, with d = |c|:
+//   residual bound >= gamma_10 (|C| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
+// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and max|c_i| <= d. Both
+// bounds are sound; the residual form is compiled in only where it can be
+// 4 times smaller: a huge sphere near the anchor (a ground of radius 1000
+// under the spheres: 4000 times), not a small sphere beside the anchor (at
+// most 2.4 times, a few u r either way).
 bool residualFormCandidate(glm::dvec3 centre, double radius) {
     double d = glm::length(centre);
-    double cEye = (d - radius) * (d + radius);
+    double cAnchor = (d - radius) * (d + radius);
     double residualAtBest = roundingGamma(10) *
-                            (std::abs(cEye) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
+                            (std::abs(cAnchor) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
                             (2.0 * radius);
-    return residualAtBest < 2.0 * roundingGamma(12) * (d + 2.0 * radius);
+    return 4.0 * residualAtBest < roundingGamma(12) * (d + 2.0 * radius);
+}
+
+// A GLSL float literal that reads back as exactly x (9 significant digits
+// round-trip a float32).
+std::string floatLiteral(float x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(x));
+    std::string literal = text;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    return literal;
 }
 
 // GLSL source of a scan: comments dropped (// to the end of the line, /* */).
@@ -129,16 +142,22 @@ bool namesIdentifier(const std::string& code, const std::string& name) {
 
 ShaderDefines pictureValueDefines(const Scene& scene) {
     ShaderDefines d;
-    const glm::dvec3 eye = scene.camera.position;
+    const glm::dvec3 anchor = sceneAnchor(scene);  // makeHit() works in the anchor's frame
     int spheres = int(scene.spheres.size());
     // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
     // division (emulated on a CPU's vector units) and the loop's bound fold.
     d["RL_SAMPLE_GRID"] = std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
+    // The camera's position in the anchor frame, the float32 value the scene
+    // block holds (SceneUniformBlock::upload): the camera rays' origin folds to
+    // the camera frame's 0 in closestHit() (scene.glsl, cameraFromAnchor).
+    glm::vec3 camera((scene.camera.position - anchor) / shaderUnits(scene, scene.camera.position).unit);
+    d["RL_CAMERA_FROM_ANCHOR"] = "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " +
+                                 floatLiteral(camera.z) + ")";
     if (spheres == 0 || spheres > 31) return d;  // the mask is one int
 
     long residual = 0;
     for (int i = 0; i < spheres; ++i)
-        if (residualFormCandidate(scene.spheres[i].center - eye, scene.spheres[i].radius)) residual |= 1L << i;
+        if (residualFormCandidate(scene.spheres[i].center - anchor, scene.spheres[i].radius)) residual |= 1L << i;
     d["RL_RESIDUAL_SPHERES"] = std::to_string(residual);
     return d;
 }

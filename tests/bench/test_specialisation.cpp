@@ -11,6 +11,7 @@
 #include "render/bounce_cutoff.h"
 #include "render/gl_renderer.h"
 #include "core/file_io.h"
+#include "core/float_range.h"
 #include "render/shader_config.h"
 #include "shader/shader_library.h"
 #include "support/test_support.h"
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -297,17 +299,42 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
 // ---- what a program for one picture compiles in (pictureValueDefines) ---------------------
 
 // The residual form of makeHit is compiled in for the huge spheres near the
-// camera only: the lecture's ground, none of the metal row's spheres, and a
-// sphere around the camera.
-TEST(PictureValues, ResidualFormOnlyForHugeSpheresNearTheCamera) {
+// scene's anchor (the frame of every hit point, sceneAnchor()) only: the
+// lecture's ground (radius 1000 or 1e5), none of the metal row's spheres, not
+// the radius-4 sphere around camera-inside's spheres (its bound can be at
+// most 2.9 times the centre form's smaller there). The anchor is the
+// scene's, not the camera's: the ground seen from afar keeps it; the small
+// spheres lifted far above the ground take the anchor away from it.
+TEST(PictureValues, ResidualFormOnlyForHugeSpheresNearTheAnchor) {
     EXPECT_EQ(pictureValueDefines(load(scenesDir() / "lecture.json")).at("RL_RESIDUAL_SPHERES"), "1");
     EXPECT_EQ(pictureValueDefines(load(scenesDir() / "metal-row.json")).at("RL_RESIDUAL_SPHERES"), "0");
-    Scene inside = load(scenesDir() / "hard" / "camera-inside.json");
-    EXPECT_NE(pictureValueDefines(inside).at("RL_RESIDUAL_SPHERES"), "0");
+    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "hard" / "camera-inside.json")).at("RL_RESIDUAL_SPHERES"), "0");
     Scene lecture = load(scenesDir() / "lecture.json");
-    lecture.camera.position = {0, 2000, 3000};  // the ground seen from afar: no longer near
+    lecture.spheres[0].radius = 1e5;
+    lecture.spheres[0].center.y = -1e5;
+    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
+    lecture = load(scenesDir() / "lecture.json");
+    lecture.camera.position = {0, 2000, 3000};
     lecture.camera.target = {0, 0, -3};
+    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
+    for (std::size_t i = 1; i < lecture.spheres.size(); ++i) lecture.spheres[i].center.y += 2000;
     EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "0");
+}
+
+// The camera's position in the anchor frame is compiled in as the float32 the
+// scene block holds: the lecture's camera (0, 1.1, 2.2) against the anchor,
+// the centre of its small spheres' box (0.025, 0.375, -2.8) (the ground left out).
+TEST(PictureValues, CameraIsCompiledInRelativeToTheAnchor) {
+    Scene lecture = load(scenesDir() / "lecture.json");
+    glm::dvec3 anchor = sceneAnchor(lecture);
+    EXPECT_NEAR(anchor.x, 0.025, 1e-15);
+    EXPECT_NEAR(anchor.y, 0.375, 1e-15);
+    EXPECT_NEAR(anchor.z, -2.8, 1e-15);
+    glm::vec3 e(lecture.camera.position - anchor);
+    char expected[128];
+    std::snprintf(expected, sizeof expected, "vec3(%.9g, %.9g, %.1f)", double(e.x), double(e.y), double(e.z));
+    ASSERT_EQ(e.z, 5.0f);  // an integer value: written 5.0, a GLSL float
+    EXPECT_EQ(pictureValueDefines(lecture).at("RL_CAMERA_FROM_ANCHOR"), expected);
 }
 
 // The stub tests are compiled out only when no exercise file can return

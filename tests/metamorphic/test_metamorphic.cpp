@@ -49,13 +49,6 @@ constexpr double kGlslMeanBudget = 0.1;         // and the mean difference under
 // one picture are a few pixels), far below a picture gone wrong (acne,
 // leaks, a lost object: 10% and more).
 constexpr double kPerSceneCap = 0.02;
-// The GLSL with the camera 1000x farther: the hits then lie thousands of radii
-// from the camera, where float32 carries t to ulp(|oc|) (about 5e-4 at 5000),
-// an error the shader's bounds must cover and which moves the contact lines of
-// touching spheres by up to a pixel: seed 44 (28 touching spheres, fov 0.037
-// deg) has 3.0% of its 1728 pixels off, every other picture under 2%. Still
-// far below a picture gone wrong (10% and more). docs/numerics.md records it.
-constexpr double kFartherCameraGlslCap = 0.04;
 
 struct Tally {
     double cap = kPerSceneCap;  // per picture
@@ -129,7 +122,6 @@ class GlslVsReference : public Metamorphic {};
 
 TEST_P(GlslVsReference, RandomScenes) {
     Tally tally;
-    if (GetParam() == Transform::FartherCamera) tally.cap = kFartherCameraGlslCap;
     for (int seed = 0; seed < kRandomScenes; ++seed) {
         Scene scene = randomScene(std::uint64_t(seed));
         std::string what;

@@ -273,7 +273,7 @@ TEST(SceneIoHostile, HugeUpIsADirectionNotParallel) {
 }
 
 TEST(SceneIoHostile, MagnitudesStayInFloatRange) {
-    // Far positions are fine: the host hands the shader camera-relative
+    // Far positions are fine: the host hands the shader anchor-relative
     // coordinates in the scene's own unit (core/float_range.h).
     EXPECT_NO_THROW(parseScene(R"({"spheres": [{"center": [0, 2e9, 0]}]})", "x"));
     // A radiance float32 cannot carry is refused, naming the field and the limit.
