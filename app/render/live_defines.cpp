@@ -8,7 +8,8 @@ ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, Vie
                              const ShaderDefines& files) {
     ShaderDefines defines = modelDefines(model);
     if (!traceStarted || !isPictureView(view)) return defines;  // the generic program (live_defines.h says why)
-    for (const ShaderDefines& more : {structuralDefines(scene), pictureOnlyDefines(), implementationDefines(scene, files)})
+    for (const ShaderDefines& more : {structuralDefines(scene), residualSphereDefines(scene), sampleGridDefines(scene),
+                                       pictureOnlyDefines(), implementationDefines(scene, files)})
         for (const auto& [name, value] : more) defines[name] = value;
     return defines;
 }

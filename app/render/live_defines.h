@@ -7,10 +7,12 @@
 // (view/live_program.h), chosen by what `raylab bench --sweeps view` measured
 // on llvmpipe (docs/performance.md, "The live view"):
 //   picture  the picture and the bounce views: modelDefines(), the scene's
-//            structure (structuralDefines()), pictureOnlyDefines() and what
-//            the files allow (implementationDefines()), as `raylab render`
-//            draws it less what depends on values or the camera
-//            (RL_NO_METALS, RL_SAMPLE_GRID, RL_RESIDUAL_SPHERES)
+//            structure (structuralDefines()), which spheres may need
+//            makeHit()'s residual form (residualSphereDefines(): from the
+//            geometry alone), pictureOnlyDefines() and what the files allow
+//            (implementationDefines()), as `raylab render` draws it less what
+//            depends on values or the camera (RL_NO_METALS, RL_SAMPLE_GRID,
+//            RL_CAMERA_FROM_ANCHOR)
 //   views    the teaching term views (D, G, F, n.l, ...): the generic program
 //            (modelDefines() only). With the term views compiled in, the
 //            structure's unrolled loops made it slower, not faster (0.56x

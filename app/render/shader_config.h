@@ -35,12 +35,22 @@ ShaderDefines shaderDefinesFor(const Scene& scene, bool specialise);
 // half-written exercises, does not.
 ShaderDefines pictureOnlyDefines();
 
+// From the spheres' centres and radii alone (which the live view's panel does
+// not edit), in double: RL_RESIDUAL_SPHERES, the spheres for which makeHit()
+// can need its residual form (a huge sphere near the scene's anchor; none for
+// more than 31 spheres). `raylab render` and the live view compile it in.
+ShaderDefines residualSphereDefines(const Scene& scene);
+
+// RL_SAMPLE_GRID: n for the scene's n x n samples per pixel, a constant.
+// `raylab render` compiles it in; so does the live view, whose panel offers
+// four sample counts (1, 4, 9, 16) and keeps a program per count, like the
+// bounce limit.
+ShaderDefines sampleGridDefines(const Scene& scene);
+
 // For a program that renders pictures of this scene from this camera
-// (`raylab render`): choices that depend on where things are, so a live view,
-// whose camera and values move, must not compile them in. Computed in double
-// (app/render/specialisation.cpp): RL_RESIDUAL_SPHERES, the spheres for which
-// makeHit() can need its residual form (a huge sphere near the camera; none
-// for more than 31 spheres), and RL_SAMPLE_GRID, sqrt(spp).
+// (`raylab render`): residualSphereDefines(), sampleGridDefines(), and
+// RL_CAMERA_FROM_ANCHOR, the camera's position, which the live view's camera
+// moves (app/render/specialisation.cpp).
 ShaderDefines pictureValueDefines(const Scene& scene);
 
 // RL_EXERCISES_FINISHED when every exercise file of `impl` is written and none

@@ -140,25 +140,31 @@ bool namesIdentifier(const std::string& code, const std::string& name) {
 
 }  // namespace
 
-ShaderDefines pictureValueDefines(const Scene& scene) {
-    ShaderDefines d;
-    const glm::dvec3 anchor = sceneAnchor(scene);  // makeHit() works in the anchor's frame
+ShaderDefines residualSphereDefines(const Scene& scene) {
     int spheres = int(scene.spheres.size());
-    // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
-    // division (emulated on a CPU's vector units) and the loop's bound fold.
-    d["RL_SAMPLE_GRID"] = std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
-    // The camera's position in the anchor frame, the float32 value the scene
-    // block holds (SceneUniformBlock::upload): the camera rays' origin folds to
-    // the camera frame's 0 in closestHit() (scene.glsl, cameraFromAnchor).
-    glm::vec3 camera((scene.camera.position - anchor) / shaderUnits(scene, scene.camera.position).unit);
-    d["RL_CAMERA_FROM_ANCHOR"] = "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " +
-                                 floatLiteral(camera.z) + ")";
-    if (spheres == 0 || spheres > 31) return d;  // the mask is one int
-
+    if (spheres == 0 || spheres > 31) return {};  // the mask is one int
+    const glm::dvec3 anchor = sceneAnchor(scene);  // makeHit() works in the anchor's frame
     long residual = 0;
     for (int i = 0; i < spheres; ++i)
         if (residualFormCandidate(scene.spheres[i].center - anchor, scene.spheres[i].radius)) residual |= 1L << i;
-    d["RL_RESIDUAL_SPHERES"] = std::to_string(residual);
+    return {{"RL_RESIDUAL_SPHERES", std::to_string(residual)}};
+}
+
+ShaderDefines sampleGridDefines(const Scene& scene) {
+    // Samples per pixel: n x n, a constant, so that sampleOffset()'s integer
+    // division (emulated on a CPU's vector units) and the loop's bound fold.
+    return {{"RL_SAMPLE_GRID", std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))))}};
+}
+
+ShaderDefines pictureValueDefines(const Scene& scene) {
+    ShaderDefines d = residualSphereDefines(scene);
+    d.merge(sampleGridDefines(scene));
+    // The camera's position relative to the anchor, the float32 value the
+    // scene block holds (SceneUniformBlock::upload): what the camera rays
+    // share folds (scene.glsl, cameraFromAnchor).
+    glm::vec3 camera((scene.camera.position - sceneAnchor(scene)) / shaderUnits(scene, scene.camera.position).unit);
+    d["RL_CAMERA_FROM_ANCHOR"] = "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " +
+                                 floatLiteral(camera.z) + ")";
     return d;
 }
 

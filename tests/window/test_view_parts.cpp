@@ -214,6 +214,9 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
     Scene bounces = lecture;
     bounces.render.maxBounces = 4;
     EXPECT_NE(defines(bounces), base);
+    Scene samples = lecture;  // the panel's four sample counts: a program each, like the bounce limit
+    samples.render.spp = 4;
+    EXPECT_NE(defines(samples), base);
     Scene beckmann = lecture;
     beckmann.model.distribution = DistributionModel::Beckmann;
     EXPECT_NE(defines(beckmann), base);
