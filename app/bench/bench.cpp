@@ -120,7 +120,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
             all[name] = value;
         for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES",
-                                 "RL_SAMPLE_GRID"}) {
+                                 "RL_SAMPLE_GRID", kSkyTilesDefine}) {
             if (!all.count(name)) continue;
             Variant* v = add(std::string("without:") + name, "layers", true, scene);
             v->withoutDefines.push_back(name);
@@ -240,7 +240,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                                       const Rendering& reference, const Options& o, const fs::path& implDir,
                                       Clock clock, std::ostream& log) {
     std::vector<Measurement> out;
-    std::vector<ShaderProgram> programs(variants.size());
+    std::vector<PictureProgram> programs(variants.size());
     std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>> renderers;
     for (std::size_t i = 0; i < variants.size(); ++i) {
         const Variant& v = variants[i];
@@ -252,8 +252,8 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
             try {
                 auto start = std::chrono::steady_clock::now();
                 if (v.textbook) {
-                    programs[i] = buildTextbook();
-                    setTextbookUniforms(programs[i], v.scene);
+                    programs[i].program = buildTextbook();
+                    setTextbookUniforms(programs[i].program, v.scene);
                 } else {
                     Implementation impl{implDir, v.overrides};
                     ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
@@ -263,7 +263,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                         for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
                     for (const std::string& name : v.withoutDefines) defines.erase(name);
                     for (const auto& [name, value] : v.withDefines) defines[name] = value;
-                    programs[i] = buildRayTracer(impl, defines);
+                    programs[i] = buildPictureProgram(impl, defines);
                 }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
@@ -279,7 +279,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 m.clock = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
                 m.note.clear();
             } catch (const Error& e) {  // ShaderError included: a variant that does not build
-                programs[i] = ShaderProgram();
+                programs[i] = PictureProgram();
                 m.note = std::string("does not build: ") + firstLine(e.what());
             }
         }

@@ -57,11 +57,11 @@ void runRender(const RenderOptions& o) {
         // this camera (renderProgramDefines); the term views need every view.
         ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
         if (!o.generic && (view == View::Final || view == View::Bounce)) defines = renderProgramDefines(scene, impl);
-        ShaderProgram program = buildRayTracer(impl, defines);
+        PictureProgram picture = buildPictureProgram(impl, defines);  // and its sky tiles' program
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;
         frame.viewBounce = bounce;
-        result = renderOnce(program, scene, frame);
+        result = renderOnce(picture, scene, frame);
     }
     writePng(o.png, result.display);
     if (!o.pfm.empty()) writePfm(o.pfm, result.radiance);

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
+#include "render/shader_config.h"
 
 #include <vector>
 
@@ -21,8 +22,15 @@ GlRenderer::~GlRenderer() {
     gl::DeleteVertexArrays(1, &vertexArray_);
 }
 
+PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines) {
+    PictureProgram picture{buildRayTracer(impl, defines), std::nullopt};
+    if (std::optional<ShaderDefines> sky = skyProgramDefines(defines)) picture.sky = buildRayTracer(impl, *sky);
+    return picture;
+}
+
 void GlRenderer::setScene(const Scene& scene) {
     scene_ = scene;
+    skyTiles_.reset();
     uploaded_ = false;  // uploaded by draw(), relative to the frame's camera
 }
 
@@ -77,6 +85,36 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
     if (error != GL_NO_ERROR) throw Error("OpenGL error while drawing: " + gl::errorName(error));
 }
 
+void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame) {
+    if (!picture.sky) return draw(picture.program, frame);
+    auto sameCamera = [&](const FrameSettings& f) {
+        return f.cameraToWorld == frame.cameraToWorld && f.fovYRadians == frame.fovYRadians && f.width == frame.width &&
+               f.height == frame.height;
+    };
+    if (!skyTiles_ || !sameCamera(skyTiles_->first)) skyTiles_.emplace(frame, skyTiles(scene_, frame));
+    const SkyTiles& tiles = skyTiles_->second;
+    if (tiles.sky.empty()) return draw(picture.program, frame);
+    gl::Enable(GL_SCISSOR_TEST);
+    for (const PixelRect& r : tiles.sky) {
+        gl::Scissor(r.x, r.y, r.width, r.height);
+        draw(*picture.sky, frame);
+    }
+    for (const PixelRect& r : tiles.scene) {
+        gl::Scissor(r.x, r.y, r.width, r.height);
+        draw(picture.program, frame);
+    }
+    gl::Disable(GL_SCISSOR_TEST);
+}
+
+double GlRenderer::drawTimed(const PictureProgram& picture, const FrameSettings& frame) {
+    gl::BeginQuery(GL_TIME_ELAPSED, timer_);
+    draw(picture, frame);
+    gl::EndQuery(GL_TIME_ELAPSED);
+    GLuint64 nanoseconds = 0;
+    gl::GetQueryObjectui64v(timer_, GL_QUERY_RESULT, &nanoseconds);  // waits for the GPU
+    return double(nanoseconds) * 1e-6;
+}
+
 double GlRenderer::drawTimed(const ShaderProgram& program, const FrameSettings& frame) {
     gl::BeginQuery(GL_TIME_ELAPSED, timer_);
     draw(program, frame);
@@ -117,6 +155,13 @@ Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const Fra
     GlRenderer renderer;
     renderer.setScene(scene);
     renderer.draw(program, frame);
+    return renderer.readBack();
+}
+
+Rendering renderOnce(const PictureProgram& picture, const Scene& scene, const FrameSettings& frame) {
+    GlRenderer renderer;
+    renderer.setScene(scene);
+    renderer.draw(picture, frame);
     return renderer.readBack();
 }
 

@@ -7,9 +7,22 @@
 #include "core/scene.h"
 #include "gl/gl_api.h"
 #include "render/scene_uniforms.h"
+#include "render/sky_tiles.h"
 #include "shader/program.h"
+#include "shader/shader_library.h"
+
+#include <optional>
 
 namespace rl {
+
+// What `raylab render` draws a picture with (renderProgramDefines(),
+// render/shader_config.h): the program and, where its defines allow it, the
+// program for the tiles no camera ray can hit a sphere in (sky_tiles.h).
+struct PictureProgram {
+    ShaderProgram program;
+    std::optional<ShaderProgram> sky;
+};
+PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines);
 
 class GlRenderer {
 public:
@@ -22,8 +35,12 @@ public:
     void setScene(const Scene& scene);
     // Renders one frame into the offscreen targets (resized as needed).
     void draw(const ShaderProgram& program, const FrameSettings& frame);
+    // The picture program where some camera ray may hit a sphere, its sky
+    // program everywhere else (one scissored draw per rectangle of tiles).
+    void draw(const PictureProgram& picture, const FrameSettings& frame);
     // Like draw(), measuring the GPU time with a GL_TIME_ELAPSED query (ms).
     double drawTimed(const ShaderProgram& program, const FrameSettings& frame);
+    double drawTimed(const PictureProgram& picture, const FrameSettings& frame);
     // The last frame, rows top to bottom.
     Rendering readBack() const;
     // The framebuffer holding the last frame (attachment 0 = display colour).
@@ -42,9 +59,12 @@ private:
     GLuint targets_[2] = {0, 0};
     GLuint timer_ = 0;
     int width_ = 0, height_ = 0;
+    // The sky tiles of the last frame drawn with a sky program, for that frame's camera.
+    std::optional<std::pair<FrameSettings, SkyTiles>> skyTiles_;
 };
 
 // One call for the common case: a current context, a program, a scene.
 Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame);
+Rendering renderOnce(const PictureProgram& picture, const Scene& scene, const FrameSettings& frame);
 
 }  // namespace rl

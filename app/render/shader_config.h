@@ -4,6 +4,8 @@
 // compiled program; the live view recompiles only when they differ.
 #pragma once
 
+#include <optional>
+
 #include "core/scene.h"
 #include "shader/shader_library.h"
 
@@ -80,5 +82,17 @@ bool traceStarted(const Implementation& impl);
 // implementationDefines(scene, fileDefines(impl)). The bench's "specialised" row and the
 // accuracy tests compile the same.
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl);
+
+// Not a GLSL define: set by renderProgramDefines() when the program's screen
+// tiles that no camera ray can hit a sphere in may be drawn by the program of
+// skyProgramDefines() (render/sky_tiles.h). The bench's layers sweep takes it
+// out like any other.
+inline constexpr const char* kSkyTilesDefine = "RL_SKY_TILES";
+
+// The program for the sky tiles of a picture program: the same defines with no
+// sphere (RL_SPHERE_COUNT 0), so that it draws what the picture program draws
+// where every camera ray misses, by the same code. None unless `picture` has
+// kSkyTilesDefine.
+std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture);
 
 }  // namespace rl

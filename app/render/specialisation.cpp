@@ -229,7 +229,22 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     if (!traceStarted(impl)) return defines;
     for (const ShaderDefines& more : {pictureOnlyDefines(), pictureValueDefines(scene), implementationDefines(scene, fileDefines(impl))})
         for (const auto& [name, value] : more) defines[name] = value;
+    // The sky tiles follow the course's camera rays and roots: only with the
+    // course's own 01 and 02 (a student's camera or intersection draws every
+    // pixel itself, so that its mistakes show everywhere).
+    const Implementation course{solutionsDir(), {}};
+    if (sameExercise(impl, course, "01-camera.glsl") && sameExercise(impl, course, "02-intersect.glsl"))
+        defines[kSkyTilesDefine] = "1";
     return defines;
+}
+
+std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture) {
+    if (!picture.count(kSkyTilesDefine) || !picture.count("RL_PICTURE_ONLY")) return std::nullopt;
+    ShaderDefines sky = picture;
+    sky["RL_SPHERE_COUNT"] = "0";  // every camera ray misses: the rest of the program is the picture's
+    for (const char* name : {"RL_SINGLE_SPHERE", "RL_REFINE_SPHERES", "RL_RESIDUAL_SPHERES", "RL_CANDIDATE_SHADOWS"})
+        sky.erase(name);
+    return sky;
 }
 
 ShaderDefines structuralDefines(const Scene& scene) {

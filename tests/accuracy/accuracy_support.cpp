@@ -42,8 +42,8 @@ std::string programKey(const std::string& kind, const Implementation& impl, cons
     return key;
 }
 
-std::map<std::string, ShaderProgram>& programCache() {
-    static std::map<std::string, ShaderProgram> cache;
+std::map<std::string, PictureProgram>& programCache() {
+    static std::map<std::string, PictureProgram> cache;
     return cache;
 }
 
@@ -59,7 +59,7 @@ Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specia
     auto& cache = programCache();
     std::string key = programKey("raytracer", impl, defines);
     auto it = cache.find(key);
-    if (it == cache.end()) it = cache.emplace(key, buildRayTracer(impl, defines)).first;
+    if (it == cache.end()) it = cache.emplace(key, buildPictureProgram(impl, defines)).first;  // with its sky tiles' program
     return renderOnce(it->second, scene, frameFromScene(scene));
 }
 
@@ -244,7 +244,7 @@ const ShaderProgram& brdfProbeProgram(const ShadingModel& model, const Implement
     auto& cache = programCache();
     std::string key = programKey("brdf_probe", impl, defines);
     auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
+    if (it != cache.end()) return it->second.program;
 
     // raytracer.glsl with the model's defines, then the probe's main().
     AssembledSource fragment = assembleShader("raytracer.glsl", impl, defines);
@@ -256,7 +256,7 @@ const ShaderProgram& brdfProbeProgram(const ShadingModel& model, const Implement
     }
     fragment.files.push_back(probeFile);
     AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
-    return cache.emplace(key, ShaderProgram(vertex, fragment)).first->second;
+    return cache.emplace(key, PictureProgram{ShaderProgram(vertex, fragment), std::nullopt}).first->second.program;
 }
 
 void put(std::array<float, kProbeInputFloats>& in, int at, glm::vec3 value) {
