@@ -120,7 +120,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
             all[name] = value;
         for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES",
-                                 "RL_SAMPLE_GRID", kSkyTilesDefine}) {
+                                 "RL_SAMPLE_GRID", "RL_SELECT_LIGHTS", kSkyTilesDefine}) {
             if (!all.count(name)) continue;
             Variant* v = add(std::string("without:") + name, "layers", true, scene);
             v->withoutDefines.push_back(name);

@@ -67,7 +67,9 @@ ShaderDefines finishedExerciseDefines(const Implementation& impl);
 ShaderDefines fileDefines(const Implementation& impl);
 
 // fileDefines() `files` with what they allow for the structure of `scene`:
-// RL_CANDIDATE_SHADOWS from 12 spheres when every exercise is written.
+// RL_CANDIDATE_SHADOWS from 12 spheres when every exercise is written, and
+// RL_SELECT_LIGHTS (the direct light summed by selects) when every exercise
+// is written and the shadow tests stay unrolled.
 ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& files);
 
 // Whether exercise 09 of `impl` is no longer the shipped stub: then a

@@ -364,6 +364,29 @@ TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
               0u);
 }
 
+// The direct light summed by selects (lighting.glsl) is compiled in only
+// with every exercise written and the shadow tests unrolled: the course's
+// scenes yes, 30 spheres (the candidate loop) no, a stub left no; and the
+// picture it renders is the branchy sum's, pixel for pixel within one step
+// (the same terms added in the same order; a select where a `continue` was).
+TEST(PictureValues, LightsBySelectOnlyWithUnrolledShadowsAndNoStub) {
+    Scene lecture = load(scenesDir() / "lecture.json");
+    Scene random30 = load(sourceRoot() / "tests" / "bench" / "random-30.json");
+    EXPECT_EQ(renderDefines(lecture).count("RL_SELECT_LIGHTS"), 1u);
+    EXPECT_EQ(renderDefines(random30).count("RL_SELECT_LIGHTS"), 0u);
+    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
+                  .count("RL_SELECT_LIGHTS"),
+              0u);
+    for (const Scene& s : {sized(lecture), sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"))}) {
+        ShaderDefines branchy = renderDefines(s);
+        branchy.erase("RL_SELECT_LIGHTS");
+        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s)), renderWith(s, branchy));
+        SCOPED_TRACE(test::describe(d));
+        EXPECT_LE(d.maxLsb, 1);
+        EXPECT_EQ(d.nonFinite, 0);
+    }
+}
+
 // The bench's own scenes through `raylab render`'s program: within the core's
 // budget of the CPU reference, and of the program without the picture's
 // layers (residual set, sample grid, stub tests, segment test, candidates).
