@@ -179,7 +179,7 @@ bool runInPool(std::size_t count, const std::function<std::string(std::size_t)>&
     const auto never = Clock::time_point::max();
     std::size_t next = 0;
     bool forwarded = false;
-    while (next < count || !running.empty()) {
+    while ((next < count && !gInterrupted) || !running.empty()) {
         while (!gInterrupted && int(running.size()) < jobs && next < count) {
             const std::size_t job = next++;
             int fds[2];
