@@ -61,6 +61,9 @@ struct RunHandlers {  // the caller's handlers are back on every way out
 };
 
 constexpr int kOutOfMemoryStatus = 4;  // as in runIsolated
+// From SIGTERM to SIGKILL at a child's deadline: the handler needs
+// microseconds; 2 s covers a machine loaded with llvmpipe's threads.
+constexpr std::chrono::seconds kKillGrace{2};
 constexpr char kErrorMark = '\x01';    // output that is an error message, not a result
 
 [[noreturn]] void childMain(const std::function<std::string(std::size_t)>& work, std::size_t job,
@@ -118,11 +121,12 @@ bool drain(int fd, std::string& output) {
 }
 
 struct Running {
-    std::size_t job;
-    int fd;                    // the pipe's reading end, -1 once it is closed
+    std::size_t job = 0;
+    int fd = -1;               // the pipe's reading end, -1 once it is closed
     Clock::time_point start, deadline;
     std::string output;
-    bool killed = false;       // at the deadline
+    bool told = false;         // SIGTERM at the deadline
+    Clock::time_point killAt;  // then SIGKILL, if it is still there
 };
 
 IsolatedResult resultOf(Running& r, int status, const PoolLimits& limits) {
@@ -137,7 +141,7 @@ IsolatedResult resultOf(Running& r, int status, const PoolLimits& limits) {
     if (gInterrupted) {
         result.outcome = IsolatedResult::Outcome::Interrupted;
         result.reason = "interrupted";
-    } else if (r.killed || now > r.deadline) {
+    } else if (r.told || now > r.deadline) {
         result.outcome = IsolatedResult::Outcome::TimedOut;
         char text[64];
         std::snprintf(text, sizeof text, "timed out after %.0f s", limits.deadlineSeconds);
@@ -201,7 +205,11 @@ bool runInPool(std::size_t count, const std::function<std::string(std::size_t)>&
             close(fds[1]);
             fcntl(fds[0], F_SETFL, O_NONBLOCK);
             const auto now = Clock::now();
-            Running r{job, fds[0], now, never, {}};
+            Running r;
+            r.job = job;
+            r.fd = fds[0];
+            r.start = now;
+            r.deadline = never;
             if (limits.deadlineSeconds > 0)
                 r.deadline = now + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double>(limits.deadlineSeconds));
@@ -226,9 +234,18 @@ bool runInPool(std::size_t count, const std::function<std::string(std::size_t)>&
             int status = 0;
             pid_t ended = waitpid(it->first, &status, WNOHANG);
             if (ended == 0 || (ended < 0 && errno == EINTR)) {
-                if (Clock::now() > it->second.deadline && !it->second.killed) {
-                    kill(it->first, SIGKILL);  // reaped, and reported, on a later round
-                    it->second.killed = true;
+                // At the deadline SIGTERM first: a child that still runs its
+                // handler kills the runIsolated child it waits for, which
+                // would otherwise outlive it (until its RLIMIT_CPU); SIGKILL
+                // after the grace period. Reaped, and reported, on a later round.
+                Running& r = it->second;
+                const auto now = Clock::now();
+                if (now > r.deadline && !r.told) {
+                    kill(it->first, SIGTERM);
+                    r.told = true;
+                    r.killAt = now + kKillGrace;
+                } else if (r.told && now > r.killAt) {
+                    kill(it->first, SIGKILL);
                 }
                 ++it;
                 continue;

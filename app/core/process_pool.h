@@ -23,7 +23,9 @@ namespace rl {
 
 struct PoolLimits {
     int jobs = 1;                 // children running at the same time
-    double deadlineSeconds = 0;   // wall clock per child from its start, then SIGKILL; 0: none
+    // Wall clock per child from its start, then SIGTERM (the child's handler
+    // kills the runIsolated child it waits for) and SIGKILL 2 s later; 0: none.
+    double deadlineSeconds = 0;
     // CPU time per child (RLIMIT_CPU, inherited by its own children, so even
     // a grandchild orphaned by a killed child ends): SIGXCPU at the limit,
     // SIGKILL 10 s later. 0: none.
@@ -38,7 +40,7 @@ struct PoolLimits {
 // done(k, result) in the calling process as each child ends, in the order
 // they end. result.outcome is:
 //   Finished     the work returned; result.output is what it returned
-//   TimedOut     killed at the deadline (or ended otherwise after it)
+//   TimedOut     stopped at the deadline (or ended otherwise after it)
 //   Crashed      reason "killed by signal 9 (Killed)", "exited with status 2"
 //                (see ChildExit), or the message of a std::exception out of work
 //   OutOfMemory  std::bad_alloc out of work (or the address-space limit)

@@ -8,9 +8,11 @@
 // the only place that starts, limits, signals and waits for them). A worker
 // grades one student: it stages the submission, then checks each exercise
 // with checkExercise, which runs it in one more child process with a
-// wall-clock timeout and a memory limit (core/isolated.h). A worker gets an
-// RLIMIT_CPU that its checks inherit, so even a check orphaned by a killed
-// worker ends on its own. Ctrl-C stops the checks in progress at once.
+// wall-clock timeout and a memory limit (core/isolated.h). A worker past its
+// deadline is told (SIGTERM: it kills the check it waits for) and killed 2 s
+// later; it gets an RLIMIT_CPU that its checks inherit, so even a check
+// orphaned by a worker killed otherwise ends on its own. Ctrl-C stops the
+// checks in progress at once.
 // Each worker writes OUT/<id>/grade.json atomically when it is done: an
 // interrupted run keeps every finished student, and the next run skips them.
 #pragma once

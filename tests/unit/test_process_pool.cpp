@@ -3,11 +3,13 @@
 // children that sleep or spin for at most a few seconds.
 #include "core/isolated.h"
 #include "core/process_pool.h"
+#include "support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <cstdlib>
 #include <map>
 #include <new>
@@ -15,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+namespace fs = std::filesystem;
 using namespace rl;
 using Outcome = IsolatedResult::Outcome;
 
@@ -155,6 +158,33 @@ TEST(ProcessPool, CtrlCStopsTheRunningChildrenAndTheirChecksAtOnce) {
     struct sigaction now {};
     sigaction(SIGINT, nullptr, &now);
     EXPECT_EQ(now.sa_handler, SIG_DFL) << "the caller's handler is back";
+}
+
+// A child stopped at its deadline takes the runIsolated child it waits for
+// with it: that one would write a file 3 s after it started, and does not.
+TEST(ProcessPool, AChildStoppedAtItsDeadlineLeavesNoOrphan) {
+    const fs::path marker = rl::test::freshTempDir("pool_orphan") / "the orphan ran on";
+    PoolLimits limits;
+    limits.deadlineSeconds = 0.5;
+    auto work = [&](std::size_t) -> std::string {
+        IsolationLimits checkLimits;
+        checkLimits.timeoutSeconds = 30;
+        runIsolated(
+            [&] {
+                std::this_thread::sleep_for(std::chrono::seconds(3));
+                rl::test::writeText(marker, "it outlived its worker");
+                return std::string();
+            },
+            checkLimits);
+        if (interruptRequested()) throw ChildExit{130};
+        return "the check ended by itself";
+    };
+    auto start = Clock::now();
+    auto results = runAll(1, work, limits);
+    EXPECT_EQ(results[0].outcome, Outcome::TimedOut) << results[0].reason;
+    EXPECT_LT(secondsSince(start), 2.5) << "stopped at the deadline, not after the check";
+    std::this_thread::sleep_for(std::chrono::duration<double>(4.0 - secondsSince(start)));
+    EXPECT_FALSE(fs::exists(marker)) << "the check outlived its worker";
 }
 
 TEST(Isolated, ThePhaseNoteSaysWhatTheChildWasDoingWhenItTimedOut) {
