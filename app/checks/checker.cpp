@@ -25,8 +25,6 @@
 #include <optional>
 #include <sstream>
 
-#include <sys/mman.h>
-
 namespace fs = std::filesystem;
 
 namespace rl {
@@ -307,16 +305,10 @@ namespace {
 
 // ---- one exercise, inside the child --------------------------------------------------------
 
-// What the check's child process is doing, in memory it shares with the
-// parent (set up by checkExercise before forking), so that a wall-clock
-// timeout can say what ran out of time: the compiler, or the shader.
-char* g_phase = nullptr;
-constexpr std::size_t kPhaseBytes = 256;
-
-void setPhase(const std::string& phase) {
-    if (!g_phase) return;
-    std::snprintf(g_phase, kPhaseBytes, "%s", phase.c_str());
-}
+// What the check's child process is doing, kept where its parent can read
+// it after the end (core/isolated.h), so that a wall-clock timeout can say
+// what ran out of time: the compiler, or the shader.
+void setPhase(const std::string& phase) { setIsolatedPhase(phase); }
 
 // TIMEOUT for a loop that went over the guard's bound (shader/loop_guard.h).
 ExerciseReport& loopTimeout(ExerciseReport& report, const ShaderProgram& program, int loop, const std::string& where) {
@@ -505,7 +497,10 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
         report.hint = "start with the handout: " + exercise.handout();
         return report;
     }
-    auto work = [&]() { return toJson(runChecks(exercise, file, options, scenes)).dump(); };
+    auto work = [&]() {
+        setPhase("starting the OpenGL context");
+        return toJson(runChecks(exercise, file, options, scenes)).dump();
+    };
     if (!options.isolate) {
         try {
             report = reportFromJson(json::parse(work()));
@@ -517,14 +512,8 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
     }
     IsolationLimits limits;
     limits.timeoutSeconds = options.timeoutSeconds;
-    // A page shared with the child: what it was doing when it ran out of time.
-    void* shared = mmap(nullptr, kPhaseBytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-    g_phase = shared == MAP_FAILED ? nullptr : static_cast<char*>(shared);
-    setPhase("starting the OpenGL context");
     IsolatedResult result = runIsolated(work, limits);
-    const std::string phase = g_phase ? std::string(g_phase, strnlen(g_phase, kPhaseBytes)) : "";
-    if (g_phase) munmap(g_phase, kPhaseBytes);
-    g_phase = nullptr;
+    const std::string& phase = result.phase;  // what the child was doing when it ended
     const std::string name = file.filename().string();
     if (result.outcome == IsolatedResult::Outcome::Finished) {
         try {

@@ -1,13 +1,16 @@
 #include "core/isolated.h"
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 
 #include <fcntl.h>
 #include <spawn.h>
 #include <poll.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +18,30 @@
 extern char** environ;
 
 namespace rl {
+
+namespace {
+
+// The phase note (setIsolatedPhase): one page shared between runIsolated and
+// its child, mapped before the fork, read after the child ended.
+constexpr std::size_t kPhaseBytes = 256;
+char* gPhase = nullptr;
+
+// The child runIsolated waits for, for stopIsolatedChild (a signal handler).
+volatile std::sig_atomic_t gChild = 0;
+
+}  // namespace
+
+void setIsolatedPhase(const std::string& phase) {
+    if (!gPhase) return;
+    std::snprintf(gPhase, kPhaseBytes, "%s", phase.c_str());
+}
+
+void stopIsolatedChild() {
+    pid_t pid = pid_t(gChild);
+    if (pid <= 0) return;
+    kill(-pid, SIGKILL);  // its process group: every helper it started
+    kill(pid, SIGKILL);   // and itself, should it not have its own group yet
+}
 
 bool runProgram(const std::vector<std::string>& args) {
     if (args.empty()) return false;
@@ -37,6 +64,14 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
         result.reason = std::string("cannot create a pipe: ") + std::strerror(errno);
         return result;
     }
+    void* shared = mmap(nullptr, kPhaseBytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    gPhase = shared == MAP_FAILED ? nullptr : static_cast<char*>(shared);
+    struct Unmap {  // the parent's side of the page, on every way out
+        ~Unmap() {
+            if (gPhase) munmap(gPhase, kPhaseBytes);
+            gPhase = nullptr;
+        }
+    } unmap;
     auto start = std::chrono::steady_clock::now();
     pid_t pid = fork();
     if (pid < 0) {
@@ -72,6 +107,8 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
         close(fds[1]);
         _exit(status);
     }
+    setpgid(pid, pid);  // also here, so that a kill right after the fork finds the group
+    gChild = pid;
     close(fds[1]);
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
     bool timedOut = false;
@@ -99,8 +136,11 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
         kill(pid, SIGKILL);
     }
     close(fds[0]);
+    gChild = 0;
     int status = 0;
-    waitpid(pid, &status, 0);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (gPhase) result.phase.assign(gPhase, strnlen(gPhase, kPhaseBytes));
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (timedOut) {
         result.outcome = IsolatedResult::Outcome::TimedOut;

@@ -2,30 +2,17 @@
 
 #include "core/error.h"
 
-#include <cerrno>
-#include <cstring>
-
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 namespace fs = std::filesystem;
 
 namespace rl {
 
-FolderLock::FolderLock(const fs::path& folder) {
-    fs::path path = folder / ".lock";
-    fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw Error(path.string() + ": cannot create (" + std::strerror(errno) + ")");
-    if (flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-        close(fd_);
+FolderLock::FolderLock(const fs::path& folder) : lock_(folder / ".lock") {
+    if (lock_.error()) throw Error((folder / ".lock").string() + ": cannot create (" + lock_.error().message() + ")");
+    if (!lock_.held())
         throw Error(folder.string() + ": another raylab grade is writing here; wait for it, or use another -o");
-    }
 }
 
-FolderLock::~FolderLock() {
-    if (fd_ >= 0) close(fd_);  // releases the lock
-}
+FolderLock::~FolderLock() = default;  // the lock goes with lock_
 
 bool pathsOverlap(const fs::path& a, const fs::path& b) {
     std::error_code ec;

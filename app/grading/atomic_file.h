@@ -4,6 +4,7 @@
 // grade behind.
 #pragma once
 
+#include "core/file_handle.h"
 #include "core/file_io.h"
 
 #include <filesystem>
@@ -34,7 +35,7 @@ public:
     FolderLock& operator=(const FolderLock&) = delete;
 
 private:
-    int fd_ = -1;
+    FileLock lock_;
 };
 
 // Whether either path is the other or lies inside it (after resolving links).

@@ -2,6 +2,7 @@
 
 #include "checks/exercise_registry.h"
 #include "core/error.h"
+#include "core/process_pool.h"
 #include "grading/atomic_file.h"
 #include "grading/outputs.h"
 #include "grading/summary.h"
@@ -9,19 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
-#include <map>
 #include <thread>
-
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -31,69 +24,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-volatile std::sig_atomic_t gInterrupted = 0;
-extern "C" void onInterrupt(int) { gInterrupted = 1; }
-
-// In the run's own process, SIGINT/SIGTERM only set a flag: no new worker
-// starts, the running ones are told (SIGTERM), end the check they are in at
-// once (onWorkerInterrupt below) and exit without a record.
-struct InterruptHandlers {
-    struct sigaction oldInt {}, oldTerm {};
-    InterruptHandlers() {
-        gInterrupted = 0;
-        struct sigaction sa {};
-        sa.sa_handler = onInterrupt;
-        sigemptyset(&sa.sa_mask);
-        sigaction(SIGINT, &sa, &oldInt);
-        sigaction(SIGTERM, &sa, &oldTerm);
-    }
-    ~InterruptHandlers() {
-        sigaction(SIGINT, &oldInt, nullptr);
-        sigaction(SIGTERM, &oldTerm, nullptr);
-    }
-};
-
+// Thrown in a worker when Ctrl-C or SIGTERM arrived (core/process_pool.h):
+// the student is left without a record and graded again by the next run.
 struct Interrupted {};
 
-// In a worker, an interrupt also ends the check it is in at once, instead of
-// at that check's timeout: the check runs in its own process group
-// (core/isolated.h), which the worker finds through
-// /proc/self/task/<tid>/children. Only async-signal-safe calls here.
-char gChildrenPath[64];
-extern "C" void onWorkerInterrupt(int) {
-    int savedErrno = errno;
-    gInterrupted = 1;
-    int fd = open(gChildrenPath, O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        static char list[4096];
-        ssize_t n = read(fd, list, sizeof list - 1);
-        close(fd);
-        long pid = 0;
-        for (ssize_t k = 0; k <= n; ++k) {
-            if (k < n && list[k] >= '0' && list[k] <= '9') {
-                pid = pid * 10 + (list[k] - '0');
-            } else if (pid > 0) {
-                kill(pid_t(-pid), SIGKILL);
-                kill(pid_t(pid), SIGKILL);
-                pid = 0;
-            }
-        }
-    }
-    errno = savedErrno;
-}
-
-void installWorkerInterrupt() {
-    std::snprintf(gChildrenPath, sizeof gChildrenPath, "/proc/self/task/%d/children", int(getpid()));
-    struct sigaction sa {};
-    sa.sa_handler = onWorkerInterrupt;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-}
-
 unsigned cpuCount() {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n > 0 ? unsigned(n) : 1u;
+    unsigned n = std::thread::hardware_concurrency();  // the online processors, as sysconf says
+    return n > 0 ? n : 1u;
 }
 
 void replaceAll(std::string& text, const std::string& from, const std::string& to) {
@@ -166,33 +103,22 @@ StudentGrade failedRecord(const SubmissionEntry& entry, const Rubric& rubric, co
     return g;
 }
 
-// Runs in the worker: grades, then writes the student's outputs.
-int workerMain(const SubmissionEntry& entry, const GradeSettings& settings, const std::vector<CheckScene>& scenes) {
-    // A check process orphaned by a killed worker still ends: each check gets
-    // at most this much CPU time, well above what its wall-clock timeout
-    // allows llvmpipe's threads, so the timeout always acts first.
-    rlim_t cpu = rlim_t(settings.timeoutSeconds * (cpuCount() + 1) + 60);
-    struct rlimit limit {cpu, cpu + 10};
-    setrlimit(RLIMIT_CPU, &limit);
-    installWorkerInterrupt();
+// Runs in the worker: grades, then writes the student's outputs. Its end
+// tells the run how it went: "" (the record is in OUT), ChildExit 130
+// (interrupted), ChildExit 2 (the grader failed, said on stderr).
+std::string workerMain(const SubmissionEntry& entry, const GradeSettings& settings,
+                       const std::vector<CheckScene>& scenes) {
     try {
         StudentGrade grade = gradeStudent(entry, settings, scenes);
         saveStudentGrade(settings.out, grade);
         writeStudentOutputs(settings.out, settings.rubric, grade);
-        return 0;
+        return "";
     } catch (const Interrupted&) {
-        return 130;
+        throw ChildExit{130};
     } catch (const std::exception& e) {
         std::fprintf(stderr, "raylab: grading %s: %s\n", entry.id.c_str(), e.what());
-        return 2;
+        throw ChildExit{2};
     }
-}
-
-std::string describeExit(int status) {
-    if (WIFSIGNALED(status))
-        return std::string("worker killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
-               strsignal(WTERMSIG(status)) + ")";
-    return "worker exited with status " + std::to_string(WEXITSTATUS(status));
 }
 
 }  // namespace
@@ -239,7 +165,7 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     options.backend = settings.backend;
     options.isolate = true;
     for (const RubricExercise& r : settings.rubric.exercises) {
-        if (gInterrupted) throw Interrupted{};
+        if (interruptRequested()) throw Interrupted{};
         const ExerciseInfo& info = findExercise(r.id);
         ExerciseGrade e;
         auto refused = staged.refused.find(info.file());
@@ -259,7 +185,7 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
                                         "submit " + info.file() + " as a plain UTF-8 text file inside your folder");
         } else {
             e.report = checkExercise(info, options, scenes);
-            if (gInterrupted) throw Interrupted{};  // the check was cut short: not a verdict
+            if (interruptRequested()) throw Interrupted{};  // the check was cut short: not a verdict
             tidyReport(e.report, dir);
         }
         grade.exercises.push_back(e);
@@ -307,52 +233,30 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
     if (todo.empty()) return batch;
 
     useRunShaderCache(settings.out);
-    InterruptHandlers handlers;
-    struct Running {
-        const SubmissionEntry* entry;
-        Clock::time_point deadline;
-    };
-    std::map<pid_t, Running> running;
+    PoolLimits limits;
+    limits.jobs = settings.jobs;
     // A worker that outlives every one of its checks timing out, plus staging, is stuck.
-    const auto budget = std::chrono::duration<double>(
-        double(settings.rubric.exercises.size()) * (settings.timeoutSeconds + 15) + 120);
-    const int jobs = std::max(1, settings.jobs);
-    std::size_t next = 0, done = 0;
-    bool forwarded = false;
+    limits.deadlineSeconds = double(settings.rubric.exercises.size()) * (settings.timeoutSeconds + 15) + 120;
+    // A check process orphaned by a killed worker still ends: each worker
+    // (and each check it starts) gets at most this much CPU time, well above
+    // what a check's wall-clock timeout allows llvmpipe's threads, so the
+    // timeout always acts first.
+    limits.cpuSeconds = double(std::uint64_t(settings.timeoutSeconds * (cpuCount() + 1) + 60));
+    limits.childName = "a grading worker";
+    std::size_t done = 0;
     progress.flush();
-    while (next < todo.size() || !running.empty()) {
-        while (!gInterrupted && int(running.size()) < jobs && next < todo.size()) {
-            const SubmissionEntry* entry = todo[next++];
-            std::fflush(nullptr);
-            pid_t pid = fork();
-            if (pid < 0) throw Error(std::string("cannot start a grading worker: ") + std::strerror(errno));
-            if (pid == 0) _exit(workerMain(*entry, settings, scenes));
-            running[pid] = {entry, Clock::now() + std::chrono::duration_cast<Clock::duration>(budget)};
-        }
-        if (gInterrupted && !forwarded) {
-            for (const auto& [pid, r] : running) kill(pid, SIGTERM);
-            forwarded = true;
-        }
-        int status = 0;
-        pid_t pid = waitpid(-1, &status, WNOHANG);
-        if (pid == 0 || (pid < 0 && errno == EINTR)) {
-            for (const auto& [p, r] : running)
-                if (Clock::now() > r.deadline) kill(p, SIGKILL);  // reaped, and recorded, below
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            continue;
-        }
-        if (pid < 0) break;  // no children left
-        auto it = running.find(pid);
-        if (it == running.end()) continue;
-        const SubmissionEntry& entry = *it->second.entry;
-        bool overdue = Clock::now() > it->second.deadline;
-        running.erase(it);
+    auto work = [&](std::size_t k) { return workerMain(*todo[k], settings, scenes); };
+    auto finished = [&](std::size_t k, const IsolatedResult& result) {
+        const SubmissionEntry& entry = *todo[k];
         ++done;
-        bool clean = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-        if (!clean && gInterrupted) continue;  // stopped on purpose: graded again next time
+        // Stopped on purpose: graded again next time.
+        if (result.outcome == IsolatedResult::Outcome::Interrupted) return;
+        bool clean = result.outcome == IsolatedResult::Outcome::Finished;
         std::optional<StudentGrade> grade = clean ? loadStudentGrade(settings.out, entry.id) : std::nullopt;
         if (!grade) {
-            std::string why = overdue ? "it took longer than the run allows for one student" : describeExit(status);
+            std::string why = result.outcome == IsolatedResult::Outcome::TimedOut
+                                  ? "it took longer than the run allows for one student"
+                                  : "worker " + (clean ? std::string("exited with status 0") : result.reason);
             grade = failedRecord(entry, settings.rubric, why);
             saveStudentGrade(settings.out, *grade);
             writeStudentOutputs(settings.out, settings.rubric, *grade);
@@ -366,8 +270,8 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
                       formatPoints(settings.rubric.maxHundredths()).c_str(), grade->seconds,
                       grade->complete ? "" : "  GRADER FAILED, see its page");
         progress << line << std::flush;
-    }
-    batch.interrupted = gInterrupted != 0;
+    };
+    batch.interrupted = runInPool(todo.size(), work, finished, limits);
     return batch;
 }
 

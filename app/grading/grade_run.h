@@ -1,13 +1,18 @@
 // A grading run: which students of SUBMISSIONS this run grades (a shard of
-// them), each in its own forked worker process, `jobs` at a time, and the
-// class outputs at the end (grading/outputs.h).
+// them), each in its own worker process, `jobs` at a time, and the class
+// outputs at the end (grading/outputs.h).
 //
 // Process layout. The parent computes the check scenes (whose CPU reference
-// uses threads, all joined) before forking, and never creates a GL context.
-// A worker grades one student: it stages the submission, then checks each
-// exercise with checkExercise, which forks once more per exercise with a
-// wall-clock timeout and a memory limit (core/isolated.h). A worker inherits
-// an RLIMIT_CPU, so even a check orphaned by a killed worker ends on its own.
+// uses threads, all joined) before starting workers, and never creates a GL
+// context. The workers are a pool of child processes (core/process_pool.h:
+// the only place that starts, limits, signals and waits for them). A worker
+// grades one student: it stages the submission, then checks each exercise
+// with checkExercise, which runs it in one more child process with a
+// wall-clock timeout and a memory limit (core/isolated.h). A worker past its
+// deadline is told (SIGTERM: it kills the check it waits for) and killed 2 s
+// later; it gets an RLIMIT_CPU that its checks inherit, so even a check
+// orphaned by a worker killed otherwise ends on its own. Ctrl-C stops the
+// checks in progress at once.
 // Each worker writes OUT/<id>/grade.json atomically when it is done: an
 // interrupted run keeps every finished student, and the next run skips them.
 #pragma once

@@ -9,8 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
-
 namespace fs = std::filesystem;
 
 namespace rl {

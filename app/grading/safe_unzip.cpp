@@ -1,6 +1,7 @@
 #include "grading/safe_unzip.h"
 
 #include "core/error.h"
+#include "core/file_handle.h"
 
 #include <zip.h>
 
@@ -9,15 +10,16 @@
 #include <memory>
 #include <vector>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 namespace fs = std::filesystem;
 
 namespace rl {
 
 namespace {
+
+// The file type bits of a Unix st_mode, as Info-ZIP stores them in the top
+// half of an entry's external attributes (the same values on every system).
+constexpr std::uint32_t kModeTypeMask = 0170000, kModeLink = 0120000, kModeRegular = 0100000,
+                        kModeDirectory = 0040000;
 
 struct ZipCloser {
     void operator()(zip_t* z) const { zip_discard(z); }  // read-only: never write the archive back
@@ -92,40 +94,32 @@ void extractEntries(zip_t* archive, const std::vector<Entry>& entries, const fs:
         std::unique_ptr<zip_file_t, ZipFileCloser> in(zip_fopen_index(archive, e.index, 0));
         if (!in) throw fail("entry \"" + target.lexically_relative(dest).string() + "\" cannot be read (" +
                             zip_strerror(archive) + ")");
-        // O_EXCL: a duplicate entry never overwrites; O_NOFOLLOW: never through a link.
-        int fd = open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-        if (fd < 0) {
-            if (errno == EEXIST) {
+        // Created new: a duplicate entry never overwrites, and never through a link.
+        NewFile out(target);
+        if (!out.ok()) {
+            if (out.exists()) {
                 result.refused[target.lexically_relative(dest).generic_string()] = "a duplicate entry in the zip";
                 continue;
             }
             throw fail("entry \"" + target.lexically_relative(dest).string() + "\" cannot be written (" +
-                       std::strerror(errno) + ")");
+                       out.error().message() + ")");
         }
         std::uint64_t entryBytes = 0;
         for (;;) {
             zip_int64_t n = zip_fread(in.get(), buffer.data(), buffer.size());
-            if (n < 0) {
-                close(fd);
+            if (n < 0)
                 throw fail("entry \"" + target.lexically_relative(dest).string() + "\" is corrupt (" +
                            zip_file_strerror(in.get()) + ")");
-            }
             if (n == 0) break;
             entryBytes += zip_uint64_t(n);
             total += zip_uint64_t(n);
-            if (entryBytes > limits.maxEntryBytes || total > limits.maxTotalBytes) {
-                close(fd);
+            if (entryBytes > limits.maxEntryBytes || total > limits.maxTotalBytes)
                 throw fail("inflates past the size limit (" + std::to_string(limits.maxTotalBytes >> 20) +
                            " MiB in all, " + std::to_string(limits.maxEntryBytes >> 20) + " MiB per entry)");
-            }
-            if (write(fd, buffer.data(), std::size_t(n)) != n) {
-                int err = errno;
-                close(fd);
+            if (!out.write(buffer.data(), std::size_t(n)))
                 throw fail("entry \"" + target.lexically_relative(dest).string() + "\" cannot be written (" +
-                           std::strerror(err) + ")");
-            }
+                           out.error().message() + ")");
         }
-        close(fd);
         ++result.files;
     }
 }
@@ -177,16 +171,16 @@ UnzipResult extractZipSafely(const fs::path& zipPath, const fs::path& dest, cons
         zip_uint32_t attributes = 0;
         if (zip_file_get_external_attributes(archive.get(), zip_uint64_t(i), 0, &opsys, &attributes) == 0 &&
             opsys == ZIP_OPSYS_UNIX) {
-            mode_t mode = mode_t(attributes >> 16);
-            if (S_ISLNK(mode)) {
+            const std::uint32_t type = (attributes >> 16) & kModeTypeMask;
+            if (type == kModeLink) {
                 result.refused[key] = "a symbolic link in the zip (links are not followed)";
                 continue;
             }
-            if ((mode & S_IFMT) != 0 && !S_ISREG(mode) && !S_ISDIR(mode)) {
+            if (type != 0 && type != kModeRegular && type != kModeDirectory) {
                 result.refused[key] = "not a regular file";
                 continue;
             }
-            directory = directory || S_ISDIR(mode);
+            directory = directory || type == kModeDirectory;
         }
         if (!directory) {
             if ((st.valid & ZIP_STAT_ENCRYPTION_METHOD) && st.encryption_method != ZIP_EM_NONE)

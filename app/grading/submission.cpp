@@ -2,6 +2,7 @@
 
 #include "checks/exercise_registry.h"
 #include "core/error.h"
+#include "core/file_handle.h"
 #include "grading/atomic_file.h"
 #include "grading/roster.h"
 #include "grading/safe_unzip.h"
@@ -18,10 +19,6 @@
 #include <set>
 #include <sstream>
 #include <tuple>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -77,45 +74,35 @@ std::string kib(std::uintmax_t bytes) { return std::to_string((bytes + 1023) / 1
 
 // Copies a regular file without following links or blocking on special files.
 bool copyRegularFile(const fs::path& from, const fs::path& to, std::string& why) {
-    int in = open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-    if (in < 0) {
-        why = std::strerror(errno);
+    InputFile in(from, InputFile::Links::Refuse);
+    if (!in.ok()) {
+        why = in.error().message();
         return false;
     }
-    struct stat st;
-    if (fstat(in, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(in);
+    if (in.type() != fs::file_type::regular) {
         why = "not a regular file";
         return false;
     }
     std::error_code ec;
     fs::create_directories(to.parent_path(), ec);
-    int outFd = open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (outFd < 0) {
-        why = std::strerror(errno);
-        close(in);
+    NewFile out(to);
+    if (!out.ok()) {
+        why = out.error().message();
         return false;
     }
     char buffer[65536];
-    bool ok = true;
     for (;;) {
-        ssize_t n = read(in, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR) continue;
+        std::ptrdiff_t n = in.read(buffer, sizeof buffer);
         if (n < 0) {
-            why = std::strerror(errno);
-            ok = false;
-            break;
+            why = in.error().message();
+            return false;
         }
-        if (n == 0) break;
-        if (write(outFd, buffer, std::size_t(n)) != n) {
-            why = std::strerror(errno);
-            ok = false;
-            break;
+        if (n == 0) return true;
+        if (!out.write(buffer, std::size_t(n))) {
+            why = out.error().message();
+            return false;
         }
     }
-    close(in);
-    close(outFd);
-    return ok;
 }
 
 // Folders never searched: build output, version control, editors' and
@@ -691,19 +678,15 @@ std::string submissionFingerprint(const SubmissionEntry& entry) {
     auto mixText = [&mix](const std::string& text) { mix(text.data(), text.size() + 1); };  // with its NUL
     std::uintmax_t budget = std::uintmax_t(64) << 20;
     auto mixFile = [&](const fs::path& path) {
-        int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-        if (fd < 0) return;
-        struct stat st;
-        if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
-            mixText(std::to_string(st.st_size));
-            char buffer[65536];
-            ssize_t n;
-            while (budget > 0 && (n = read(fd, buffer, sizeof buffer)) > 0) {
-                mix(buffer, std::size_t(n));
-                budget -= std::min<std::uintmax_t>(budget, std::uintmax_t(n));
-            }
+        InputFile file(path, InputFile::Links::Refuse);
+        if (!file.ok() || file.type() != fs::file_type::regular) return;
+        mixText(std::to_string(file.size()));
+        char buffer[65536];
+        std::ptrdiff_t n;
+        while (budget > 0 && (n = file.read(buffer, sizeof buffer)) > 0) {
+            mix(buffer, std::size_t(n));
+            budget -= std::min<std::uintmax_t>(budget, std::uintmax_t(n));
         }
-        close(fd);
     };
     std::error_code ec;
     if (entry.kind == SubmissionEntry::Kind::Group) {

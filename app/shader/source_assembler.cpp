@@ -1,6 +1,7 @@
 #include "shader/source_assembler.h"
 
 #include "core/error.h"
+#include "core/file_handle.h"
 #include "core/paths.h"
 #include "shader/loop_guard.h"
 
@@ -10,10 +11,6 @@
 #include <cstdio>
 #include <cstring>
 #include <string_view>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -130,27 +127,21 @@ std::string readSourceFile(const fs::path& path) {
     // Opened without blocking (a FIFO would wait for a writer), then checked
     // on the open descriptor: only a regular file is read, and never more
     // than the limit (a device like /dev/zero has no end).
-    int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
-        int err = errno;
-        if (err == ENOENT || err == ENOTDIR) throw Error(shown + ": file not found");
-        throw Error(shown + ": cannot be read: " + std::strerror(err));
+    InputFile file(path);
+    if (!file.ok()) {
+        const std::error_code& err = file.error();
+        if (err == std::errc::no_such_file_or_directory || err == std::errc::not_a_directory)
+            throw Error(shown + ": file not found");
+        throw Error(shown + ": cannot be read: " + err.message());
     }
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat info {};
-    if (::fstat(fd, &info) != 0) throw Error(shown + ": cannot be read: " + std::strerror(errno));
-    if (S_ISDIR(info.st_mode)) throw Error(shown + ": is a directory, expected a GLSL file");
-    if (!S_ISREG(info.st_mode)) throw Error(shown + ": is not a regular file, expected a GLSL file");
+    if (file.type() == fs::file_type::directory) throw Error(shown + ": is a directory, expected a GLSL file");
+    if (file.type() != fs::file_type::regular) throw Error(shown + ": is not a regular file, expected a GLSL file");
     std::string text;
     text.resize(kMaxShaderFileBytes + 1);
     std::size_t got = 0;
     while (got < text.size()) {
-        ssize_t r = ::read(fd, text.data() + got, text.size() - got);
-        if (r < 0 && (errno == EINTR || errno == EAGAIN)) continue;
-        if (r < 0) throw Error(shown + ": cannot be read: " + std::strerror(errno));
+        std::ptrdiff_t r = file.read(text.data() + got, text.size() - got);
+        if (r < 0) throw Error(shown + ": cannot be read: " + file.error().message());
         if (r == 0) break;
         got += std::size_t(r);
     }

@@ -1,7 +1,5 @@
 #include "view/file_watcher.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 
 namespace rl {
@@ -20,11 +18,11 @@ FileWatcher::~FileWatcher() {
 }
 
 void FileWatcher::watch(std::vector<std::filesystem::path> files) {
-    std::vector<Stamp> fresh;
+    std::vector<FileStamp> fresh;
     fresh.reserve(files.size());
-    for (const auto& f : files) fresh.push_back(stampOf(f));  // outside the lock: stat() can be slow
+    for (const auto& f : files) fresh.push_back(fileStamp(f));  // outside the lock: stat() can be slow
     std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<Stamp> stamps;
+    std::vector<FileStamp> stamps;
     stamps.reserve(files.size());
     for (std::size_t i = 0; i < files.size(); ++i) {
         auto known = std::find(files_.begin(), files_.end(), files[i]);
@@ -32,23 +30,6 @@ void FileWatcher::watch(std::vector<std::filesystem::path> files) {
     }
     files_ = std::move(files);
     stamps_ = std::move(stamps);
-}
-
-// POSIX stat(): std::filesystem has no inode, and its last_write_time clock
-// cannot be compared across library versions anyway.
-FileWatcher::Stamp FileWatcher::stampOf(const std::filesystem::path& file) {
-    struct stat info {};
-    Stamp s;
-    if (::stat(file.c_str(), &info) != 0) return s;
-    s.exists = true;
-#ifdef __APPLE__
-    s.mtimeNs = (long long)info.st_mtimespec.tv_sec * 1000000000LL + info.st_mtimespec.tv_nsec;
-#else
-    s.mtimeNs = (long long)info.st_mtim.tv_sec * 1000000000LL + info.st_mtim.tv_nsec;
-#endif
-    s.size = (long long)info.st_size;
-    s.inode = (unsigned long long)info.st_ino;
-    return s;
 }
 
 void FileWatcher::run() {
@@ -59,7 +40,7 @@ void FileWatcher::run() {
         if (stop_) break;
         bool changedNow = false;
         for (std::size_t i = 0; i < files_.size(); ++i) {
-            Stamp now = stampOf(files_[i]);
+            FileStamp now = fileStamp(files_[i]);
             if (now != stamps_[i]) {
                 stamps_[i] = now;
                 changedNow = true;

@@ -5,6 +5,8 @@
 // that is reloaded together (a shader's sources, a scene file).
 #pragma once
 
+#include "core/file_handle.h"
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -39,24 +41,13 @@ public:
     bool takeChange() { return changed_.exchange(false); }
 
 private:
-    struct Stamp {
-        bool exists = false;
-        long long mtimeNs = 0;
-        long long size = 0;
-        unsigned long long inode = 0;
-        bool operator==(const Stamp& o) const {
-            return exists == o.exists && mtimeNs == o.mtimeNs && size == o.size && inode == o.inode;
-        }
-        bool operator!=(const Stamp& o) const { return !(*this == o); }
-    };
-    static Stamp stampOf(const std::filesystem::path& file);
     void run();
 
     std::function<void()> onChange_;
     std::mutex mutex_;  // guards files_, stamps_, stop_
     std::condition_variable wake_;
     std::vector<std::filesystem::path> files_;
-    std::vector<Stamp> stamps_;
+    std::vector<FileStamp> stamps_;
     bool stop_ = false;
     std::atomic<bool> changed_{false};
     std::thread thread_;
