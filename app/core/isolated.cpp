@@ -1,5 +1,7 @@
 #include "core/isolated.h"
 
+#include "core/child_work.h"
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -84,28 +86,7 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
     if (pid == 0) {  // child
         close(fds[0]);
         setpgid(0, 0);  // its own process group, so a timeout kills every thread and helper
-#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer maps terabytes of shadow memory: no address-space limit there
-        struct rlimit limit;
-        limit.rlim_cur = limit.rlim_max = rlim_t(limits.memoryBytes);
-        setrlimit(RLIMIT_AS, &limit);
-#endif
-        std::string out;
-        int status = 0;
-        try {
-            out = work();
-        } catch (const std::bad_alloc&) {
-            status = 4;
-        } catch (const std::exception& e) {
-            out = std::string("\x01") + e.what();  // marks an error message, not a result
-        }
-        std::size_t written = 0;
-        while (written < out.size()) {
-            ssize_t n = write(fds[1], out.data() + written, out.size() - written);
-            if (n <= 0) break;
-            written += std::size_t(n);
-        }
-        close(fds[1]);
-        _exit(status);
+        finishChild(work, limits.memoryBytes, fds[1]);
     }
     setpgid(pid, pid);  // also here, so that a kill right after the fork finds the group
     gChild = pid;
@@ -153,7 +134,7 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
         int sig = WTERMSIG(status);
         result.reason = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
         result.output.clear();
-    } else if (WIFEXITED(status) && WEXITSTATUS(status) == 4) {
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == kChildOutOfMemoryStatus) {
         result.outcome = IsolatedResult::Outcome::OutOfMemory;
         result.reason = "ran out of memory";
         result.output.clear();
@@ -161,7 +142,7 @@ IsolatedResult runIsolated(const std::function<std::string()>& work, const Isola
         result.outcome = IsolatedResult::Outcome::Crashed;
         result.reason = "exited with status " + std::to_string(WEXITSTATUS(status));
         result.output.clear();
-    } else if (!result.output.empty() && result.output[0] == '\x01') {
+    } else if (!result.output.empty() && result.output[0] == kChildErrorMark) {
         result.outcome = IsolatedResult::Outcome::Crashed;
         result.reason = result.output.substr(1);
         result.output.clear();

@@ -3,6 +3,7 @@
 // deadline, RLIMIT_CPU and RLIMIT_AS in the child.
 #include "core/process_pool.h"
 
+#include "core/child_work.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -60,11 +61,9 @@ struct RunHandlers {  // the caller's handlers are back on every way out
     }
 };
 
-constexpr int kOutOfMemoryStatus = 4;  // as in runIsolated
 // From SIGTERM to SIGKILL at a child's deadline: the handler needs
 // microseconds; 2 s covers a machine loaded with llvmpipe's threads.
 constexpr std::chrono::seconds kKillGrace{2};
-constexpr char kErrorMark = '\x01';    // output that is an error message, not a result
 
 [[noreturn]] void childMain(const std::function<std::string(std::size_t)>& work, std::size_t job,
                             const PoolLimits& limits, int fd) {
@@ -74,36 +73,7 @@ constexpr char kErrorMark = '\x01';    // output that is an error message, not a
         struct rlimit limit {cpu, cpu + 10};
         setrlimit(RLIMIT_CPU, &limit);
     }
-#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer maps terabytes of shadow memory: no address-space limit there
-    if (limits.memoryBytes > 0) {
-        struct rlimit limit;
-        limit.rlim_cur = limit.rlim_max = rlim_t(limits.memoryBytes);
-        setrlimit(RLIMIT_AS, &limit);
-    }
-#endif
-    std::string out;
-    int status = 0;
-    try {
-        out = work(job);
-    } catch (const ChildExit& e) {
-        status = e.status;
-    } catch (const std::bad_alloc&) {
-        status = kOutOfMemoryStatus;
-    } catch (const std::exception& e) {
-        out = std::string(1, kErrorMark) + e.what();
-    } catch (...) {
-        out = std::string(1, kErrorMark) + "an unknown exception";
-    }
-    std::size_t written = 0;
-    while (written < out.size()) {
-        ssize_t n = write(fd, out.data() + written, out.size() - written);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        written += std::size_t(n);
-    }
-    close(fd);
-    std::fflush(nullptr);
-    _exit(status);
+    finishChild([&] { return work(job); }, limits.memoryBytes, fd);
 }
 
 // Appends what the pipe holds now; false once it is closed (end of file or an error).
@@ -133,7 +103,7 @@ IsolatedResult resultOf(Running& r, int status, const PoolLimits& limits) {
     IsolatedResult result;
     const auto now = Clock::now();
     result.seconds = std::chrono::duration<double>(now - r.start).count();
-    const bool marked = !r.output.empty() && r.output[0] == kErrorMark;
+    const bool marked = !r.output.empty() && r.output[0] == kChildErrorMark;
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !marked) {
         result.output = std::move(r.output);
         return result;
@@ -153,7 +123,7 @@ IsolatedResult resultOf(Running& r, int status, const PoolLimits& limits) {
         result.outcome = IsolatedResult::Outcome::Crashed;
         int sig = WTERMSIG(status);
         result.reason = "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
-    } else if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryStatus) {
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == kChildOutOfMemoryStatus) {
         result.outcome = IsolatedResult::Outcome::OutOfMemory;
         result.reason = "ran out of memory";
     } else {

@@ -107,17 +107,16 @@ void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame)
 }
 
 double GlRenderer::drawTimed(const PictureProgram& picture, const FrameSettings& frame) {
-    gl::BeginQuery(GL_TIME_ELAPSED, timer_);
-    draw(picture, frame);
-    gl::EndQuery(GL_TIME_ELAPSED);
-    GLuint64 nanoseconds = 0;
-    gl::GetQueryObjectui64v(timer_, GL_QUERY_RESULT, &nanoseconds);  // waits for the GPU
-    return double(nanoseconds) * 1e-6;
+    return timed([&] { draw(picture, frame); });
 }
 
 double GlRenderer::drawTimed(const ShaderProgram& program, const FrameSettings& frame) {
+    return timed([&] { draw(program, frame); });
+}
+
+double GlRenderer::timed(const std::function<void()>& drawing) {
     gl::BeginQuery(GL_TIME_ELAPSED, timer_);
-    draw(program, frame);
+    drawing();
     gl::EndQuery(GL_TIME_ELAPSED);
     GLuint64 nanoseconds = 0;
     gl::GetQueryObjectui64v(timer_, GL_QUERY_RESULT, &nanoseconds);  // waits for the GPU

@@ -11,6 +11,7 @@
 #include "shader/program.h"
 #include "shader/shader_library.h"
 
+#include <functional>
 #include <optional>
 
 namespace rl {
@@ -50,6 +51,7 @@ public:
 
 private:
     void resize(int width, int height);
+    double timed(const std::function<void()>& drawing);  // ms of GL_TIME_ELAPSED around it
     Scene scene_;
     SceneUniformBlock sceneBlock_;
     bool uploaded_ = false;          // sceneBlock_ holds scene_ relative to uploadedEye_
