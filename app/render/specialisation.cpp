@@ -236,9 +236,9 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
         for (const auto& [name, value] : more) defines[name] = value;
     // The sky tiles follow the course's camera rays and roots: only with the
     // course's own 01 and 02 (a student's camera or intersection draws every
-    // pixel itself, so that its mistakes show everywhere).
-    const Implementation course{solutionsDir(), {}};
-    if (sameExercise(impl, course, "01-camera.glsl") && sameExercise(impl, course, "02-intersect.glsl"))
+    // pixel itself, so that its mistakes show everywhere). RL_SEGMENT_TEST
+    // says 02 is the course's (fileDefines()).
+    if (defines.count("RL_SEGMENT_TEST") && sameExercise(impl, Implementation{solutionsDir(), {}}, "01-camera.glsl"))
         defines[kSkyTilesDefine] = "1";
     return defines;
 }

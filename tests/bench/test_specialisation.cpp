@@ -339,6 +339,27 @@ TEST(PictureValues, CameraIsCompiledInRelativeToTheAnchor) {
 
 // The stub tests are compiled out only when no exercise file can return
 // NOT_STARTED: the solutions yes; the shipped stubs, a file that names it in
+
+// The sky tiles (render/sky_tiles.h) follow the course's camera rays and
+// roots: only with the course's own 01 and 02, and their program is the
+// picture program with no sphere.
+TEST(PictureValues, SkyTilesOnlyWithTheCoursesCameraAndIntersection) {
+    Scene lecture = load(scenesDir() / "lecture.json");
+    const ShaderDefines course = renderProgramDefines(lecture, Implementation{solutionsDir(), {}});
+    ASSERT_EQ(course.count(kSkyTilesDefine), 1u);
+    const std::optional<ShaderDefines> sky = skyProgramDefines(course);
+    ASSERT_TRUE(sky.has_value());
+    EXPECT_EQ(sky->at("RL_SPHERE_COUNT"), "0");
+    EXPECT_EQ(sky->at("RL_PICTURE_ONLY"), course.at("RL_PICTURE_ONLY"));
+    for (const char* own : {"01-camera--aspect-on-y.glsl", "02-intersect--sign-of-b.glsl"}) {
+        std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
+        const ShaderDefines student =
+            renderProgramDefines(lecture, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
+        EXPECT_EQ(student.count(kSkyTilesDefine), 0u) << own;
+        EXPECT_FALSE(skyProgramDefines(student).has_value()) << own;
+    }
+}
+
 // code, no; a file that names it in a comment only, yes.
 TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
     EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {}}).count("RL_EXERCISES_FINISHED"), 1u);
