@@ -55,9 +55,6 @@ int maxBounces() {
 #endif
 }
 
-vec3 sphereCenter(int i) { return u_sphereGeometry[i].xyz; }
-float sphereRadius(int i) { return u_sphereGeometry[i].w; }
-
 // The camera's position, where every camera ray starts. A program for one
 // picture gets it as a constant (RL_CAMERA_FROM_ANCHOR,
 // app/render/specialisation.cpp), so that what the camera rays share folds.
