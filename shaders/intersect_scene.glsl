@@ -41,6 +41,29 @@ bool mayHitSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
     return ff - b * b <= rr + margin && b + sphere.w >= -1e-5 * (abs(b) + sphere.w) && b - sphere.w <= tMax + 1e-5 * abs(b);
 }
 
+#ifdef RL_SHADOW_CONES
+// The same question from the light's side (RL_SHADOW_CONES: a program for one
+// picture with the course's 02 and 04; app/render/shadow_cones.h). Seen from
+// light k, sphere i covers a cone of directions around the axis from the
+// light to its centre; a shadow ray towards the light can cross the sphere
+// only if its reversed direction lies in that cone and the ray is longer
+// than the light's distance to the sphere. The host computes both in double,
+// widened far beyond float32's rounding, and compiles them in: one dot
+// product against a constant, where mayHitSphere() takes three.
+const vec4 SHADOW_CONE_AXIS[] = RL_SHADOW_CONE_AXIS;         // xyz: axis, w: the least cosine
+const float SHADOW_CONE_NEAREST[] = RL_SHADOW_CONE_NEAREST;  // the least tMax
+#endif
+int g_shadowLight = 0;  // the light of the shadow ray in flight (directLight sets it)
+
+bool mayShadow(vec3 origin, vec3 dir, float tMax, int i) {
+#ifdef RL_SHADOW_CONES
+    int cone = g_shadowLight * RL_SPHERE_COUNT + i;  // a constant: lights and spheres are unrolled
+    return -dot(dir, SHADOW_CONE_AXIS[cone].xyz) >= SHADOW_CONE_AXIS[cone].w && tMax >= SHADOW_CONE_NEAREST[cone];
+#else
+    return mayHitSphere(origin, dir, tMax, u_sphereGeometry[i]);
+#endif
+}
+
 // The lowest sphere index in the mask, taken out of it. float(bit) is exact
 // (a power of two below 2^31); its exponent field is the index.
 int nextCandidate(inout int candidates) {
@@ -66,6 +89,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     bool residual = true, leavingResidual = true;  // residualFormCandidate() of the nearest, of `leaving`
     for (int i = 0; i < sphereCount(); ++i) {
         vec4 sphereI = u_sphereGeometry[i];
+#ifndef RL_CAMERA_OUTSIDE
         if (i == leaving) {
             leavingGeometry = sphereI;
 #ifdef RL_SPHERE_COUNT
@@ -73,6 +97,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             leavingResidual = residualFormCandidate(i);
 #endif
         }
+#endif
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
         if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (refinesRoot(i) && t > 0.0) t = refineRoot(origin, dir, sphereI, sphereAnchorC(i), t);  // unused for `leaving`
@@ -90,6 +115,14 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
         residual = nearer ? residualI : residual;
 #endif
     }
+#ifndef RL_CAMERA_OUTSIDE
+    // RL_CAMERA_OUTSIDE (a program for one picture): the camera lies outside
+    // every sphere and 02, 04 and 09 are the course's (the host checks both,
+    // specialisation.cpp). Then every hit is seen from outside: a camera ray
+    // meets the outside of the first sphere on its way, and a mirror ray
+    // leaves that outside, pushed off it, so the convex sphere it leaves is
+    // never in its way again. The far root below is then never needed, and
+    // its test and the selects that carry `leaving`'s data are left out.
     if (leaving != NO_SPHERE) {
         float t = leavingSphereHit(origin, dir, leavingGeometry);
         if (t > 0.0 && t < nearest) {
@@ -100,6 +133,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
             residual = leavingResidual;
         }
     }
+#endif
 #ifndef RL_SPHERE_COUNT
     if (sphere != NO_SPHERE) {
         anchorC = sphereAnchorC(sphere);
@@ -154,7 +188,7 @@ bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
 #ifdef RL_CANDIDATE_SHADOWS
     int candidates = 0;
     for (int i = 0; i < sphereCount(); ++i)
-        if (i != leaving && mayHitSphere(origin, dir, tMax, u_sphereGeometry[i])) candidates |= 1 << i;
+        if (i != leaving && mayShadow(origin, dir, tMax, i)) candidates |= 1 << i;
     while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
         int i = nextCandidate(candidates);
         if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;

@@ -39,11 +39,13 @@ float shadowVisibility(Hit hit, vec3 lightPosition) {
     // the shadow ray goes to (only lights with NoL > 0 get here); seen from
     // inside (n faces the centre) it hides every light outside it and none
     // inside. Exact, and anyHitBefore() never asks about it again.
+#ifndef RL_CAMERA_OUTSIDE  // every hit seen from outside (intersect_scene.glsl, closestHit)
     vec3 centre = hit.sphereGeometry.xyz;
     float radius = hit.sphereGeometry.w;
     vec3 toLight = lightPosition - centre;
     bool inside = dot(hit.p - centre, hit.n) < 0.0;
     if (inside && dot(toLight, toLight) > radius * radius) return 0.0;
+#endif
 #ifdef RL_SINGLE_SPHERE
     return 1.0;  // specialised to a scene of one sphere: no shadow ray at all
 #endif
@@ -57,10 +59,29 @@ bool irradianceStarted() {
     return !isStub(pointLightIrradiance(vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)));
 }
 
+// The BRDF at the hit towards the light in direction l (with the sphere's
+// edge tint in a scene of model variants).
+vec3 hitBRDF(Hit hit, vec3 v, vec3 l, Material m) {
+#ifdef RL_MODEL_VARIANTS
+    return surfaceBRDF(hit.n, v, l, m, sphereEdgeTint(hit.sphere));
+#else
+    return surfaceBRDF(hit.n, v, l, m);
+#endif
+}
+
+// What light i adds at the hit: nothing where it faces away, sits at p or is hidden.
+vec3 lightTerm(Hit hit, vec3 v, Material m, int i) {
+    vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
+    if (E == vec3(0.0)) return vec3(0.0);  // facing away, or light at p: no shadow ray needed
+    g_shadowLight = i;
+    if (shadowVisibility(hit, lightPosition(i)) == 0.0) return vec3(0.0);
+    return hitBRDF(hit, v, normalize(lightPosition(i) - hit.p), m) * E;
+}
+
 vec3 directLight(Hit hit, vec3 v, Material m) {
     vec3 radiance = vec3(0.0);
     if (lightCount() > 0 && !irradianceStarted()) return radiance;  // 03 not started: no direct light
-#ifdef RL_SELECT_LIGHTS
+#if defined(RL_SELECT_LIGHTS)
     // Every exercise written, shadow tests unrolled (specialisation.cpp): the
     // same sum, with the lights that add nothing (facing away, at p, hidden)
     // dropped by a select instead of by `continue`. llvmpipe runs every
@@ -70,28 +91,20 @@ vec3 directLight(Hit hit, vec3 v, Material m) {
     for (int i = 0; i < lightCount(); ++i) {
         vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
         float visible = shadowVisibility(hit, lightPosition(i));
-        vec3 l = normalize(lightPosition(i) - hit.p);
-#ifdef RL_MODEL_VARIANTS
-        vec3 f = surfaceBRDF(hit.n, v, l, m, sphereEdgeTint(hit.sphere));
-#else
-        vec3 f = surfaceBRDF(hit.n, v, l, m);
-#endif
+        vec3 f = hitBRDF(hit, v, normalize(lightPosition(i) - hit.p), m);
         bool adds = E != vec3(0.0) && visible != 0.0;
         radiance += adds ? f * E : vec3(0.0);
     }
-    return radiance;
-#endif
-    for (int i = 0; i < lightCount(); ++i) {
-        vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
-        if (E == vec3(0.0)) continue;            // facing away, or light at p: no shadow ray needed
-        if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
-        vec3 l = normalize(lightPosition(i) - hit.p);
-#ifdef RL_MODEL_VARIANTS
-        radiance += surfaceBRDF(hit.n, v, l, m, sphereEdgeTint(hit.sphere)) * E;
+#elif defined(RL_SHADOW_CONES)
+    // Light by light, each index a constant (RL_FOR_EACH_LIGHT(X) expands to
+    // X(0) X(1) ... for the scene's lights): the shadow cones of
+    // intersect_scene.glsl fold into the code. A loop that holds the shadow
+    // rays' candidate loop is not unrolled by the compiler.
+#define RL_ADD_LIGHT(k) radiance += lightTerm(hit, v, m, k);
+    RL_FOR_EACH_LIGHT(RL_ADD_LIGHT)
 #else
-        radiance += surfaceBRDF(hit.n, v, l, m) * E;
+    for (int i = 0; i < lightCount(); ++i) radiance += lightTerm(hit, v, m, i);
 #endif
-    }
     return radiance;
 }
 

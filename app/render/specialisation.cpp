@@ -17,6 +17,7 @@
 #include "core/file_io.h"
 #include "core/float_range.h"
 #include "core/paths.h"
+#include "render/shadow_cones.h"
 
 #include <glm/geometric.hpp>
 
@@ -224,6 +225,45 @@ ShaderDefines implementationDefines(const Scene& scene, const ShaderDefines& fil
     return defines;
 }
 
+namespace {
+
+// RL_SHADOW_CONES: the cones as constant arrays, and the lights expanded
+// one by one (RL_FOR_EACH_LIGHT), so that every index into them is a
+// constant. Indexed by a variable, a constant array is copied into every
+// pixel's memory: 20 times slower on llvmpipe.
+ShaderDefines shadowConeDefines(const Scene& scene) {
+    std::string axes, nearest, lights;
+    for (const ShadowCone& c : shadowCones(scene)) {
+        const char* comma = axes.empty() ? "" : ", ";
+        axes += comma + ("vec4(" + floatLiteral(c.axis.x) + ", " + floatLiteral(c.axis.y) + ", " + floatLiteral(c.axis.z) +
+                         ", " + floatLiteral(c.minCos) + ")");
+        nearest += comma + floatLiteral(c.nearest);
+    }
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) lights += " X(" + std::to_string(k) + ")";
+    return {{"RL_SHADOW_CONES", "1"},
+            {"RL_SHADOW_CONE_AXIS", "vec4[](" + axes + ")"},
+            {"RL_SHADOW_CONE_NEAREST", "float[](" + nearest + ")"},
+            {"RL_FOR_EACH_LIGHT(X)", lights}};
+}
+
+bool courseExercises(const Implementation& impl, std::initializer_list<const char*> files) {
+    return std::all_of(files.begin(), files.end(),
+                       [&](const char* file) { return sameExercise(impl, Implementation{solutionsDir(), {}}, file); });
+}
+
+// Whether the camera lies outside every sphere by more than float32 can blur:
+// the shader holds the camera and the centres relative to the anchor, each
+// rounded by u of its distance from it; 1e-6 of those distances is 16 times that.
+bool cameraOutsideEverySphere(const Scene& scene) {
+    const glm::dvec3 anchor = sceneAnchor(scene), eye = scene.camera.position;
+    return std::all_of(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) {
+        double blur = 1e-6 * (glm::length(eye - anchor) + glm::length(s.center - anchor) + s.radius);
+        return glm::length(eye - s.center) - s.radius > blur;
+    });
+}
+
+}  // namespace
+
 bool traceStarted(const Implementation& impl) {
     const ExerciseInfo& reflections = findExercise("9");
     return !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
@@ -240,6 +280,17 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // says 02 is the course's (fileDefines()).
     if (defines.count("RL_SEGMENT_TEST") && sameExercise(impl, Implementation{solutionsDir(), {}}, "01-camera.glsl"))
         defines[kSkyTilesDefine] = "1";
+    // Every hit seen from outside (intersect_scene.glsl, closestHit): the
+    // camera outside every sphere, and the course's own intersection, ray
+    // offset and bounce, so that no student's ray can start inside a sphere
+    // (a student's mistake there shows as it does in every other program).
+    if (cameraOutsideEverySphere(scene) && courseExercises(impl, {"02-intersect.glsl", "04-shadows.glsl", "09-reflections.glsl"}))
+        defines["RL_CAMERA_OUTSIDE"] = "1";
+    // The candidates of the shadow rays by their cones from each light
+    // (render/shadow_cones.h), with the course's own segment test and shadow
+    // ray, whose ray from the offset point to the light the cones assume.
+    if (defines.count("RL_CANDIDATE_SHADOWS") && defines.count("RL_SEGMENT_TEST") && courseExercises(impl, {"04-shadows.glsl"}))
+        defines.merge(shadowConeDefines(scene));
     return defines;
 }
 
@@ -247,7 +298,8 @@ std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture) {
     if (!picture.count(kSkyTilesDefine) || !picture.count("RL_PICTURE_ONLY")) return std::nullopt;
     ShaderDefines sky = picture;
     sky["RL_SPHERE_COUNT"] = "0";  // every camera ray misses: the rest of the program is the picture's
-    for (const char* name : {"RL_SINGLE_SPHERE", "RL_REFINE_SPHERES", "RL_RESIDUAL_SPHERES", "RL_CANDIDATE_SHADOWS"})
+    for (const char* name : {"RL_SINGLE_SPHERE", "RL_REFINE_SPHERES", "RL_RESIDUAL_SPHERES", "RL_CANDIDATE_SHADOWS",
+                             "RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST", "RL_FOR_EACH_LIGHT(X)"})
         sky.erase(name);
     return sky;
 }
