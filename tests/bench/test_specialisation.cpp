@@ -408,6 +408,55 @@ TEST(PictureValues, LightsBySelectOnlyWithUnrolledShadowsAndNoStub) {
     }
 }
 
+// Two layers that must not change a pixel: every hit seen from outside
+// (RL_CAMERA_OUTSIDE: the leaving sphere's far root is never needed) and the
+// shadow cones (RL_SHADOW_CONES: they only choose which spheres the exact
+// segment test is asked about). Each picture equals the one without the layer.
+TEST(PictureValues, OutsideCameraAndShadowConesChangeNoPixel) {
+    Scene random30 = sized(load(sourceRoot() / "tests" / "bench" / "random-30.json"));
+    Scene lecture = sized(load(scenesDir() / "lecture.json"));
+    Scene row = sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"));
+    ASSERT_EQ(renderDefines(random30).count("RL_SHADOW_CONES"), 1u);
+    for (const Scene& s : {random30, lecture, row}) {
+        const ShaderDefines picture = renderDefines(s);
+        ASSERT_EQ(picture.count("RL_CAMERA_OUTSIDE"), 1u);
+        const Rendering full = renderWith(s, picture);
+        ShaderDefines inside = picture, noCones = picture;
+        inside.erase("RL_CAMERA_OUTSIDE");
+        for (const char* name : {"RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST", "RL_FOR_EACH_LIGHT(X)"})
+            noCones.erase(name);
+        for (const ShaderDefines* other : {&inside, &noCones}) {
+            if (*other == picture) continue;
+            ImageDiff d = compareRenderings(full, renderWith(s, *other));
+            SCOPED_TRACE(std::string(other == &inside ? "without RL_CAMERA_OUTSIDE: " : "without RL_SHADOW_CONES: ") +
+                         test::describe(d));
+            EXPECT_EQ(d.maxLsb, 0);
+            EXPECT_EQ(d.nonFinite, 0);
+        }
+    }
+}
+
+// Where a ray can start inside a sphere, the far root stays: a camera inside
+// or on a sphere, or a student's intersection, offset or bounce (whose
+// mistakes must show as in every other program). The cones need the course's
+// segment test and shadow ray.
+TEST(PictureValues, OutsideCameraAndConesOnlyWhereNoRayStartsInside) {
+    EXPECT_EQ(renderDefines(load(scenesDir() / "hard" / "camera-inside.json")).count("RL_CAMERA_OUTSIDE"), 0u);
+    EXPECT_EQ(renderDefines(load(scenesDir() / "hard" / "inside-1e5.json")).count("RL_CAMERA_OUTSIDE"), 0u);
+    Scene onSurface = load(scenesDir() / "lecture.json");
+    onSurface.camera.position = onSurface.spheres[1].center + glm::dvec3(0.0, 0.0, onSurface.spheres[1].radius);
+    EXPECT_EQ(renderDefines(onSurface).count("RL_CAMERA_OUTSIDE"), 0u);
+    Scene random30 = load(sourceRoot() / "tests" / "bench" / "random-30.json");
+    for (const char* own : {"02-intersect--far-root-first.glsl", "04-shadows--offset-into-surface.glsl",
+                            "09-reflections--full-strength-bounces.glsl"}) {
+        std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
+        const ShaderDefines student = renderProgramDefines(
+            random30, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
+        EXPECT_EQ(student.count("RL_CAMERA_OUTSIDE"), 0u) << own;
+        EXPECT_EQ(student.count("RL_SHADOW_CONES"), file == "09-reflections.glsl" ? 1u : 0u) << own;
+    }
+}
+
 // The bench's own scenes through `raylab render`'s program: within the core's
 // budget of the CPU reference, and of the program without the picture's
 // layers (residual set, sample grid, stub tests, segment test, candidates).
