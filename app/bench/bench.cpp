@@ -119,8 +119,9 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         ShaderDefines all = specialisationDefines(scene);
         for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
             all[name] = value;
-        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES",
-                                 "RL_SAMPLE_GRID", "RL_SELECT_LIGHTS", kSkyTilesDefine}) {
+        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SHADOW_CONES", "RL_CAMERA_OUTSIDE",
+                                 "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID", "RL_SELECT_LIGHTS",
+                                 kSkyTilesDefine}) {
             if (!all.count(name)) continue;
             Variant* v = add(std::string("without:") + name, "layers", true, scene);
             v->withoutDefines.push_back(name);

@@ -286,11 +286,21 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // (a student's mistake there shows as it does in every other program).
     if (cameraOutsideEverySphere(scene) && courseExercises(impl, {"02-intersect.glsl", "04-shadows.glsl", "09-reflections.glsl"}))
         defines["RL_CAMERA_OUTSIDE"] = "1";
-    // The candidates of the shadow rays by their cones from each light
-    // (render/shadow_cones.h), with the course's own segment test and shadow
-    // ray, whose ray from the offset point to the light the cones assume.
-    if (defines.count("RL_CANDIDATE_SHADOWS") && defines.count("RL_SEGMENT_TEST") && courseExercises(impl, {"04-shadows.glsl"}))
+    // The shadow rays' candidates by their cones from each light
+    // (render/shadow_cones.h), from two spheres on (one casts no shadow ray):
+    // with every exercise written and the course's own segment test and
+    // shadow ray, whose ray from the offset point to the light the cones
+    // assume. A cone costs a dot product against a constant, so the candidate
+    // loop pays from two spheres on, where mayHitSphere() pays from 12 (the
+    // live view's). It replaces the light sum by selects (RL_SELECT_LIGHTS),
+    // which needs the shadow tests unrolled.
+    const std::size_t spheres = scene.spheres.size();
+    if (defines.count("RL_EXERCISES_FINISHED") && defines.count("RL_SEGMENT_TEST") && spheres >= 2 && spheres <= 31 &&
+        !scene.lights.empty() && courseExercises(impl, {"04-shadows.glsl"})) {
+        defines["RL_CANDIDATE_SHADOWS"] = "1";
+        defines.erase("RL_SELECT_LIGHTS");
         defines.merge(shadowConeDefines(scene));
+    }
     return defines;
 }
 

@@ -386,22 +386,32 @@ TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
 }
 
 // The direct light summed by selects (lighting.glsl) is compiled in only
-// with every exercise written and the shadow tests unrolled: the course's
-// scenes yes, 30 spheres (the candidate loop) no, a stub left no; and the
-// picture it renders is the branchy sum's, pixel for pixel within one step
-// (the same terms added in the same order; a select where a `continue` was).
+// with every exercise written and the shadow tests unrolled: a student's own
+// shadow ray on the lecture yes; the course's files (the shadow cones' loop),
+// 30 spheres (the candidate loop) and a stub left, no. And the picture it
+// renders is the branchy sum's, pixel for pixel within one step (the same
+// terms added in the same order; a select where a `continue` was).
 TEST(PictureValues, LightsBySelectOnlyWithUnrolledShadowsAndNoStub) {
     Scene lecture = load(scenesDir() / "lecture.json");
     Scene random30 = load(sourceRoot() / "tests" / "bench" / "random-30.json");
-    EXPECT_EQ(renderDefines(lecture).count("RL_SELECT_LIGHTS"), 1u);
-    EXPECT_EQ(renderDefines(random30).count("RL_SELECT_LIGHTS"), 0u);
+    fs::path dir = test::freshTempDir("own_shadows");
+    writeFileAtomic(dir / "04-shadows.glsl",
+                    readRegularFile(solutionsDir() / "04-shadows.glsl", 1 << 20) + "\n// written by a student\n");
+    const Implementation ownShadows{solutionsDir(), {{"04-shadows.glsl", dir / "04-shadows.glsl"}}};
+    EXPECT_EQ(renderProgramDefines(lecture, ownShadows).count("RL_SELECT_LIGHTS"), 1u);
+    EXPECT_EQ(renderProgramDefines(lecture, ownShadows).count("RL_SHADOW_CONES"), 0u);
+    EXPECT_EQ(renderDefines(lecture).count("RL_SELECT_LIGHTS"), 0u);
+    EXPECT_EQ(renderDefines(lecture).count("RL_SHADOW_CONES"), 1u);
+    EXPECT_EQ(renderProgramDefines(random30, ownShadows).count("RL_SELECT_LIGHTS"), 0u);
     EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
                   .count("RL_SELECT_LIGHTS"),
               0u);
     for (const Scene& s : {sized(lecture), sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"))}) {
-        ShaderDefines branchy = renderDefines(s);
+        ShaderDefines select = renderProgramDefines(s, ownShadows);
+        ASSERT_EQ(select.count("RL_SELECT_LIGHTS"), 1u);
+        ShaderDefines branchy = select;
         branchy.erase("RL_SELECT_LIGHTS");
-        ImageDiff d = compareRenderings(renderWith(s, renderDefines(s)), renderWith(s, branchy));
+        ImageDiff d = compareRenderings(renderWith(s, select), renderWith(s, branchy));
         SCOPED_TRACE(test::describe(d));
         EXPECT_LE(d.maxLsb, 1);
         EXPECT_EQ(d.nonFinite, 0);
