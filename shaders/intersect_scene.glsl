@@ -178,6 +178,26 @@ bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
 #endif
 }
 
+// Whether a candidate of the mask (bit b: sphere first + b) blocks the
+// segment. The loop turns as often as the pixel of 8 with the most candidates needs.
+bool anyCandidateBlocks(int candidates, int first, vec3 origin, vec3 dir, float tMax) {
+    while (candidates != 0) {
+        int i = first + nextCandidate(candidates);
+        if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
+    }
+    return false;
+}
+
+// Sphere i into its word of candidates (31 spheres a word: nextCandidate()
+// reads a bit through a float's exponent, and bit 31 would be the sign).
+// With i a constant, the word's choice folds.
+void addCandidate(inout ivec3 words, int i, bool candidate) {
+    int bit = candidate ? 1 << (i - 31 * (i / 31)) : 0;
+    if (i < 31) words.x |= bit;
+    else if (i < 62) words.y |= bit;
+    else words.z |= bit;
+}
+
 // True when some sphere other than `leaving` is hit at 0 < t < tMax. Stops
 // at the first occluder: a shadow ray needs to know only whether, not where
 // (the exercise's root is not refined: it decides only against tMax). The
@@ -185,15 +205,26 @@ bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
 // shadowVisibility): from outside it hides nothing the ray goes to, from
 // inside it hides every light outside it.
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
-#ifdef RL_CANDIDATE_SHADOWS
+#if defined(RL_SHADOW_CONES)
+    // Every sphere's cone written out (RL_FOR_EACH_SPHERE(X) expands to
+    // X(0) X(1) ... for the scene's spheres), so that each index is a
+    // constant however long the scene's list: up to 64 spheres, 31 to a word.
+    ivec3 words = ivec3(0);
+#define RL_SHADOW_CANDIDATE(i) addCandidate(words, i, i != leaving && mayShadow(origin, dir, tMax, i));
+    RL_FOR_EACH_SPHERE(RL_SHADOW_CANDIDATE)
+    if (anyCandidateBlocks(words.x, 0, origin, dir, tMax)) return true;
+#if RL_SPHERE_COUNT > 31
+    if (anyCandidateBlocks(words.y, 31, origin, dir, tMax)) return true;
+#endif
+#if RL_SPHERE_COUNT > 62
+    if (anyCandidateBlocks(words.z, 62, origin, dir, tMax)) return true;
+#endif
+    return false;
+#elif defined(RL_CANDIDATE_SHADOWS)
     int candidates = 0;
     for (int i = 0; i < sphereCount(); ++i)
         if (i != leaving && mayShadow(origin, dir, tMax, i)) candidates |= 1 << i;
-    while (candidates != 0) {  // as many turns as the pixel of 8 with the most candidates needs
-        int i = nextCandidate(candidates);
-        if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
-    }
-    return false;
+    return anyCandidateBlocks(candidates, 0, origin, dir, tMax);
 #else
     for (int i = 0; i < sphereCount(); ++i)
         if (i != leaving && blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;

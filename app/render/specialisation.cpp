@@ -232,7 +232,7 @@ namespace {
 // constant. Indexed by a variable, a constant array is copied into every
 // pixel's memory: 20 times slower on llvmpipe.
 ShaderDefines shadowConeDefines(const Scene& scene) {
-    std::string axes, nearest, lights;
+    std::string axes, nearest, lights, spheres;
     for (const ShadowCone& c : shadowCones(scene)) {
         const char* comma = axes.empty() ? "" : ", ";
         axes += comma + ("vec4(" + floatLiteral(c.axis.x) + ", " + floatLiteral(c.axis.y) + ", " + floatLiteral(c.axis.z) +
@@ -240,10 +240,12 @@ ShaderDefines shadowConeDefines(const Scene& scene) {
         nearest += comma + floatLiteral(c.nearest);
     }
     for (std::size_t k = 0; k < scene.lights.size(); ++k) lights += " X(" + std::to_string(k) + ")";
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) spheres += " X(" + std::to_string(i) + ")";
     return {{"RL_SHADOW_CONES", "1"},
             {"RL_SHADOW_CONE_AXIS", "vec4[](" + axes + ")"},
             {"RL_SHADOW_CONE_NEAREST", "float[](" + nearest + ")"},
-            {"RL_FOR_EACH_LIGHT(X)", lights}};
+            {"RL_FOR_EACH_LIGHT(X)", lights},
+            {"RL_FOR_EACH_SPHERE(X)", spheres}};
 }
 
 bool courseExercises(const Implementation& impl, std::initializer_list<const char*> files) {
@@ -295,7 +297,7 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // live view's). It replaces the light sum by selects (RL_SELECT_LIGHTS),
     // which needs the shadow tests unrolled.
     const std::size_t spheres = scene.spheres.size();
-    if (defines.count("RL_EXERCISES_FINISHED") && defines.count("RL_SEGMENT_TEST") && spheres >= 2 && spheres <= 31 &&
+    if (defines.count("RL_EXERCISES_FINISHED") && defines.count("RL_SEGMENT_TEST") && spheres >= 2 && spheres <= 3 * 31 &&
         !scene.lights.empty() && courseExercises(impl, {"04-shadows.glsl"})) {
         defines["RL_CANDIDATE_SHADOWS"] = "1";
         defines.erase("RL_SELECT_LIGHTS");
@@ -309,7 +311,8 @@ std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture) {
     ShaderDefines sky = picture;
     sky["RL_SPHERE_COUNT"] = "0";  // every camera ray misses: the rest of the program is the picture's
     for (const char* name : {"RL_SINGLE_SPHERE", "RL_REFINE_SPHERES", "RL_RESIDUAL_SPHERES", "RL_CANDIDATE_SHADOWS",
-                             "RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST", "RL_FOR_EACH_LIGHT(X)"})
+                             "RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST", "RL_FOR_EACH_LIGHT(X)",
+                             "RL_FOR_EACH_SPHERE(X)"})
         sky.erase(name);
     return sky;
 }

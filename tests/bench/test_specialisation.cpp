@@ -421,19 +421,29 @@ TEST(PictureValues, LightsBySelectOnlyWithUnrolledShadowsAndNoStub) {
 // Two layers that must not change a pixel: every hit seen from outside
 // (RL_CAMERA_OUTSIDE: the leaving sphere's far root is never needed) and the
 // shadow cones (RL_SHADOW_CONES: they only choose which spheres the exact
-// segment test is asked about). Each picture equals the one without the layer.
+// segment test is asked about). Each picture equals the one without the layer
+// (without the cones: every sphere asked, the plain loop of anyHitBefore).
 TEST(PictureValues, OutsideCameraAndShadowConesChangeNoPixel) {
     Scene random30 = sized(load(sourceRoot() / "tests" / "bench" / "random-30.json"));
     Scene lecture = sized(load(scenesDir() / "lecture.json"));
     Scene row = sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"));
+    // 64 spheres, the most a scene has: the candidates fill all three words.
+    Scene crowd = random30;
+    for (std::size_t i = 1; crowd.spheres.size() < std::size_t(kMaxSpheres); ++i) {
+        Sphere copy = random30.spheres[1 + i % (random30.spheres.size() - 1)];
+        copy.center += glm::dvec3(0.37 * double(i % 7) - 1.1, 0.0, -2.0 - 0.21 * double(i));
+        crowd.spheres.push_back(copy);
+    }
     ASSERT_EQ(renderDefines(random30).count("RL_SHADOW_CONES"), 1u);
-    for (const Scene& s : {random30, lecture, row}) {
+    ASSERT_EQ(renderDefines(crowd).count("RL_SHADOW_CONES"), 1u);
+    for (const Scene& s : {random30, lecture, row, crowd}) {
         const ShaderDefines picture = renderDefines(s);
         ASSERT_EQ(picture.count("RL_CAMERA_OUTSIDE"), 1u);
         const Rendering full = renderWith(s, picture);
         ShaderDefines inside = picture, noCones = picture;
         inside.erase("RL_CAMERA_OUTSIDE");
-        for (const char* name : {"RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST", "RL_FOR_EACH_LIGHT(X)"})
+        for (const char* name : {"RL_CANDIDATE_SHADOWS", "RL_SHADOW_CONES", "RL_SHADOW_CONE_AXIS", "RL_SHADOW_CONE_NEAREST",
+                                 "RL_FOR_EACH_LIGHT(X)", "RL_FOR_EACH_SPHERE(X)"})
             noCones.erase(name);
         for (const ShaderDefines* other : {&inside, &noCones}) {
             if (*other == picture) continue;
