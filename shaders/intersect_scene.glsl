@@ -205,7 +205,7 @@ void addCandidate(inout ivec3 words, int i, bool candidate) {
 // shadowVisibility): from outside it hides nothing the ray goes to, from
 // inside it hides every light outside it.
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
-#if defined(RL_SHADOW_CONES)
+#if defined(RL_CANDIDATE_SHADOWS) && defined(RL_SHADOW_CONES)
     // Every sphere's cone written out (RL_FOR_EACH_SPHERE(X) expands to
     // X(0) X(1) ... for the scene's spheres), so that each index is a
     // constant however long the scene's list: up to 64 spheres, 31 to a word.

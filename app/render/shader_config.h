@@ -81,8 +81,11 @@ bool traceStarted(const Implementation& impl);
 // with `impl`: shaderDefinesFor(scene, true), and, unless exercise 09 is still
 // the shipped stub (then the per-ray fallback to the first hit is kept),
 // pictureOnlyDefines(), pictureValueDefines(scene) and
-// implementationDefines(scene, fileDefines(impl)). The bench's "specialised" row and the
-// accuracy tests compile the same.
+// implementationDefines(scene, fileDefines(impl)), and what this camera and
+// the course's own files allow: RL_CAMERA_OUTSIDE (every hit seen from
+// outside) and the shadow cones (RL_SHADOW_CONES, render/shadow_cones.h) with
+// their candidate loop from two spheres on. The bench's "specialised" row and
+// the accuracy tests compile the same.
 ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& impl);
 
 // Not a GLSL define: set by renderProgramDefines() when the program's screen
