@@ -1,6 +1,7 @@
 #include "bench/view_bench.h"
 
 #include "bench/frame_clock.h"
+#include "bench/textbook.h"
 
 #include "checks/exercise_registry.h"
 #include "core/error.h"
@@ -72,6 +73,18 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.compileMs = msSince(start);
             entries.push_back(std::move(e));
         }
+    // The yardstick of every speed claim (bench/textbook.h): the picture only.
+    Entry textbook;
+    textbook.row.program = "textbook";
+    textbook.row.view = viewName(View::Final);
+    textbook.row.width = scene.render.width;
+    textbook.row.height = scene.render.height;
+    textbook.row.clock = clockName;
+    const auto textbookStart = std::chrono::steady_clock::now();
+    textbook.program = buildTextbook();
+    setTextbookUniforms(textbook.program, scene);
+    textbook.row.compileMs = msSince(textbookStart);
+    entries.push_back(std::move(textbook));
 
     GlRenderer renderer;
     renderer.setScene(scene);
@@ -102,7 +115,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     std::vector<ViewBenchRow> rows;
     for (std::size_t i = 0; i < entries.size(); ++i) {
         Entry& e = entries[i];
-        const Entry& generic = entries[i - i % 2];  // the generic program of the same view
+        const Entry& generic = entries[e.row.program == "textbook" ? 0 : i - i % 2];  // the generic program of the same view
         e.row.diff = compareRenderings(e.picture, generic.picture);
         e.row.frames = int(times[i].size());
         e.row.msMedian = median(times[i]);
@@ -131,11 +144,20 @@ std::string formatViewBench(const std::vector<ViewBenchRow>& rows) {
                       r.diff.maxLsb);
         s << line;
     }
-    for (std::size_t i = 0; i + 1 < rows.size(); i += 2)
+    for (std::size_t i = 0; i + 1 < rows.size() && rows[i + 1].program == "live"; i += 2)
         if (rows[i + 1].msMedian > 0) {
             std::snprintf(line, sizeof line, "view %s: live %.2fx faster than generic (%.1f ms against %.1f ms)\n",
                           rows[i].view.c_str(), rows[i].msMedian / rows[i + 1].msMedian, rows[i + 1].msMedian,
                           rows[i].msMedian);
+            s << line;
+        }
+    const auto live = std::find_if(rows.begin(), rows.end(),
+                                   [](const ViewBenchRow& r) { return r.program == "live" && r.view == "final"; });
+    for (const ViewBenchRow& r : rows)
+        if (r.program == "textbook" && live != rows.end() && live->msMedian > 0) {
+            std::snprintf(line, sizeof line,
+                          "view final: live %.2fx faster than the textbook shader, the yardstick (%.1f ms against %.1f ms)\n",
+                          r.msMedian / live->msMedian, live->msMedian, r.msMedian);
             s << line;
         }
     return s.str();

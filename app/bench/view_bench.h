@@ -17,7 +17,7 @@
 namespace rl::bench {
 
 struct ViewBenchRow {
-    std::string program;  // "generic" (before) or "live"
+    std::string program;  // "generic" (before), "live" or "textbook" (the yardstick, final view only)
     std::string view;     // "final", "d", ... (viewName())
     int width = 0, height = 0;
     double compileMs = 0;    // assemble + compile + link, wall clock

@@ -345,6 +345,31 @@ TEST(BenchCli, TheTextbookYardstickRendersTheModel) {
     }
 }
 
+// The live view's sweep reports its programs against the generic one and
+// against the yardstick, whose picture (64x36: small) matches the live one's
+// within a display step on nearly every pixel.
+TEST(BenchCli, TheViewSweepReportsTheLiveProgramAgainstTheYardstick) {
+    auto r = test::runRaylab("bench --sweeps view --size 64x36 --warmup 1 --frames 1");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("view final: live "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("faster than the textbook shader, the yardstick"), std::string::npos) << r.output;
+    std::istringstream lines(r.output);
+    bool sawTextbook = false;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("textbook ", 0) != 0) continue;
+        sawTextbook = true;
+        std::istringstream fields(line);
+        std::string program, view, size;
+        double ms, min, max, compile, firstDraw;
+        int maxLsb = -1;
+        fields >> program >> view >> size >> ms >> min >> max >> compile >> firstDraw >> maxLsb;
+        EXPECT_EQ(view, "final");
+        EXPECT_EQ(size, "64x36");
+        EXPECT_GE(maxLsb, 0) << line;
+    }
+    EXPECT_TRUE(sawTextbook) << r.output;
+}
+
 // A variant that does not build (here: every one, the implementation has a
 // syntax error) is a skipped row with the compiler's first line, never a crash.
 TEST(BenchCli, VariantsThatDoNotBuildAreSkippedWithTheReason) {
