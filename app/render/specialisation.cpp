@@ -280,8 +280,7 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // course's own 01 and 02 (a student's camera or intersection draws every
     // pixel itself, so that its mistakes show everywhere). RL_SEGMENT_TEST
     // says 02 is the course's (fileDefines()).
-    if (defines.count("RL_SEGMENT_TEST") && sameExercise(impl, Implementation{solutionsDir(), {}}, "01-camera.glsl"))
-        defines[kSkyTilesDefine] = "1";
+    if (defines.count("RL_SEGMENT_TEST") && courseExercises(impl, {"01-camera.glsl"})) defines[kSkyTilesDefine] = "1";
     // Every hit seen from outside (intersect_scene.glsl, closestHit): the
     // camera outside every sphere, and the course's own intersection, ray
     // offset and bounce, so that no student's ray can start inside a sphere
