@@ -49,6 +49,7 @@ struct Measurement {
     double msMedian = 0, msMin = 0, msMax = 0;  // time per frame, by `clock`
     std::string clock;       // "gpu" (GL_TIME_ELAPSED), "wall" or "cpu" (see Clock)
     double compileMs = 0;    // building the program (compile + link), wall clock
+    double firstDrawMs = 0;  // its first draw + glFinish, wall clock: llvmpipe generates the machine code there
     ImageDiff error;         // against the converged CPU reference (upscaled first for resolution variants)
     bool onFront = false;    // on the Pareto front of (msMedian, error.meanLsb) within its scene
     bool skipped = false;

@@ -83,7 +83,8 @@ Measurement measurement(const std::string& scene, const std::string& variant, do
 }
 
 const char* const kRequiredColumns[] = {"scene",        "variant",     "width",    "height", "ms_median",
-                                        "err_mean_lsb", "err_p99_lsb", "off_frac", "relmse", "psnr"};
+                                        "compile_ms",   "first_draw_ms", "err_mean_lsb", "err_p99_lsb", "off_frac",
+                                        "relmse",       "psnr"};
 
 }  // namespace
 
@@ -252,6 +253,8 @@ TEST(BenchCli, TinyRunWritesTheCsvAndThePlot) {
         ++measured;
         onFront += row["pareto"] == "1";
         EXPECT_GE(std::stod(row["ms_median"]), 0.0) << row["variant"];  // measured, whatever it is
+        EXPECT_GT(std::stod(row["compile_ms"]), 0.0) << row["variant"];
+        EXPECT_GT(std::stod(row["first_draw_ms"]), 0.0) << row["variant"];
         EXPECT_GE(std::stod(row["err_mean_lsb"]), 0.0) << row["variant"];
         EXPECT_TRUE(std::isfinite(std::stod(row["err_p99_lsb"]))) << row["variant"];
         EXPECT_EQ(row["non_finite"], "0") << row["variant"];
