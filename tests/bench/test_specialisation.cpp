@@ -427,13 +427,15 @@ TEST(PictureValues, OutsideCameraAndShadowConesChangeNoPixel) {
     Scene random30 = sized(load(sourceRoot() / "tests" / "bench" / "random-30.json"));
     Scene lecture = sized(load(scenesDir() / "lecture.json"));
     Scene row = sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"));
-    // 64 spheres, the most a scene has: the candidates fill all three words.
+    // 64 spheres, the most a scene has: the candidates fill all three words
+    // (4 lights: 256 cones, the budget).
     Scene crowd = random30;
     for (std::size_t i = 1; crowd.spheres.size() < std::size_t(kMaxSpheres); ++i) {
         Sphere copy = random30.spheres[1 + i % (random30.spheres.size() - 1)];
         copy.center += glm::dvec3(0.37 * double(i % 7) - 1.1, 0.0, -2.0 - 0.21 * double(i));
         crowd.spheres.push_back(copy);
     }
+    crowd.lights.resize(4);
     ASSERT_EQ(renderDefines(random30).count("RL_SHADOW_CONES"), 1u);
     ASSERT_EQ(renderDefines(crowd).count("RL_SHADOW_CONES"), 1u);
     for (const Scene& s : {random30, lecture, row, crowd}) {
@@ -475,6 +477,27 @@ TEST(PictureValues, OutsideCameraAndConesOnlyWhereNoRayStartsInside) {
         EXPECT_EQ(student.count("RL_CAMERA_OUTSIDE"), 0u) << own;
         EXPECT_EQ(student.count("RL_SHADOW_CONES"), file == "09-reflections.glsl" ? 1u : 0u) << own;
     }
+}
+
+// The cones are written out per light and sphere, and compiling them grows
+// faster than their count: at most 256 (kShadowConeBudget) in one program.
+// 30 spheres and 6 lights (180) get them, 64 spheres and 16 lights (1024)
+// do not, and their program keeps the plain shadow loop.
+TEST(PictureValues, ShadowConesOnlyWithinTheirCompileBudget) {
+    Scene random30 = load(sourceRoot() / "tests" / "bench" / "random-30.json");
+    EXPECT_EQ(renderDefines(random30).count("RL_SHADOW_CONES"), 1u);
+    Scene crowd = random30;
+    while (crowd.spheres.size() < std::size_t(kMaxSpheres)) {
+        Sphere copy = random30.spheres[1 + crowd.spheres.size() % (random30.spheres.size() - 1)];
+        copy.center.z -= 3.0 + 0.1 * double(crowd.spheres.size());
+        crowd.spheres.push_back(copy);
+    }
+    crowd.lights.resize(4, random30.lights[0]);
+    EXPECT_EQ(renderDefines(crowd).count("RL_SHADOW_CONES"), 1u);  // 256
+    crowd.lights.resize(std::size_t(kMaxLights), random30.lights[0]);
+    const ShaderDefines most = renderDefines(crowd);
+    EXPECT_EQ(most.count("RL_SHADOW_CONES"), 0u);  // 1024
+    EXPECT_EQ(most.count("RL_CANDIDATE_SHADOWS"), 0u);  // more than 31 spheres: the plain loop
 }
 
 // The bench's own scenes through `raylab render`'s program: within the core's
