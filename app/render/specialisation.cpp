@@ -195,6 +195,11 @@ bool sameExercise(const Implementation& a, const Implementation& b, const std::s
     }
 }
 
+// Whether `impl`'s exercise file is the course's solution (its text, white space aside).
+bool courseExercise(const Implementation& impl, const std::string& file) {
+    return sameExercise(impl, Implementation{solutionsDir(), {}}, file);
+}
+
 // The most shadow cones (lights x spheres) a program for one picture writes
 // out (renderProgramDefines() says why).
 constexpr std::size_t kShadowConeBudget = 256;
@@ -208,7 +213,7 @@ ShaderDefines fileDefines(const Implementation& impl) {
     // Shadow rays need whether, not where: with the course's own 02 (the host
     // compares the file), a closed-form segment test without the root
     // (intersect_scene.glsl); a student's intersectSphere() stays in every ray.
-    if (sameExercise(impl, Implementation{solutionsDir(), {}}, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
+    if (courseExercise(impl, "02-intersect.glsl")) defines["RL_SEGMENT_TEST"] = "1";
     return defines;
 }
 
@@ -252,11 +257,6 @@ ShaderDefines shadowConeDefines(const Scene& scene) {
             {"RL_FOR_EACH_SPHERE(X)", spheres}};
 }
 
-bool courseExercises(const Implementation& impl, std::initializer_list<const char*> files) {
-    return std::all_of(files.begin(), files.end(),
-                       [&](const char* file) { return sameExercise(impl, Implementation{solutionsDir(), {}}, file); });
-}
-
 // Whether the camera lies outside every sphere by more than float32 can blur:
 // the shader holds the camera and the centres relative to the anchor, each
 // rounded by u of its distance from it; 1e-6 of those distances is 16 times that.
@@ -283,13 +283,16 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // The sky tiles follow the course's camera rays and roots: only with the
     // course's own 01 and 02 (a student's camera or intersection draws every
     // pixel itself, so that its mistakes show everywhere). RL_SEGMENT_TEST
-    // says 02 is the course's (fileDefines()).
-    if (defines.count("RL_SEGMENT_TEST") && courseExercises(impl, {"01-camera.glsl"})) defines[kSkyTilesDefine] = "1";
+    // says 02 is the course's (fileDefines()); 04 is read once for the two
+    // layers after this one.
+    const bool course02 = defines.count("RL_SEGMENT_TEST") != 0;
+    const bool course04 = courseExercise(impl, "04-shadows.glsl");
+    if (course02 && courseExercise(impl, "01-camera.glsl")) defines[kSkyTilesDefine] = "1";
     // Every hit seen from outside (intersect_scene.glsl, closestHit): the
     // camera outside every sphere, and the course's own intersection, ray
     // offset and bounce, so that no student's ray can start inside a sphere
     // (a student's mistake there shows as it does in every other program).
-    if (cameraOutsideEverySphere(scene) && courseExercises(impl, {"02-intersect.glsl", "04-shadows.glsl", "09-reflections.glsl"}))
+    if (cameraOutsideEverySphere(scene) && course02 && course04 && courseExercise(impl, "09-reflections.glsl"))
         defines["RL_CAMERA_OUTSIDE"] = "1";
     // The shadow rays' candidates by their cones from each light
     // (render/shadow_cones.h), from two spheres on (one casts no shadow ray):
@@ -305,9 +308,8 @@ ShaderDefines renderProgramDefines(const Scene& scene, const Implementation& imp
     // 0.62 s for 180 (6 x 30), 0.84 s for 256 (4 x 64) and 8.9 s for 1024
     // (16 x 64), which no frame saving repays. So at most kShadowConeBudget.
     const std::size_t spheres = scene.spheres.size();
-    if (defines.count("RL_EXERCISES_FINISHED") && defines.count("RL_SEGMENT_TEST") && spheres >= 2 && spheres <= 3 * 31 &&
-        !scene.lights.empty() && spheres * scene.lights.size() <= kShadowConeBudget &&
-        courseExercises(impl, {"04-shadows.glsl"})) {
+    if (defines.count("RL_EXERCISES_FINISHED") && course02 && course04 && spheres >= 2 && spheres <= 3 * 31 &&
+        !scene.lights.empty() && spheres * scene.lights.size() <= kShadowConeBudget) {
         defines["RL_CANDIDATE_SHADOWS"] = "1";
         defines.erase("RL_SELECT_LIGHTS");
         defines.merge(shadowConeDefines(scene));
