@@ -50,6 +50,14 @@ bool refinesRoots(const Scene& scene, std::size_t i);
 // camera never moves it.
 glm::dvec3 sceneAnchor(const Scene& scene);
 
+// A position as the shader holds it: relative to `anchor`, in `unit`s, in
+// double until it is rounded to float32 last. The scene block, the camera
+// compiled into a picture program and the shadow cones (which must cover
+// exactly these floats) all take it from here.
+inline glm::vec3 shaderPosition(const glm::dvec3& position, const glm::dvec3& anchor, double unit) {
+    return glm::vec3((position - anchor) / unit);
+}
+
 // "" when every value of the scene reaches the shader finite and meaningful;
 // otherwise "FIELD: VALUE ..., LIMIT" for the first that does not (field
 // names as in the scene file: render.exposure, lights[2].intensity, ...).

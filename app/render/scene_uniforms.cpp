@@ -64,7 +64,7 @@ void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const 
         // cancellation near a huge sphere (error_bounds.glsl, refineRoot).
         double distance = glm::length(centre);
         double anchorC = (distance - radius) * (distance + radius);
-        data.sphereGeometry[i] = glm::vec4(glm::vec3(centre), float(radius));
+        data.sphereGeometry[i] = glm::vec4(shaderPosition(s.center, anchor, unit), float(radius));
         data.sphereSurface[i] = glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness));
         data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), float(anchorC),
                                         refinesRoots(scene, i) ? 1.0f : 0.0f);
@@ -73,10 +73,10 @@ void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const 
     for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
         const Light& l = scene.lights[i];
         glm::dvec3 intensity = units.lightsTooClose ? glm::dvec3(0.0) : l.color * l.intensity / area;
-        data.lightPosition[i] = glm::vec4(glm::vec3((l.position - anchor) / unit), 1.0f);
+        data.lightPosition[i] = glm::vec4(shaderPosition(l.position, anchor, unit), 1.0f);
         data.lightIntensity[i] = glm::vec4(glm::vec3(intensity), 0.0f);
     }
-    data.cameraFromAnchor = glm::vec4(glm::vec3((eye - anchor) / unit), 0.0f);
+    data.cameraFromAnchor = glm::vec4(shaderPosition(eye, anchor, unit), 0.0f);
     gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
     gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
 }

@@ -17,12 +17,12 @@ std::vector<ShadowCone> shadowCones(const Scene& scene) {
     std::vector<glm::dvec3> centres;
     std::vector<double> radii;
     for (const Sphere& s : scene.spheres) {
-        centres.push_back(glm::dvec3(glm::vec3((s.center - anchor) / unit)));
+        centres.push_back(glm::dvec3(shaderPosition(s.center, anchor, unit)));
         radii.push_back(double(float(s.radius / unit)));
     }
     std::vector<ShadowCone> cones;
     for (const Light& l : scene.lights) {
-        const glm::dvec3 light(glm::vec3((l.position - anchor) / unit));
+        const glm::dvec3 light(shaderPosition(l.position, anchor, unit));
         // The farthest any shadow ray's origin can lie from the light: the
         // exact test rounds by a few u of |centre - origin| <= d + farthest.
         double farthest = 0.0;

@@ -163,7 +163,8 @@ ShaderDefines pictureValueDefines(const Scene& scene) {
     // The camera's position relative to the anchor, the float32 value the
     // scene block holds (SceneUniformBlock::upload): what the camera rays
     // share folds (scene.glsl, cameraFromAnchor).
-    glm::vec3 camera((scene.camera.position - sceneAnchor(scene)) / shaderUnits(scene, scene.camera.position).unit);
+    const glm::vec3 camera = shaderPosition(scene.camera.position, sceneAnchor(scene),
+                                            shaderUnits(scene, scene.camera.position).unit);
     d["RL_CAMERA_FROM_ANCHOR"] = "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " +
                                  floatLiteral(camera.z) + ")";
     return d;
