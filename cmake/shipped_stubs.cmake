@@ -42,7 +42,7 @@ foreach(name IN LISTS stubs)
 endforeach()
 
 set(source "// Generated at build time by cmake/shipped_stubs.cmake from exercises/: do not edit.
-#include \"checks/exercise_registry.h\"
+#include \"course/exercise_registry.h\"
 
 #include <map>
 

@@ -23,14 +23,11 @@ float cameraFovY() {
 }
 
 // The direction of sample s (of n*n) in the pixel whose lower-left corner is
-// `pixel` (column i, row j from the bottom). Exercise 01 computes it; until
-// then every ray looks straight ahead (a flat picture).
+// `pixel` (column i, row j from the bottom), by exercise 01.
 vec3 primaryRayDirection(vec2 pixel, int s, int n) {
     vec2 offset = sampleOffset(s, n);
-    if (isStub(offset)) offset = vec2(0.5);
     vec3 right = u_cameraToWorld[0].xyz;
     vec3 up = u_cameraToWorld[1].xyz;
     vec3 forward = -u_cameraToWorld[2].xyz;  // forward / tan(fov_y / 2): the same directions as forward with fov_y
-    vec3 d = cameraRayDirection(pixel + offset, u_resolution, cameraFovY(), right, up, forward);
-    return isGeometryStub(d) ? normalize(forward) : d;
+    return cameraRayDirection(pixel + offset, u_resolution, cameraFovY(), right, up, forward);
 }

@@ -99,7 +99,6 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
         }
 #endif
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (isGeometryStub(t)) return hit;  // 02 not started: nothing is hit
         if (refinesRoot(i) && t > 0.0) t = refineRoot(origin, dir, sphereI, sphereAnchorC(i), t);  // unused for `leaving`
         // Kept if nearer, by selects: llvmpipe runs the body of an if for
         // every pixel anyway, and the selects measured 2% to 4% faster than

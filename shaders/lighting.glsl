@@ -2,39 +2,21 @@
 // assembled from the exercises (03 irradiance, 04 visibility, 08 BRDF).
 // Returns linear radiance towards the viewer.
 
-// Exercise 08 builds on 03, 05, 06 and 07: it is used only when all of them
-// are started (the arguments are constants, so the compiler folds the calls).
-bool cookTorranceReady() {
-    vec3 z = vec3(0.0, 0.0, 1.0);
-    Material probe = Material(vec3(0.5), 0.5, 0.0, 1.0);
-    bool anyStub = isStub(Fd_Lambert(vec3(0.5))) || isStub(D_GGX(z, z, 0.25)) ||
-                   isStub(G1_SchlickGGX(0.5, 0.5)) || isStub(G_SchlickGGX(0.5, 0.5, 0.5)) ||
-                   isStub(F_Schlick(vec3(0.04), 1.0)) || isStub(ggxAlpha(0.5)) ||
-                   isStub(baseReflectance(probe)) || isStub(cookTorranceBRDF(z, z, z, probe));
-    return !anyStub;
-}
-
-// The BRDF of exercise 08, or Lambert alone (exercise 03) until 08 and the
-// terms it uses are all started.
+// The BRDF: exercise 08's Cook-Torrance.
 vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m) {
-    if (cookTorranceReady()) return cookTorranceBRDF(n, v, l, m);
-    vec3 fd = Fd_Lambert(m.albedo);
-    return isStub(fd) ? vec3(0.0) : fd;
+    return cookTorranceBRDF(n, v, l, m);
 }
 
 #ifdef RL_MODEL_VARIANTS
 // A scene with model variants: modelBRDF() (model_variants.glsl) in place of
 // 08's cookTorranceBRDF(); its conductor Fresnel needs the sphere's edge tint.
 vec3 surfaceBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
-    if (cookTorranceReady()) return modelBRDF(n, v, l, m, edgeTint);
-    return surfaceBRDF(n, v, l, m);  // Lambert alone until 08 is started
+    return modelBRDF(n, v, l, m, edgeTint);
 }
 #endif
 
-// Exercise 04's visibility, used once both of its functions are started
-// (lightVisibility starts its ray at offsetRayOrigin). 1.0 until then.
+// Whether the light at lightPosition reaches the hit: exercise 04's shadow ray.
 float shadowVisibility(Hit hit, vec3 lightPosition) {
-    if (isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)))) return 1.0;
     // The sphere of the hit is convex: seen from outside it shadows nothing
     // the shadow ray goes to (only lights with NoL > 0 get here); seen from
     // inside (n faces the centre) it hides every light outside it and none
@@ -49,14 +31,7 @@ float shadowVisibility(Hit hit, vec3 lightPosition) {
 #ifdef RL_SINGLE_SPHERE
     return 1.0;  // specialised to a scene of one sphere: no shadow ray at all
 #endif
-    float visible = lightVisibility(hit, lightPosition);
-    return isStub(visible) ? 1.0 : visible;
-}
-
-// Exercise 03's irradiance, decided on constant inputs (the compiler folds
-// it): no light pays for a NOT_STARTED test.
-bool irradianceStarted() {
-    return !isStub(pointLightIrradiance(vec3(0.0), vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)));
+    return lightVisibility(hit, lightPosition);
 }
 
 // The BRDF at the hit towards the light in direction l (with the sphere's
@@ -80,7 +55,6 @@ vec3 lightTerm(Hit hit, vec3 v, Material m, int i) {
 
 vec3 directLight(Hit hit, vec3 v, Material m) {
     vec3 radiance = vec3(0.0);
-    if (lightCount() > 0 && !irradianceStarted()) return radiance;  // 03 not started: no direct light
 #if defined(RL_SELECT_LIGHTS)
     // Every exercise written, shadow tests unrolled (specialisation.cpp): the
     // same sum, with the lights that add nothing (facing away, at p, hidden)

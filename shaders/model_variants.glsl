@@ -226,6 +226,9 @@ vec3 modelF(vec3 F0, vec3 edgeTint, float VoH) {
 //     D G F / (4 NoL NoV),  NoV = clamp(n.v, 1e-4, 1)  (exercise 08's clamp and reason)
 //     Blinn-Phong: F0 Fr_BlinnPhong(NoH, s)
 vec3 modelSpecularBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
+#ifndef RL_READY_cookTorranceBRDF  // the model's lobes come with 08 and the terms it builds on
+    return vec3(0.0);
+#endif
     float NoL = clamp(dot(n, l), 0.0, 1.0);
     if (NoL == 0.0) return vec3(0.0);
     vec3 h = normalize(l + v);
@@ -244,6 +247,9 @@ vec3 modelSpecularBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
 //     Blinn-Phong: (1 - F0)(1 - metallic) albedo/pi (no angle dependence)
 // Like diffuseBRDF(), it does not look at NoL (modelBRDF does).
 vec3 modelDiffuseBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
+#ifndef RL_READY_cookTorranceBRDF
+    return vec3(0.0);
+#endif
 #ifdef RL_BLINN_PHONG
     return (1.0 - baseReflectance(m)) * (1.0 - m.metallic) * Fd_Lambert(m.albedo);
 #else
@@ -262,8 +268,12 @@ vec3 modelDiffuseBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
 
 // The whole BRDF f(l, v) of the scene's model (linear, per steradian), 0 for
 // a light at or below the horizon: what lighting.glsl's surfaceBRDF() uses
-// in place of cookTorranceBRDF() when the scene has model variants.
+// in place of cookTorranceBRDF() when the scene has model variants; until
+// 08 is ready, 08's neutral value like the reference model (Lambert alone).
 vec3 modelBRDF(vec3 n, vec3 v, vec3 l, Material m, vec3 edgeTint) {
+#ifndef RL_READY_cookTorranceBRDF
+    return cookTorranceBRDF(n, v, l, m);
+#endif
     if (dot(n, l) <= 0.0) return vec3(0.0);
     return modelDiffuseBRDF(n, v, l, m, edgeTint) + modelSpecularBRDF(n, v, l, m, edgeTint);
 }

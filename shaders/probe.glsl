@@ -88,7 +88,7 @@ vec4 evaluateProbe() {
         // quarter of the offset from it (rounding is ~1/12 of it), the case
         // reads PROBE_WRONG_ORIGIN, which the checker names.
         Hit h = g_probeFirstHit;
-        if (!isStub(r.xyz) && g_probeCalls > 1 && h.t != NO_HIT) {
+        if (r.x != NOT_STARTED && g_probeCalls > 1 && h.t != NO_HIT) {
             float offset = dot(abs(h.n), h.error);
             if (length(g_probeSecondOrigin - (h.p + offset * h.n)) > 0.25 * offset) r.xyz = vec3(PROBE_WRONG_ORIGIN);
         }

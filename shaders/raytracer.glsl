@@ -2,13 +2,13 @@
 // each other. main.frag (the picture) and probe.frag (the exercise checks)
 // both start from here.
 #include "common.glsl"
-#include "stub_marker.glsl"
 #include "scene.glsl"
 #include "declarations.glsl"
 #include "error_bounds.glsl"
 #include "intersect_scene.glsl"
 #include "loop_guard.glsl"
-#include "exercises.glsl"
+#include "exercises.glsl"  // written by the host: the exercise files, what is not ready replaced
+#include "unfinished.glsl"
 #ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)
 #include "model_variants.glsl"
 #endif

@@ -1,42 +1,9 @@
-// trace.glsl: the radiance along a camera ray. Exercise 09's traceRay()
-// follows the mirror bounces; until it is written, the framework shades the
-// first hit only (no reflections).
-
-vec3 traceFirstHitOnly(vec3 origin, vec3 dir) {
-    Hit hit = closestHit(origin, dir, NO_SPHERE);
-    if (hit.t == NO_HIT) return backgroundRadiance();
-    return shadeHit(hit, -dir);
-}
-
-// Exercise 09 builds on 04's offsetRayOrigin and 08's baseReflectance: it is
-// used only when they are started too (constant arguments: folded away).
-bool reflectionsReady() {
-    Material probe = Material(vec3(0.5), 0.5, 0.0, 1.0);
-    return !isStub(F_SchlickRoughness(vec3(0.04), 1.0, 0.5)) && !isStub(baseReflectance(probe)) &&
-           !isStub(offsetRayOrigin(vec3(1.0), vec3(0.0, 0.0, 1.0), vec3(1.0)));
-}
+// trace.glsl: the radiance along a camera ray, by exercise 09's traceRay():
+// the first hit and its Fresnel-weighted mirror bounces.
 
 vec3 radianceAlong(vec3 origin, vec3 dir) {
     g_bounceCounter = 0;
-#ifdef RL_PICTURE_ONLY
-    // A program for the picture (app/render/specialisation.cpp) trusts a
-    // traceRay whose helpers are started. The host compiles it only when
-    // 09-reflections.glsl is no longer the shipped stub (render_command.cpp);
-    // a traceRay edited but still returning NOT_STARTED shows black in the
-    // stub frame, where the full program falls back to the first hit per ray.
-    // That fallback is code the compiler cannot drop (it depends on
-    // traceRay's result), and llvmpipe runs it under a mask for every pixel.
-    if (!reflectionsReady()) return traceFirstHitOnly(origin, dir);
-    vec3 L = traceRay(origin, dir);
-    return isStub(L) ? vec3(0.0) : L;
-#else
-    if (reflectionsReady()) {
-        vec3 L = traceRay(origin, dir);
-        if (!isStub(L)) return L;
-        g_bounceCounter = 0;
-    }
-    return traceFirstHitOnly(origin, dir);
-#endif
+    return traceRay(origin, dir);
 }
 
 // ---- Stopping the bounces early (specialised shaders) ------------------------------------

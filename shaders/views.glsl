@@ -39,18 +39,17 @@ vec3 teachingView(vec3 origin, vec3 dir) {
         vec3 sum = vec3(0.0);
         for (int i = 0; i < lightCount(); ++i) {
             vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
-            if (isStub(E) || E == vec3(0.0)) continue;
+            if (E == vec3(0.0)) continue;
             if (shadowVisibility(hit, lightPosition(i)) == 0.0) continue;
             vec3 l = normalize(lightPosition(i) - hit.p);
 #ifdef RL_MODEL_VARIANTS  // the lobes of the scene's model (model_variants.glsl), once 08 is started
             vec3 edgeTint = sphereEdgeTint(hit.sphere);
-            vec3 f = !cookTorranceReady()     ? vec3(NOT_STARTED)
-                     : (u_view == VIEW_DIFFUSE) ? modelDiffuseBRDF(hit.n, v, l, m, edgeTint)
-                                                : modelSpecularBRDF(hit.n, v, l, m, edgeTint);
+            vec3 f = (u_view == VIEW_DIFFUSE) ? modelDiffuseBRDF(hit.n, v, l, m, edgeTint)
+                                              : modelSpecularBRDF(hit.n, v, l, m, edgeTint);
 #else
             vec3 f = (u_view == VIEW_DIFFUSE) ? diffuseBRDF(hit.n, v, l, m) : specularBRDF(hit.n, v, l, m);
 #endif
-            if (!isStub(f)) sum += f * E;
+            sum += f * E;
         }
         return sum;
     }
@@ -69,7 +68,7 @@ vec3 teachingView(vec3 origin, vec3 dir) {
 #else
         float D = D_GGX(hit.n, h, ggxAlpha(m.roughness));
 #endif
-        return vec3(isStub(D) ? 0.0 : D / (1.0 + D));
+        return vec3(D / (1.0 + D));
     }
     if (u_view == VIEW_G) {
 #ifdef RL_MODEL_VARIANTS
@@ -77,7 +76,7 @@ vec3 teachingView(vec3 origin, vec3 dir) {
 #else
         float G = G_SchlickGGX(NoV, NoL, m.roughness);
 #endif
-        return vec3(isStub(G) ? 0.0 : G);
+        return vec3(G);
     }
     if (u_view == VIEW_F || u_view == VIEW_F_NOV) {
         // F(v.h) weighs the highlight of the key light and does not depend on
@@ -85,14 +84,14 @@ vec3 teachingView(vec3 origin, vec3 dir) {
         // 09, every model variant) and brightens towards the rims.
         if (u_view == VIEW_F_NOV) {
             vec3 Fr = F_SchlickRoughness(baseReflectance(m), NoV, m.roughness);
-            return isStub(Fr) ? vec3(0.0) : fresnelDisplay(Fr);
+            return fresnelDisplay(Fr);
         }
 #ifdef RL_MODEL_VARIANTS
         vec3 F = modelF(baseReflectance(m), sphereEdgeTint(hit.sphere), dot(v, h));
 #else
         vec3 F = F_Schlick(baseReflectance(m), dot(v, h));
 #endif
-        return isStub(F) ? vec3(0.0) : fresnelDisplay(F);
+        return fresnelDisplay(F);
     }
     return vec3(0.0);
 }

@@ -8,7 +8,7 @@
 // The student's files are written to /raylab/exercises/ before each call.
 #include "camera/trackball.h"
 #include "checks/checker.h"
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/paths.h"

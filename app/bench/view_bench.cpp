@@ -3,7 +3,7 @@
 #include "bench/frame_clock.h"
 #include "bench/textbook.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/scene_io.h"

@@ -9,7 +9,7 @@
 // shader that hangs or crashes costs that exercise only.
 #pragma once
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "checks/probe_cases.h"
 #include "core/image.h"
 #include "core/scene.h"

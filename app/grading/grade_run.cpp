@@ -1,6 +1,6 @@
 #include "grading/grade_run.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/process_pool.h"
 #include "grading/atomic_file.h"

@@ -1,6 +1,6 @@
 #include "grading/gradescope_results.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "grading/rubric.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/json_text.h"

@@ -1,6 +1,6 @@
 #include "grading/submission.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/file_handle.h"
 #include "grading/atomic_file.h"

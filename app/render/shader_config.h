@@ -57,7 +57,7 @@ ShaderDefines pictureValueDefines(const Scene& scene);
 
 // RL_EXERCISES_FINISHED when every exercise file of `impl` is written and none
 // of them names NOT_STARTED outside comments: no stub test can fire, and the
-// shader drops them (stub_marker.glsl). Empty otherwise.
+// host uses it to choose specialisations that assume finished files. Empty otherwise.
 ShaderDefines finishedExerciseDefines(const Implementation& impl);
 
 // What the files of `impl` allow, whatever the scene's values and camera

@@ -12,7 +12,7 @@
 // which runs both sides of every branch under a mask.
 #include "render/shader_config.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/float_range.h"

@@ -284,7 +284,11 @@ GlslScan scanGlsl(std::string_view text) {
             }
             continue;
         }
-        if (!braces.empty()) continue;  // inside a body: only the braces matter here
+        if (!braces.empty()) {  // inside a body: only the braces matter here, and NOT_STARTED
+            if (functionBody && token.ident && token.text == "NOT_STARTED" && !scan.functions.empty())
+                scan.functions.back().bodyNamesNotStarted = true;
+            continue;
+        }
         if (c == ';' && parens.empty()) {
             GlslFunction f;
             if (parseFunctionHeader(statement, f)) scan.functions.push_back(std::move(f));

@@ -20,6 +20,9 @@ struct GlslFunction {
     std::vector<std::string> paramNames; // "" where the declaration names none
     int line = 0;                        // 1-based line of the name
     bool hasBody = false;                // a definition, not a prototype
+    // Its body names NOT_STARTED outside comments: the function is still a
+    // stub, or a stub partly filled in (shader/readiness.h).
+    bool bodyNamesNotStarted = false;
 
     std::string signature() const;  // "pow5(float)": what makes two definitions clash
     std::string declaration() const;  // "float D_GGX(vec3 n, vec3 h, float alpha)"

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "shader/readiness.h"
 
 namespace fs = std::filesystem;
 
@@ -38,7 +39,11 @@ std::string shaderPrelude(const ShaderDefines& defines, GlslDialect dialect) {
 AssembledSource assembleShader(const std::string& entry, const Implementation& impl, const ShaderDefines& defines,
                                GlslDialect dialect) {
     // Every file outside shaders/ is an exercise file: its errors are the author's.
-    SourceAssembler assembler(makeIncludeResolver(impl), [](const fs::path& file) { return isInside(file, shadersDir()); });
+    // exercises.glsl is written per implementation: the exercise files, with
+    // what is not ready yet replaced by the framework's neutral value.
+    GeneratedFiles generated{{"exercises.glsl", exercisesGlsl(readinessOf(impl, probeExerciseOf(defines)))}};
+    SourceAssembler assembler(makeIncludeResolver(impl), [](const fs::path& file) { return isInside(file, shadersDir()); },
+                              std::move(generated));
     return assembler.assemble(shaderPrelude(defines, dialect), shadersDir() / entry);
 }
 

@@ -245,18 +245,19 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
     std::vector<std::string> seen;
     std::vector<Frame> stack;
     // Reads `file` and starts it, unless it was included before.
-    auto start = [&](const fs::path& file, const std::string& includedAs, int includer) {
+    auto start = [&](const fs::path& file, const std::string& includedAs, int includer,
+                     const std::string* generatedText = nullptr) {
         std::error_code ec;
-        const std::string key = fs::weakly_canonical(file, ec).string();
+        const std::string key = generatedText ? "<generated " + includedAs + ">" : fs::weakly_canonical(file, ec).string();
         if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;  // included once
         seen.push_back(key);
         out.files.push_back(file);
         SourceFile source;
         source.path = file;
-        source.shown = displayPath(file);
-        source.text = readSourceFile(file);
+        source.shown = generatedText ? "<generated " + includedAs + ">" : displayPath(file);
+        source.text = generatedText ? *generatedText : readSourceFile(file);
         source.includedAs = includedAs;
-        source.exercise = isFramework_ && !isFramework_(file);
+        source.exercise = !generatedText && isFramework_ && !isFramework_(file);
         if (source.exercise) {
             // Every loop bounded, the same on every machine (shader/loop_guard.h).
             GuardedSource guarded = guardLoops(source.text, source.shown, int(out.loops.size()) + 1);
@@ -320,6 +321,12 @@ AssembledSource SourceAssembler::assemble(const std::string& prelude, const fs::
             if (stack.size() >= std::size_t(kMaxIncludeDepth))
                 throw Error(where + quoted + ": includes nested more than " + std::to_string(kMaxIncludeDepth) +
                             " deep");
+            if (auto gen = generated_.find(included); gen != generated_.end() && !src.exercise) {
+                out.append("", {shown, k});
+                const int includer = f.source;
+                start(src.path.parent_path() / included, included, includer, &gen->second);
+                continue;
+            }
             fs::path target;
             try {
                 target = resolver_(included, src.path);

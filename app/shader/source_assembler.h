@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,10 @@ using IncludeResolver =
     std::function<std::filesystem::path(const std::string& name, const std::filesystem::path& fromFile)>;
 // Whether a file belongs to the framework (its errors are raylab's own).
 using FrameworkTest = std::function<bool(const std::filesystem::path& file)>;
+// Framework files the host writes itself (shader/readiness.h): include name
+// -> text. A framework file's #include of such a name gets the text, shown
+// as "<generated NAME>"; exercise files cannot include them.
+using GeneratedFiles = std::map<std::string, std::string>;
 
 // Limits on any single source file: bigger or non-UTF-8 files are refused
 // with a message naming the file (students' files reach the driver through here).
@@ -79,8 +84,8 @@ constexpr int kMaxIncludeDepth = 16;
 class SourceAssembler {
 public:
     // Without `isFramework`, every file counts as the framework's.
-    explicit SourceAssembler(IncludeResolver resolver, FrameworkTest isFramework = {})
-        : resolver_(std::move(resolver)), isFramework_(std::move(isFramework)) {}
+    explicit SourceAssembler(IncludeResolver resolver, FrameworkTest isFramework = {}, GeneratedFiles generated = {})
+        : resolver_(std::move(resolver)), isFramework_(std::move(isFramework)), generated_(std::move(generated)) {}
 
     // `prelude` comes first (the #version line and #defines), mapped to
     // "<prelude>". Each file is included at most once (like #pragma once).
@@ -93,6 +98,7 @@ public:
 private:
     IncludeResolver resolver_;
     FrameworkTest isFramework_;
+    GeneratedFiles generated_;
 };
 
 // A name or text from a file, fit for a one-line message: control

@@ -1,6 +1,6 @@
 #include "view/implementation_folder.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/paths.h"
 

@@ -6,7 +6,7 @@
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "render/live_defines.h"
 #include "render/shader_config.h"
 #include "view/implementation_folder.h"

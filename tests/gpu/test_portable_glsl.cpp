@@ -3,7 +3,7 @@
 // of macOS's and NVIDIA's compilers), so that a portability error can only
 // ever be the student's (shader/portability.h). Mesa compiles `#version 300
 // es` in the desktop context raylab already has.
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/paths.h"
 #include "gl/context.h"
 #include "shader/portability.h"

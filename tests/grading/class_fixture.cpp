@@ -1,6 +1,6 @@
 #include "grading/class_fixture.h"
 
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/paths.h"
 #include "support/test_support.h"
 

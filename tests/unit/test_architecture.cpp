@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -128,4 +129,72 @@ TEST(Architecture, NoFileOutsideCoreIncludesPosixHeadersOrCallsProcessFunctions)
             report += f + "\n";
     EXPECT_EQ(report, "") << "outside app/core/, a POSIX header or process call: move it behind core/isolated.h, "
                              "core/process_pool.h or core/file_handle.h";
+}
+
+// ---- Layers -------------------------------------------------------------------------------
+//
+// Each folder of app/ is one layer; a file may include its own folder and
+// the folders of lower layers, never a higher one or another folder of its
+// own rank (so no cycle can form). The same order is the link order of the
+// per-layer libraries in CMakeLists.txt, so the linker holds it too.
+namespace {
+
+const std::map<std::string, int> kLayerRank = {
+    {"core", 0},                                                  // scenes, files, images, processes
+    {"course", 1}, {"gl", 1}, {"reference", 1}, {"camera", 1},    // the registry; GL; the CPU reference; the trackball
+    {"shader", 2},                                                // GLSL assembly, readiness, programs
+    {"render", 3},                                                // the renderer and its defines
+    {"checks", 4}, {"bench", 4}, {"view", 4},                     // what uses the renderer
+    {"grading", 5},                                               // over checks
+    {"commands", 6},                                              // the command line over everything
+};
+
+// "file:line: includes X/..." for each include of `layer`'s file that runs
+// upward or sideways; an unknown folder counts as upward.
+std::vector<std::string> layerFindings(const std::string& shown, const std::string& layer, const std::string& text) {
+    std::vector<std::string> out;
+    static const std::regex include(R"(^\s*#\s*include\s*"([a-z_]+)/[^"]+")");
+    const auto own = kLayerRank.find(layer);
+    std::istringstream raw(text), code(codeOnly(text));
+    std::string rawLine, codeLine;
+    for (int n = 1; std::getline(raw, rawLine) && std::getline(code, codeLine); ++n) {
+        std::smatch m;
+        if (codeLine.find('#') == std::string::npos || !std::regex_search(rawLine, m, include)) continue;
+        const std::string target = m[1].str();
+        if (target == layer) continue;
+        const auto other = kLayerRank.find(target);
+        if (own == kLayerRank.end() || other == kLayerRank.end() || other->second >= own->second)
+            out.push_back(shown + ":" + std::to_string(n) + ": " + layer + "/ includes " + target + "/");
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Architecture, TheLayerScannerSeesUpwardAndSidewaysIncludes) {
+    EXPECT_TRUE(layerFindings("a.cpp", "render", "#include \"shader/program.h\"\n#include \"core/error.h\"\n").empty());
+    EXPECT_EQ(layerFindings("a.cpp", "render", "#include \"checks/checker.h\"\n"),
+              std::vector<std::string>{"a.cpp:1: render/ includes checks/"});
+    EXPECT_EQ(layerFindings("a.cpp", "checks", "int x;\n#include \"view/panel.h\"\n").size(), 1u);  // sideways
+    EXPECT_EQ(layerFindings("a.cpp", "core", "#include \"course/exercise_registry.h\"\n").size(), 1u);
+    EXPECT_TRUE(layerFindings("a.cpp", "render", "// #include \"checks/checker.h\"\n").empty());
+}
+
+TEST(Architecture, EveryIncludeRunsDownTheLayers) {
+    const fs::path app = rl::sourceRoot() / "app";
+    std::string report;
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(app)) {
+        const fs::path rel = entry.path().lexically_relative(app);
+        const std::string ext = entry.path().extension().string();
+        if (!entry.is_regular_file() || (ext != ".cpp" && ext != ".h" && ext != ".in")) continue;
+        if (std::distance(rel.begin(), rel.end()) < 2) continue;  // app/main.cpp: the top
+        ++files;
+        for (const std::string& f :
+             layerFindings(fs::relative(entry.path(), rl::sourceRoot()).string(), rel.begin()->string(),
+                           rl::test::readText(entry.path())))
+            report += f + "\n";
+    }
+    EXPECT_GT(files, 100);
+    EXPECT_EQ(report, "") << "an include against the layers (tests/unit/test_architecture.cpp, kLayerRank)";
 }

@@ -1,7 +1,7 @@
 // "The unchanged stub" is the stub shipped when the program was built
 // (compiled in), never the live exercises/ folder: a student edits that folder
 // in place, so comparing with it would call every edited file a stub.
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/paths.h"
 #include "render/shader_config.h"
 #include "support/test_support.h"

@@ -6,7 +6,7 @@
 // the verdicts, the checker output the documents show, and the files they
 // promise. The copy has no build: ./raylab runs this build's binary through
 // RAYLAB_BIN.
-#include "checks/exercise_registry.h"
+#include "course/exercise_registry.h"
 #include "core/image.h"
 #include "core/paths.h"
 #include "support/test_support.h"

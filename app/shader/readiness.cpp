@@ -1,0 +1,127 @@
+#include "shader/readiness.h"
+
+#include "core/paths.h"
+#include "course/exercise_registry.h"
+#include "shader/glsl_scan.h"
+#include "shader/source_assembler.h"
+
+#include <map>
+
+namespace rl {
+
+bool Readiness::allReady() const {
+    for (const FunctionReadiness& f : functions)
+        if (!f.ready) return false;
+    return true;
+}
+
+bool Readiness::isReady(const std::string& function) const {
+    for (const FunctionReadiness& f : functions)
+        if (f.name == function) return f.ready;
+    return false;
+}
+
+int probeExerciseOf(const ShaderDefines& defines) {
+    auto it = defines.find("RL_PROBE_EXERCISE");
+    if (it == defines.end()) return 0;
+    try {
+        return std::stoi(it->second);
+    } catch (const std::exception&) {
+        return 0;
+    }
+}
+
+namespace {
+
+// Per function name: whether the file's definition of it names NOT_STARTED.
+// Empty when the file cannot be read (it then counts as started).
+std::map<std::string, bool> stubbedFunctions(const std::filesystem::path& file) {
+    std::map<std::string, bool> stubbed;
+    std::string text;
+    try {
+        text = readSourceFile(file);
+    } catch (const std::exception&) {
+        return stubbed;
+    }
+    for (const GlslFunction& f : scanGlsl(text).functions)
+        if (f.hasBody) stubbed[f.name] = stubbed[f.name] || f.bodyNamesNotStarted;
+    return stubbed;
+}
+
+}  // namespace
+
+Readiness readinessOf(const Implementation& impl, int probeExercise) {
+    Readiness out;
+    for (const ExerciseInfo& e : allExercises()) {
+        const std::filesystem::path file = impl.fileFor(e.file());
+        const bool probed = e.number == probeExercise;
+        const bool stub = !probed && isUnchangedStub(file, e);
+        const std::map<std::string, bool> stubbed = probed || stub ? std::map<std::string, bool>{} : stubbedFunctions(file);
+        for (const ExerciseFunction& f : e.functions) {
+            auto it = stubbed.find(f.name);
+            bool started = probed || (!stub && !(it != stubbed.end() && it->second));
+            out.functions.push_back({f.name, e.number, started, started});
+        }
+    }
+    // ready = started and every need ready. The registry lists needs of
+    // earlier or the same exercises, but the fixed point below does not rely
+    // on it: at most one pass per function, no recursion.
+    for (std::size_t pass = 0; pass <= out.functions.size(); ++pass) {
+        bool changed = false;
+        for (FunctionReadiness& f : out.functions) {
+            if (!f.ready || f.exercise == probeExercise) continue;
+            const ExerciseInfo* e = exerciseOfFunction(f.name);
+            for (const ExerciseFunction& spec : e->functions) {
+                if (spec.name != f.name) continue;
+                for (const std::string& need : spec.needs)
+                    if (!out.isReady(need)) {
+                        f.ready = false;
+                        changed = true;
+                    }
+            }
+        }
+        if (!changed) break;
+    }
+    return out;
+}
+
+namespace {
+
+// "float D_GGX(vec3 n, vec3 h, float alpha)" from shaders/declarations.glsl.
+std::map<std::string, std::string> declarations() {
+    std::map<std::string, std::string> out;
+    for (const GlslFunction& f : scanGlsl(readSourceFile(shadersDir() / "declarations.glsl")).functions)
+        if (!f.hasBody) out.emplace(f.name, f.declaration());
+    return out;
+}
+
+}  // namespace
+
+std::string exercisesGlsl(const Readiness& readiness) {
+    static const std::map<std::string, std::string> declared = declarations();
+    std::string text =
+        "// exercises.glsl, written by the host (app/shader/readiness.cpp) from the course registry\n"
+        "// (app/course/exercise_registry.cpp) and the files of this implementation: the exercise\n"
+        "// files in the course's order; a function that is not ready yet is renamed away and the\n"
+        "// framework's neutral value compiled in its place.\n";
+    bool unfinished = false;
+    for (const ExerciseInfo& e : allExercises()) {
+        std::vector<const ExerciseFunction*> waiting;
+        for (const ExerciseFunction& f : e.functions)
+            if (!readiness.isReady(f.name)) waiting.push_back(&f);
+        for (const ExerciseFunction* f : waiting) text += "#define " + f->name + " rl_unfinished_" + f->name + "\n";
+        text += "#include \"exercise/" + e.file() + "\"\n";
+        for (const ExerciseFunction* f : waiting) {
+            auto d = declared.find(f->name);
+            text += "#undef " + f->name + "\n";
+            text += (d != declared.end() ? d->second : f->name + "()") + " { " + f->neutralBody + " }\n";
+            unfinished = true;
+        }
+        for (const ExerciseFunction& f : e.functions)
+            if (readiness.isReady(f.name)) text += "#define RL_READY_" + f.name + "\n";
+    }
+    if (unfinished) text += "#define RL_UNFINISHED\n";
+    return text;
+}
+
+}  // namespace rl
