@@ -52,15 +52,15 @@ rm -f "$OUT/generated/root_directory.h.new"
 cmake -DEXERCISES_DIR="$ROOT/exercises" -DSNAPSHOT_DIR="$OUT/generated/shipped-stubs" \
       -DOUTPUT="$OUT/generated/shipped_stubs.cpp" -P cmake/shipped_stubs.cmake
 
-# The native library's files (raylab_core in CMakeLists.txt), unchanged, so a
+# The native library's files (the raylab_layer() lists in CMakeLists.txt), unchanged, so a
 # file added there comes along; left out: what the browser cannot have or
 # does not need (grading needs libzip, the commands CLI11 and a process,
 # bench GPU timers, view ImGui) and the native GL contexts.
-SOURCES=$(awk '/^add_library\(raylab_core STATIC/ { inside = 1; next } inside && /^\)/ { inside = 0 } inside { print $1 }' \
+SOURCES=$(awk '/^raylab_layer\(/ { inside = 1; next } inside && /^\)/ { inside = 0 } inside { print $1 }' \
           CMakeLists.txt | grep '^app/' |
           grep -v -E '^app/(grading|commands|bench|view)/|^app/gl/context(_egl|_osmesa|_glfw)?\.cpp$' || true)
 if [ -z "$SOURCES" ]; then
-    echo "scripts/build-web.sh: found no raylab_core sources in CMakeLists.txt" >&2
+    echo "scripts/build-web.sh: found no raylab_layer() sources in CMakeLists.txt" >&2
     exit 1
 fi
 # The browser's own: the WebGL2 context (instead of gl/context.cpp and
