@@ -9,7 +9,7 @@
 #include "intersect_scene.glsl"
 #include "loop_guard.glsl"
 #include "exercises.glsl"
-#ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)
+#ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/define_table.cpp)
 #include "model_variants.glsl"
 #endif
 #include "lighting.glsl"

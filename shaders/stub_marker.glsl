@@ -11,7 +11,7 @@ bool g_missingGeometry = false;
 
 #ifdef RL_EXERCISES_FINISHED
 // Every exercise file is written and none of them names NOT_STARTED (the host
-// checked, finishedExerciseDefines() in app/render/specialisation.cpp): no
+// checked, ImplementationFacts in app/render/implementation_facts.h): no
 // function can return the sentinel, so every test of it folds away. On
 // llvmpipe a test of a ray-dependent value costs its full price in every
 // pixel, taken or not (docs/performance.md).

@@ -19,7 +19,7 @@ bool reflectionsReady() {
 vec3 radianceAlong(vec3 origin, vec3 dir) {
     g_bounceCounter = 0;
 #ifdef RL_PICTURE_ONLY
-    // A program for the picture (app/render/specialisation.cpp) trusts a
+    // A program for the picture (app/render/define_table.cpp) trusts a
     // traceRay whose helpers are started. The host compiles it only when
     // 09-reflections.glsl is no longer the shipped stub (render_command.cpp);
     // a traceRay edited but still returning NOT_STARTED shows black in the

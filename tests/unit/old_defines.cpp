@@ -1,3 +1,60 @@
+// ---- shader_config.cpp
+#include "unit/old_defines.h"
+
+namespace rl::old {
+
+ShaderDefines shaderDefinesFor(const Scene& scene, bool specialise) {
+    ShaderDefines defines = modelDefines(scene.model);
+    if (specialise)
+        for (const auto& [name, value] : specialisationDefines(scene)) defines[name] = value;
+    return defines;
+}
+
+}  // namespace rl::old
+
+// ---- model_defines.cpp
+// The defines that select the model variants of shaders/model_variants.glsl
+// (docs/model-variants.md). The reference model gets none, so its shader is
+// the one it always was and every reference scene shares one program.
+#include "unit/old_defines.h"
+
+namespace rl::old {
+
+ShaderDefines modelDefines(const ShadingModel& model) {
+    ShaderDefines defines;
+    if (model.isReference()) return defines;
+    defines["RL_MODEL_VARIANTS"] = "1";  // raytracer.glsl includes model_variants.glsl
+    if (model.blinnPhong) {
+        // The whole BRDF is replaced and the other switches are ignored (as in
+        // the CPU reference), so they add no define: scenes that differ only
+        // in ignored switches share one program.
+        defines["RL_BLINN_PHONG"] = "1";
+        return defines;
+    }
+    switch (model.distribution) {
+        case DistributionModel::GGX: break;
+        case DistributionModel::Beckmann: defines["RL_D_BECKMANN"] = "1"; break;
+    }
+    switch (model.geometry) {
+        case GeometryModel::SchlickGGX: break;
+        case GeometryModel::SmithGGXSeparable: defines["RL_G_SMITH_SEPARABLE"] = "1"; break;
+        case GeometryModel::SmithGGXCorrelated: defines["RL_G_SMITH_CORRELATED"] = "1"; break;
+    }
+    switch (model.fresnel) {
+        case FresnelModel::Schlick: break;
+        case FresnelModel::Dielectric: defines["RL_F_DIELECTRIC"] = "1"; break;
+        case FresnelModel::Conductor: defines["RL_F_CONDUCTOR"] = "1"; break;
+    }
+    switch (model.diffuse) {
+        case DiffuseModel::Lambert: break;
+        case DiffuseModel::Burley: defines["RL_FD_BURLEY"] = "1"; break;
+    }
+    return defines;
+}
+
+}  // namespace rl::old
+
+// ---- specialisation.cpp
 // A shader specialised to a scene's structure: what the scene has (how many
 // spheres and lights, the bounce limit, whether any sphere is a metal) is
 // compiled in as constants, and code for what it lacks is left out. Values
@@ -10,7 +67,7 @@
 // count unrolls into direct loads; a feature left out costs nothing, while
 // a feature behind a uniform branch costs its full price on a CPU rasteriser,
 // which runs both sides of every branch under a mask.
-#include "render/shader_config.h"
+#include "unit/old_defines.h"
 
 #include "checks/exercise_registry.h"
 #include "core/error.h"
@@ -26,7 +83,7 @@
 #include <cstdio>
 #include <string_view>
 
-namespace rl {
+namespace rl::old {
 
 ShaderDefines specialisationDefines(const Scene& scene) {
     ShaderDefines d;
@@ -348,4 +405,23 @@ ShaderDefines structuralDefines(const Scene& scene) {
     return d;
 }
 
-}  // namespace rl
+}  // namespace rl::old
+
+// ---- live_defines.cpp
+#include "unit/old_defines.h"
+
+namespace rl::old {
+
+
+ShaderDefines liveViewDefines(const Scene& scene, const ShadingModel& model, View view, bool traceStarted,
+                             const ShaderDefines& files) {
+    ShaderDefines defines = modelDefines(model);
+    if (!traceStarted || !rl::isPictureView(view)) return defines;  // the generic program (live_defines.h says why)
+    for (const ShaderDefines& more : {structuralDefines(scene), residualSphereDefines(scene), sampleGridDefines(scene),
+                                       pictureOnlyDefines(), implementationDefines(scene, files)})
+        for (const auto& [name, value] : more) defines[name] = value;
+    return defines;
+}
+
+}  // namespace rl::old
+
