@@ -1,9 +1,14 @@
 // The table of every RL_ define (app/render/define_table.h): it and the RL_
 // names of shaders/ agree both ways, its own columns are consistent, and
 // definesFor() gives for every bundled scene, implementation and purpose the
-// defines recorded in tests/unit/defines.golden (written from the functions
-// the table replaced; RAYLAB_UPDATE_DEFINES_GOLDEN=1 rewrites it after a
-// deliberate change, which its diff then shows).
+// defines recorded in tests/unit/defines.golden. The golden file was written
+// when definesFor() had been compared with the fourteen functions it
+// replaced (equal on 12240 define sets: every scene with its own model and
+// five variants, nine implementations, every purpose, the sky programs and
+// the bench's layer rows; that test left with those functions, see the
+// history of tests/unit/test_define_table_vs_old.cpp).
+// RAYLAB_UPDATE_DEFINES_GOLDEN=1 rewrites it after a deliberate change,
+// which its diff then shows.
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "render/define_table.h"
