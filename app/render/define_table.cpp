@@ -233,10 +233,7 @@ const std::vector<DefineRow>& defineTable() {
     return table;
 }
 
-std::string glslName(const DefineRow& row) {
-    const std::string name = row.name;
-    return name.substr(0, name.find('('));
-}
+std::string glslName(const DefineRow& row) { return row.name.substr(0, row.name.find('(')); }
 
 const std::vector<const char*>& nonSpecialisationNames() {
     static const std::vector<const char*> names = {
@@ -257,9 +254,9 @@ ShaderDefines definesFor(const Scene& scene, const ImplementationFacts& facts, P
     const DefineInput in{scene, facts, purpose, defines};
     for (const DefineRow& row : defineTable()) {
         if (!(row.purposes & purposeBit(purpose))) continue;
-        if (std::any_of(row.needs.begin(), row.needs.end(), [&](const char* n) { return !defines.count(n); }))
+        if (std::any_of(row.needs.begin(), row.needs.end(), [&](const std::string& n) { return !defines.count(n); }))
             continue;
-        if (std::any_of(row.excludes.begin(), row.excludes.end(), [&](const char* n) { return defines.count(n) != 0; }))
+        if (std::any_of(row.excludes.begin(), row.excludes.end(), [&](const std::string& n) { return defines.count(n) != 0; }))
             continue;
         if (std::optional<std::string> value = row.value(in)) defines[row.name] = *value;
     }

@@ -70,11 +70,13 @@ struct DefineInput {
 };
 
 struct DefineRow {
-    const char* name;  // as compiled; a function-like macro with its parameter: "RL_FOR_EACH_LIGHT(X)"
+    // As compiled; a function-like macro with its parameter: "RL_FOR_EACH_LIGHT(X)". A string, so
+    // that rows made from a list (one per exercise, say) are rows like the others.
+    std::string name;
     unsigned dependsOn;               // Depends bits
     unsigned purposes;                // purposeBit()s it applies to
-    std::vector<const char*> needs;     // defines above it that must be present
-    std::vector<const char*> excludes;   // defines above it that must be absent
+    std::vector<std::string> needs;     // defines above it that must be present
+    std::vector<std::string> excludes;  // defines above it that must be absent
     const char* reason;               // one line: why it pays, or what it selects
     std::optional<std::string> (*value)(const DefineInput&);  // nullopt: not defined
     bool glsl = true;                 // false: read by the host only (RL_SKY_TILES)

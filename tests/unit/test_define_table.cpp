@@ -110,14 +110,14 @@ TEST(DefineTable, ColumnsAreConsistent) {
     for (const DefineRow& row : defineTable()) {
         SCOPED_TRACE(row.name);
         EXPECT_TRUE(above.insert(row.name).second) << "two rows of one name";
-        EXPECT_EQ(std::string(row.name).rfind("RL_", 0), 0u);
+        EXPECT_EQ(row.name.rfind("RL_", 0), 0u);
         EXPECT_NE(row.purposes, 0u);
         EXPECT_EQ(row.purposes >> kPurposeCount, 0u);
         EXPECT_NE(row.dependsOn, 0u);
         EXPECT_GT(std::string(row.reason).size(), 20u);
         EXPECT_NE(row.value, nullptr);
-        for (const char* name : row.needs) EXPECT_TRUE(above.count(name)) << "needs " << name << ", not a row above";
-        for (const char* name : row.excludes) EXPECT_TRUE(above.count(name)) << "excludes " << name << ", not above";
+        for (const std::string& name : row.needs) EXPECT_TRUE(above.count(name)) << "needs " << name << ", not a row above";
+        for (const std::string& name : row.excludes) EXPECT_TRUE(above.count(name)) << "excludes " << name << ", not above";
         if (row.benchWith) {
             EXPECT_EQ(row.layer, BenchLayer::Without);
         }
