@@ -3,9 +3,11 @@
 // that every program's defines come from, definesFor(scene, facts, purpose).
 // Each row says what its value depends on, for which purposes it applies,
 // which other defines it requires and excludes, why it pays, and which
-// function computes it (render/define_values.h). Nothing else adds, removes
-// or filters a define: the sky tiles' program and the bench's layers sweep
-// read the table's columns too. A unit test (tests/unit/test_define_table.cpp)
+// function computes it (render/define_values.h). No caller adds, removes or
+// filters another's defines: the sky tiles' program is the table's InSky
+// column applied to the picture's, and the bench's layers sweep takes out,
+// one at a time, the rows its BenchLayer column marks (an experiment, not a
+// program anything else draws with). A unit test (tests/unit/test_define_table.cpp)
 // keeps the table and the RL_ names of shaders/ in step both ways.
 //
 // Two scenes with equal defines share one compiled program; the live view
