@@ -78,8 +78,8 @@ float leavingSphereHit(vec3 o, vec3 d, vec4 geometry) {
 // Whether makeHit() below can take the residual form for sphere i: a huge
 // sphere near the camera. A program for one picture gets the set from the
 // host, computed in double over every point of every sphere
-// (RL_RESIDUAL_SPHERES, pictureValueDefines() in
-// app/render/specialisation.cpp), so that a scene without such a sphere never
+// (RL_RESIDUAL_SPHERES, a row of
+// app/render/define_table.cpp), so that a scene without such a sphere never
 // computes the residual form; otherwise every sphere is a candidate and the
 // smaller bound is chosen per hit.
 bool residualFormCandidate(int i) {

@@ -117,7 +117,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
 #ifndef RL_CAMERA_OUTSIDE
     // RL_CAMERA_OUTSIDE (a program for one picture): the camera lies outside
     // every sphere and 02, 04 and 09 are the course's (the host checks both,
-    // specialisation.cpp). Then every hit is seen from outside: a camera ray
+    // render/define_table.cpp). Then every hit is seen from outside: a camera ray
     // meets the outside of the first sphere on its way, and a mirror ray
     // leaves that outside, pushed off it, so the convex sphere it leaves is
     // never in its way again. The far root below is then never needed, and

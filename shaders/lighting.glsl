@@ -56,7 +56,7 @@ vec3 lightTerm(Hit hit, vec3 v, Material m, int i) {
 vec3 directLight(Hit hit, vec3 v, Material m) {
     vec3 radiance = vec3(0.0);
 #if defined(RL_SELECT_LIGHTS)
-    // Every exercise written, shadow tests unrolled (specialisation.cpp): the
+    // Every exercise written, shadow tests unrolled (define_table.cpp): the
     // same sum, with the lights that add nothing (facing away, at p, hidden)
     // dropped by a select instead of by `continue`. llvmpipe runs every
     // light's code for all 8 pixels it shades together either way, and

@@ -7,7 +7,7 @@ layout(location = 1) out vec4 o_radiance;  // linear radiance averaged over the 
 
 void main() {
     vec2 pixel = floor(gl_FragCoord.xy);  // (i, j), j counted from the bottom
-#ifdef RL_SAMPLE_GRID  // a program for one picture: n compiled in (pictureValueDefines), sampleOffset folds
+#ifdef RL_SAMPLE_GRID  // a program for one picture: n compiled in (define_table.cpp), sampleOffset folds
     const int n = RL_SAMPLE_GRID;
 #else
     int n = max(1, int(sqrt(float(u_spp)) + 0.5));
@@ -17,7 +17,7 @@ void main() {
     vec3 sum = vec3(0.0);
     for (int s = 0; s < n * n; ++s) {
         vec3 dir = primaryRayDirection(pixel, s, n);
-#ifdef RL_PICTURE_ONLY  // a program for the picture and the bounce views: no term views (specialisation.cpp)
+#ifdef RL_PICTURE_ONLY  // a program for the picture and the bounce views: no term views (define_table.cpp)
         sum += radianceAlong(cameraPosition(), dir);
 #else
         sum += traced ? radianceAlong(cameraPosition(), dir) : teachingView(cameraPosition(), dir);

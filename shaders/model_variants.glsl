@@ -1,7 +1,7 @@
 // model_variants.glsl: the shading-model variants a scene may ask for with
 // its "model" object (docs/model-variants.md): Beckmann D, exact Smith G,
 // exact Fresnel, Burley diffuse, Blinn-Phong. Compiled in only for such a
-// scene: app/render/model_defines.cpp then defines RL_MODEL_VARIANTS and one
+// scene: app/render/define_table.cpp then defines RL_MODEL_VARIANTS and one
 // define per switch, and raytracer.glsl includes this file; the reference
 // model never sees it. Framework code, not an exercise: the terms a variant
 // keeps come from the exercises (D_GGX, G_SchlickGGX, F_Schlick, Fd_Lambert,

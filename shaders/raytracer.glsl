@@ -9,7 +9,7 @@
 #include "loop_guard.glsl"
 #include "exercises.glsl"  // written by the host: the exercise files, what is not ready replaced
 #include "unfinished.glsl"
-#ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/model_defines.cpp)
+#ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/define_table.cpp)
 #include "model_variants.glsl"
 #endif
 #include "lighting.glsl"

@@ -57,7 +57,7 @@ int maxBounces() {
 
 // The camera's position, where every camera ray starts. A program for one
 // picture gets it as a constant (RL_CAMERA_FROM_ANCHOR,
-// app/render/specialisation.cpp), so that what the camera rays share folds.
+// app/render/define_table.cpp), so that what the camera rays share folds.
 vec3 cameraFromAnchor() {
 #ifdef RL_CAMERA_FROM_ANCHOR
     return RL_CAMERA_FROM_ANCHOR;

@@ -17,7 +17,7 @@
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
 #include "render/scene_uniforms.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/shader_library.h"
 
 #include <emscripten/bind.h>
@@ -113,7 +113,8 @@ std::string compileLive() {
     try {
         if (!l.context) l.context = createHeadlessContext(Backend::Auto);
         Implementation impl{exercisesDir(), {}};
-        l.program = std::make_unique<ShaderProgram>(buildRayTracer(impl, shaderDefinesFor(l.scene, true)));
+        l.program = std::make_unique<ShaderProgram>(
+            buildRayTracer(impl, definesFor(l.scene, ImplementationFacts{}, Purpose::EveryView)));
         return "";
     } catch (const std::exception& e) {
         return e.what();

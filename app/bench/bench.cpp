@@ -11,7 +11,7 @@
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 
 #include <algorithm>
 #include <chrono>
@@ -114,22 +114,25 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("specialised", "modes", true, scene, true);
     }
     if (wanted(options, "layers")) {
-        // The specialised program with one of its layers taken out again, one
-        // at a time: what each costs or saves (docs/performance.md).
-        ShaderDefines all = specialisationDefines(scene);
-        for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
-            all[name] = value;
-        for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SHADOW_CONES", "RL_CAMERA_OUTSIDE",
-                                 "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID", "RL_SELECT_LIGHTS",
-                                 kSkyTilesDefine}) {
-            if (!all.count(name)) continue;
-            Variant* v = add(std::string("without:") + name, "layers", true, scene);
-            v->withoutDefines.push_back(name);
+        // The course's picture program with one of its layers taken out
+        // again, one at a time: what each costs or saves
+        // (docs/performance.md). The layers are the define table's rows
+        // marked BenchLayer::Without (render/define_table.h), in its order;
+        // a row that is a threshold's choice (benchWith) is measured on its
+        // other side too, so that the bench shows whether the threshold is
+        // right for this scene.
+        const ShaderDefines all =
+            definesFor(scene, implementationFacts(Implementation{solutionsDir(), {}}), Purpose::Picture);
+        std::vector<std::string> with;
+        for (const DefineRow& row : defineTable()) {
+            if (row.layer != BenchLayer::Without) continue;
+            if (all.count(row.name)) {
+                add(std::string("without:") + row.name, "layers", true, scene)->withoutDefines.push_back(row.name);
+            } else if (row.benchWith && row.benchWith(scene)) {
+                with.push_back(row.name);
+            }
         }
-        // The choice made by a count (the candidate loop): the other side too,
-        // so that the bench shows whether the threshold is right for this scene.
-        if (scene.spheres.size() <= 31 && !scene.lights.empty() && !all.count("RL_CANDIDATE_SHADOWS"))
-            add("with:RL_CANDIDATE_SHADOWS", "layers", true, scene)->withDefines["RL_CANDIDATE_SHADOWS"] = "1";
+        for (const std::string& name : with) add("with:" + name, "layers", true, scene)->withDefines[name] = "1";
     }
     if (wanted(options, "bounces")) {
         for (int b : {0, 1, 2, 3, 4}) {
@@ -140,7 +143,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         }
         // The early stop of the bounces on its own: its test costs a little in
         // every pixel and saves whole bounces where it fires.
-        if (specialisationDefines(scene).count("RL_BOUNCE_CUTOFF")) {
+        if (definesFor(scene, ImplementationFacts{}, Purpose::EveryView).count("RL_BOUNCE_CUTOFF")) {
             Variant* v = add("no-early-stop", "bounces", true, scene);
             v->withoutDefines.push_back("RL_BOUNCE_CUTOFF");
         }
@@ -257,11 +260,10 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     setTextbookUniforms(programs[i].program, v.scene);
                 } else {
                     Implementation impl{implDir, v.overrides};
-                    ShaderDefines defines = shaderDefinesFor(v.scene, v.specialised);
-                    if (v.picture && v.specialised)
-                        defines = renderProgramDefines(v.scene, impl);  // what `raylab render` compiles
-                    else if (v.picture)
-                        for (const auto& [name, value] : pictureOnlyDefines()) defines[name] = value;
+                    // The mode's purpose (modeName()); "specialised" is what `raylab render` compiles.
+                    const Purpose purpose = v.specialised ? (v.picture ? Purpose::Picture : Purpose::EveryView)
+                                                          : (v.picture ? Purpose::GenericPicture : Purpose::Generic);
+                    ShaderDefines defines = definesFor(v.scene, implementationFacts(impl), purpose);
                     for (const std::string& name : v.withoutDefines) defines.erase(name);
                     for (const auto& [name, value] : v.withDefines) defines[name] = value;
                     programs[i] = buildPictureProgram(impl, defines);

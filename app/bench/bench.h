@@ -26,8 +26,8 @@ namespace rl::bench {
 struct Variant {
     std::string name;        // "specialised", "generic", "bounces=0", "spp=4", "res=1/2", "model:beckmann", ...
     std::string sweep;       // the group it belongs to: "modes", "bounces", "spp", "resolution", "models", "strategies"
-    bool specialised = true; // shaderDefinesFor(scene, specialised)
-    bool picture = true;     // plus pictureOnlyDefines(): what `raylab render` adds for the picture
+    bool specialised = true; // the scene's structure compiled in (Purpose::EveryView, or Picture with `picture`)
+    bool picture = true;     // without the term views (Purpose::Picture, or GenericPicture when not specialised)
     bool textbook = false;   // the yardstick instead (bench/textbook.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
@@ -80,10 +80,11 @@ struct Options {
 const std::vector<std::string>& sweepNames();
 
 // The four whole-shader modes, from the flags of a Variant:
-//   generic           shaderDefinesFor(scene, false): `raylab render --generic`
-//   generic-picture   the same plus pictureOnlyDefines()
-//   specialised-full  shaderDefinesFor(scene, true): every view, as a live window compiles it
-//   specialised       shaderDefinesFor(scene, true) plus pictureOnlyDefines(): `raylab render`
+//   generic           Purpose::Generic: `raylab render --generic`
+//   generic-picture   Purpose::GenericPicture: the same without the term views
+//   specialised-full  Purpose::EveryView: every view, as `raylab render --view d` compiles it
+//   specialised       Purpose::Picture: `raylab render`
+// (render/define_table.h)
 // and the yardstick, "textbook" (bench/textbook.h), which has none of them.
 std::string modeName(bool specialised, bool picture);
 

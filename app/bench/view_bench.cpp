@@ -9,7 +9,7 @@
 #include "core/scene_io.h"
 #include "gl/context.h"
 #include "render/gl_renderer.h"
-#include "render/live_defines.h"
+#include "render/define_table.h"
 
 #include <algorithm>
 #include <chrono>
@@ -44,7 +44,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     const fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
     if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
     const Implementation impl{implDir, {}};
-    const bool started = traceStarted(impl);
+    const ImplementationFacts facts = implementationFacts(impl);
 
     auto context = createHeadlessContext(parseBackend(options.backend));
     Clock clock = options.clock;
@@ -65,9 +65,9 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.width = scene.render.width;
             e.row.height = scene.render.height;
             e.row.clock = clockName;
-            const ShaderDefines defines = e.row.program == "generic"
-                                              ? modelDefines(scene.model)
-                                              : liveViewDefines(scene, scene.model, view, started, fileDefines(impl));
+            const Purpose purpose =
+                e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic : Purpose::LiveView;
+            const ShaderDefines defines = definesFor(scene, facts, purpose);
             const auto start = std::chrono::steady_clock::now();
             e.program = buildRayTracer(impl, defines);
             e.row.compileMs = msSince(start);

@@ -10,7 +10,7 @@
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/loop_guard.h"
 #include "shader/portability.h"
 #include "shader/shader_library.h"
@@ -348,10 +348,10 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
         probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
         setPhase("compiling the ray tracer");
-        // Without the teaching views: a third less code for LLVM, the same
-        // picture. Not for 09, whose traceRay may still return NOT_STARTED
-        // for some rays, where the full program falls back to the first hit.
-        program = buildRayTracer(impl, exercise.number == 9 ? ShaderDefines{} : pictureOnlyDefines());
+        // Without the teaching views where the course's 09 traces: a third
+        // less code for LLVM, the same picture (Purpose::Probe, one program
+        // for every check scene, so none of them is passed).
+        program = buildRayTracer(impl, definesFor(Scene{}, implementationFacts(impl), Purpose::Probe));
     } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
         report.status = CheckStatus::CompileError;
         std::string text = e.what();

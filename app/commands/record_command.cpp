@@ -19,7 +19,7 @@
 #include "core/scene_io.h"
 #include "gl/context.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/shader_library.h"
 #include "view/caption_layer.h"
 #include "view/view_caption.h"
@@ -91,7 +91,7 @@ void runRecord(const RecordOptions& o) {
 
     auto context = createHeadlessContext(Backend::Auto);
     // The generic program: a sweep changes values that specialisation compiles in.
-    ShaderProgram program = buildRayTracer(impl, shaderDefinesFor(scene, false));
+    ShaderProgram program = buildRayTracer(impl, definesFor(scene, ImplementationFacts{}, Purpose::Generic));
     // The orbit is the live view's turntable (no roll): a drag of
     // height * degrees / 180 pixels turns by `degrees`.
     const Camera start = scene.camera;

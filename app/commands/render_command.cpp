@@ -10,7 +10,7 @@
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/shader_library.h"
 
 #include <cmath>
@@ -54,9 +54,9 @@ void runRender(const RenderOptions& o) {
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
         auto context = createHeadlessContext(backend);
         // The picture (or a bounce view): the program for this picture, from
-        // this camera (renderProgramDefines); the term views need every view.
-        ShaderDefines defines = shaderDefinesFor(scene, !o.generic);
-        if (!o.generic && (view == View::Final || view == View::Bounce)) defines = renderProgramDefines(scene, impl);
+        // this camera; the term views need every view (render/define_table.h).
+        const Purpose purpose = o.generic ? Purpose::Generic : isPictureView(view) ? Purpose::Picture : Purpose::EveryView;
+        const ShaderDefines defines = definesFor(scene, implementationFacts(impl), purpose);
         PictureProgram picture = buildPictureProgram(impl, defines);  // and its sky tiles' program
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 
 #include <vector>
 

@@ -16,8 +16,8 @@
 
 namespace rl {
 
-// What `raylab render` draws a picture with (renderProgramDefines(),
-// render/shader_config.h): the program and, where its defines allow it, the
+// What `raylab render` draws a picture with (definesFor(..., Purpose::Picture),
+// render/define_table.h): the program and, where its defines allow it, the
 // program for the tiles no camera ray can hit a sphere in (sky_tiles.h).
 struct PictureProgram {
     ShaderProgram program;

@@ -105,6 +105,8 @@ View parseView(const std::string& name, int& bounce) {
                 " (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
 }
 
+bool isPictureView(View view) { return view == View::Final || view == View::Bounce; }
+
 std::string viewName(View view, int bounce) {
     if (view == View::Bounce) return "bounce" + std::to_string(bounce);
     return kViewNames[int(view)];

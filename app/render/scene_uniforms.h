@@ -38,6 +38,8 @@ private:
 enum class View { Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce, FresnelNoV };
 View parseView(const std::string& name, int& bounce);  // "final", "d", ..., "bounce2", "fnv"; throws rl::Error
 std::string viewName(View view, int bounce = 0);
+// True for the views a picture program draws (final, bounce K); the term views need every view compiled in.
+bool isPictureView(View view);
 
 struct FrameSettings {
     glm::dmat4 cameraToWorld{1.0};

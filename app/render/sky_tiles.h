@@ -3,7 +3,7 @@
 // only masks lanes), so a pixel that sees only the background costs as much
 // as one that sees a sphere. The host, in double, finds the tiles where no
 // camera ray can reach any sphere, and `raylab render` draws them with a
-// program that has no sphere (skyProgramDefines(), render/shader_config.h):
+// program that has no sphere (skyProgramDefines(), render/define_table.h):
 // the same code, so the same pixels, at a fraction of the cost
 // (docs/performance.md, "Sky tiles").
 #pragma once

@@ -4,7 +4,7 @@
 // previous shader"), until a later rebuild succeeds.
 //
 // The live view needs a few programs of the same sources (one per set of
-// defines: the picture and the teaching views, render/live_defines.h), so
+// defines: the picture and the teaching views, render/define_table.h), so
 // each one built is kept until the sources change: switching views back
 // and forth compiles each program once.
 #pragma once
@@ -22,7 +22,7 @@ namespace rl {
 
 class LiveProgram {
 public:
-    // `defines`: the model variant's (render/shader_config.h modelDefines).
+    // `defines`: the model variant's (render/define_table.h).
     LiveProgram(Implementation impl, std::string label, ShaderDefines defines = {});
 
     // Selects the program of `defines`. Returns true when it is not built

@@ -7,8 +7,7 @@
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "course/exercise_registry.h"
-#include "render/live_defines.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "view/implementation_folder.h"
 #include "view/input_script.h"
 #include "view/overlays.h"
@@ -254,9 +253,8 @@ void ViewApp::applyReloads() {
 
 void ViewApp::rebuild(Side& side, bool initial) {
     LiveProgram& program = *side.program;
-    side.traceStarted = traceStarted(program.implementation());
-    side.files = fileDefines(program.implementation());
-    program.setDefines(definesFor(side));
+    side.facts = implementationFacts(program.implementation());
+    program.setDefines(liveDefines(side));
     const bool ok = program.rebuild();
     side.watcher->watch(program.files());
     if (!initial) ++reloads_;
@@ -273,19 +271,25 @@ void ViewApp::rebuild(Side& side, bool initial) {
     }
 }
 
-ShaderDefines ViewApp::definesFor(const Side& side) const {
+ShaderDefines ViewApp::liveDefines(const Side& side) const {
     // Specialised to the scene's structure, never to its values
-    // (render/live_defines.h): a slider re-uploads uniforms only; another
-    // sphere count, bounce limit, model or view kind selects another program.
-    const ShadingModel& model = side.model.value_or(scene_.scene().model);
-    if (options_.generic) return modelDefines(model);
-    return liveViewDefines(scene_.scene(), model, state_.view, side.traceStarted, side.files);
+    // (Purpose::LiveView, render/define_table.h): a slider re-uploads
+    // uniforms only; another sphere count, bounce limit, model or view kind
+    // selects another program. The term views draw with the generic
+    // program: with the structure's unrolled loops they were slower, not
+    // faster (0.56x to 0.67x of the generic one at 1280x720), and their
+    // first draw (llvmpipe's JIT) 4x longer (docs/performance.md).
+    const Purpose purpose = options_.generic || !isPictureView(state_.view) ? Purpose::Generic : Purpose::LiveView;
+    if (!side.model) return definesFor(scene_.scene(), side.facts, purpose);
+    Scene shown = scene_.scene();  // --compare-model: this side's model
+    shown.model = *side.model;
+    return definesFor(shown, side.facts, purpose);
 }
 
 void ViewApp::selectProgram(Side& side) {
     LiveProgram& program = *side.program;
     const ShaderProgram* before = program.program();
-    if (program.setDefines(definesFor(side))) {
+    if (program.setDefines(liveDefines(side))) {
         const bool ok = program.build();
         side.watcher->watch(program.files());
         if (ok) {

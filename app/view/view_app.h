@@ -9,6 +9,7 @@
 #include "camera/trackball.h"
 #include "view/caption_layer.h"
 #include "gl/context_glfw.h"
+#include "render/implementation_facts.h"
 #include "view/adaptive_resolution.h"
 #include "view/file_watcher.h"
 #include "view/frame_stats.h"
@@ -55,8 +56,7 @@ private:
         std::unique_ptr<LiveProgram> program;
         std::unique_ptr<FileWatcher> watcher;
         std::optional<ShadingModel> model;  // the model it shows (--compare-model); none: the scene's
-        bool traceStarted = false;  // exercise 09 is not the shipped stub (render/live_defines.h), at the last build
-        ShaderDefines files;        // fileDefines() of its files, at the last build
+        ImplementationFacts facts;          // of its files, at the last build (render/implementation_facts.h)
     };
 
     // -- the loop (view_app.cpp)
@@ -64,7 +64,7 @@ private:
     void waitOrPoll();
     void applyReloads();
     void rebuild(Side& side, bool initial);
-    ShaderDefines definesFor(const Side& side) const;  // the live program's defines (render/live_defines.h)
+    ShaderDefines liveDefines(const Side& side) const;  // the live program's defines (render/define_table.h)
     // Puts the program for the current view, structure and model in use,
     // compiling it only when it was not built since the sources changed.
     void selectProgram(Side& side);

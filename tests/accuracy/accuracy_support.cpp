@@ -10,7 +10,7 @@
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/source_assembler.h"
 
 #include <glm/common.hpp>
@@ -55,7 +55,7 @@ Implementation solutionsWith(const std::map<std::string, std::filesystem::path>&
 
 Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specialise) {
     ensureContext();
-    ShaderDefines defines = specialise ? renderProgramDefines(scene, impl) : shaderDefinesFor(scene, false);
+    ShaderDefines defines = definesFor(scene, implementationFacts(impl), specialise ? Purpose::Picture : Purpose::Generic);
     auto& cache = programCache();
     std::string key = programKey("raytracer", impl, defines);
     auto it = cache.find(key);

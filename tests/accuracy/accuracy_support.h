@@ -23,9 +23,9 @@ namespace rl::acc {
 Implementation solutionsWith(const std::map<std::string, std::filesystem::path>& overrides = {});
 
 // Renders with OpenGL: one headless context per process, programs cached by
-// implementation and defines: shaderDefinesFor(scene, false), the generic
-// program with the scene's model defines, or with `specialise` what `raylab
-// render` compiles (renderProgramDefines: structure, picture, positions).
+// implementation and defines: Purpose::Generic, the generic program with the
+// scene's model defines, or with `specialise` what `raylab render` compiles
+// (Purpose::Picture: structure, picture, positions; render/define_table.h).
 Rendering renderGlsl(const Scene& scene, const Implementation& impl = solutionsWith(), bool specialise = false);
 
 // The CPU reference's picture (double precision, the same model and the same

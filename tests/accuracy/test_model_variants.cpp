@@ -9,7 +9,7 @@
 #include "core/scene_io.h"
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +35,7 @@ TEST(ModelDefines, ReferenceModelCompilesNothingIn) {
     // variants existed, and every reference scene shares one program.
     EXPECT_TRUE(modelDefines(ShadingModel{}).empty());
     Scene scene = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
-    EXPECT_TRUE(shaderDefinesFor(scene, false).empty());
+    EXPECT_TRUE(definesFor(scene, ImplementationFacts{}, Purpose::Generic).empty());
 }
 
 TEST(ModelDefines, EachSwitchHasItsDefine) {

@@ -1,4 +1,4 @@
-// Shaders specialised to their scene (app/render/specialisation.cpp) and the
+// Shaders specialised to their scene (app/render/define_table.h) and the
 // early stop of the mirror bounces (app/render/bounce_cutoff.h,
 // shaders/trace.glsl): the specialised picture matches the CPU reference
 // within the core's budget and the generic shader, the defines follow the
@@ -12,7 +12,7 @@
 #include "render/gl_renderer.h"
 #include "core/file_io.h"
 #include "core/float_range.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "shader/shader_library.h"
 #include "support/test_support.h"
 
@@ -46,11 +46,15 @@ ShaderDefines with(ShaderDefines defines, const ShaderDefines& more) {
 // The three programs a scene can get: `raylab render` (specialised to the
 // structure, the picture and where things are), the live window's
 // (specialised, every view), `render --generic`.
-ShaderDefines renderDefines(const Scene& s, const fs::path& impl = solutionsDir()) {
-    return renderProgramDefines(s, Implementation{impl, {}});
+ShaderDefines pictureDefines(const Scene& s, const Implementation& impl) {
+    return definesFor(s, implementationFacts(impl), Purpose::Picture);
 }
-ShaderDefines fullDefines(const Scene& s) { return shaderDefinesFor(s, true); }
-ShaderDefines genericDefines(const Scene& s) { return shaderDefinesFor(s, false); }
+ShaderDefines renderDefines(const Scene& s, const fs::path& impl = solutionsDir()) {
+    return pictureDefines(s, Implementation{impl, {}});
+}
+ShaderDefines fullDefines(const Scene& s) { return definesFor(s, ImplementationFacts{}, Purpose::EveryView); }
+ShaderDefines genericDefines(const Scene& s) { return definesFor(s, ImplementationFacts{}, Purpose::Generic); }
+const ShaderDefines kPictureOnly{{"RL_PICTURE_ONLY", "1"}};
 
 Rendering renderWith(const Scene& scene, const ShaderDefines& defines, const fs::path& impl = solutionsDir()) {
     ensureContext();
@@ -216,7 +220,7 @@ TEST(Specialisation, SingleSphereShadowsWithoutShadowRaysSeenFromInside) {
 
 TEST(Specialisation, DefinesChangeOnlyWithStructure) {
     Scene base = load(scenesDir() / "lecture.json");
-    ShaderDefines defines = shaderDefinesFor(base, true);
+    ShaderDefines defines = fullDefines(base);
 
     // Values: every one of them leaves the program as it is.
     std::vector<std::pair<std::string, Scene>> values;
@@ -242,7 +246,7 @@ TEST(Specialisation, DefinesChangeOnlyWithStructure) {
     value("samples per pixel", [](Scene& s) { s.render.spp = 9; });
     value("size", [](Scene& s) { s.render.width = 33, s.render.height = 17; });
     value("camera", [](Scene& s) { s.camera.position = {4, 4, 4}, s.camera.fovYDegrees = 20; });
-    for (const auto& [what, s] : values) EXPECT_EQ(shaderDefinesFor(s, true), defines) << what;
+    for (const auto& [what, s] : values) EXPECT_EQ(fullDefines(s), defines) << what;
 
     // Structure: every one of these needs another program.
     std::vector<std::pair<std::string, Scene>> structures;
@@ -260,16 +264,16 @@ TEST(Specialisation, DefinesChangeOnlyWithStructure) {
     });
     structure("model", [](Scene& s) { s.model.distribution = DistributionModel::Beckmann; });
     structure("one sphere", [](Scene& s) { s.spheres.resize(1); });
-    for (const auto& [what, s] : structures) EXPECT_NE(shaderDefinesFor(s, true), defines) << what;
+    for (const auto& [what, s] : structures) EXPECT_NE(fullDefines(s), defines) << what;
 
     // The generic shader does not depend on the scene at all (reference model).
-    for (const auto& [what, s] : values) EXPECT_EQ(shaderDefinesFor(s, false), shaderDefinesFor(base, false)) << what;
+    for (const auto& [what, s] : values) EXPECT_EQ(genericDefines(s), genericDefines(base)) << what;
     for (const auto& [what, s] : structures)
-        if (s.model.isReference()) EXPECT_EQ(shaderDefinesFor(s, false), shaderDefinesFor(base, false)) << what;
+        if (s.model.isReference()) EXPECT_EQ(genericDefines(s), genericDefines(base)) << what;
 }
 
 TEST(Specialisation, CountsBounceLimitAndFeatures) {
-    ShaderDefines lecture = shaderDefinesFor(load(scenesDir() / "lecture.json"), true);
+    ShaderDefines lecture = fullDefines(load(scenesDir() / "lecture.json"));
     EXPECT_EQ(lecture["RL_SPHERE_COUNT"], "6");
     EXPECT_EQ(lecture["RL_LIGHT_COUNT"], "2");
     EXPECT_EQ(lecture["RL_MAX_BOUNCES"], "2");
@@ -279,24 +283,24 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
     EXPECT_FALSE(lecture.count("RL_PICTURE_ONLY"));  // only `raylab render` adds it, for the picture
 
     Scene dielectric = load(scenesDir() / "dielectric-row.json");
-    ShaderDefines d = shaderDefinesFor(dielectric, true);
+    ShaderDefines d = fullDefines(dielectric);
     EXPECT_TRUE(d.count("RL_NO_METALS"));
     EXPECT_EQ(d["RL_MAX_BOUNCES"], "0");
     EXPECT_FALSE(d.count("RL_BOUNCE_CUTOFF"));  // nothing to stop
 
     Scene deep = load(deepBounceScene());
-    EXPECT_TRUE(shaderDefinesFor(deep, true).count("RL_BOUNCE_CUTOFF"));  // eight bounces
+    EXPECT_TRUE(fullDefines(deep).count("RL_BOUNCE_CUTOFF"));  // eight bounces
 
     Scene variant = load(deepBounceScene());
     variant.model.diffuse = DiffuseModel::Burley;
-    EXPECT_FALSE(shaderDefinesFor(variant, true).count("RL_BOUNCE_CUTOFF"));  // the bound is for the reference model
-    EXPECT_TRUE(shaderDefinesFor(variant, true).count("RL_FD_BURLEY"));
-    EXPECT_TRUE(shaderDefinesFor(variant, false).count("RL_FD_BURLEY"));  // the model is in the generic shader too
+    EXPECT_FALSE(fullDefines(variant).count("RL_BOUNCE_CUTOFF"));  // the bound is for the reference model
+    EXPECT_TRUE(fullDefines(variant).count("RL_FD_BURLEY"));
+    EXPECT_TRUE(genericDefines(variant).count("RL_FD_BURLEY"));  // the model is in the generic shader too
 
-    EXPECT_EQ(pictureOnlyDefines().count("RL_PICTURE_ONLY"), 1u);
+    EXPECT_EQ(renderDefines(load(scenesDir() / "lecture.json")).count("RL_PICTURE_ONLY"), 1u);
 }
 
-// ---- what a program for one picture compiles in (pictureValueDefines) ---------------------
+// ---- what a program for one picture compiles in (Purpose::Picture) ------------------------
 
 // The residual form of makeHit is compiled in for the huge spheres near the
 // scene's anchor (the frame of every hit point, sceneAnchor()) only: the
@@ -306,19 +310,19 @@ TEST(Specialisation, CountsBounceLimitAndFeatures) {
 // scene's, not the camera's: the ground seen from afar keeps it; the small
 // spheres lifted far above the ground take the anchor away from it.
 TEST(PictureValues, ResidualFormOnlyForHugeSpheresNearTheAnchor) {
-    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "lecture.json")).at("RL_RESIDUAL_SPHERES"), "1");
-    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "metal-row.json")).at("RL_RESIDUAL_SPHERES"), "0");
-    EXPECT_EQ(pictureValueDefines(load(scenesDir() / "hard" / "camera-inside.json")).at("RL_RESIDUAL_SPHERES"), "0");
+    EXPECT_EQ(renderDefines(load(scenesDir() / "lecture.json")).at("RL_RESIDUAL_SPHERES"), "1");
+    EXPECT_EQ(renderDefines(load(scenesDir() / "metal-row.json")).at("RL_RESIDUAL_SPHERES"), "0");
+    EXPECT_EQ(renderDefines(load(scenesDir() / "hard" / "camera-inside.json")).at("RL_RESIDUAL_SPHERES"), "0");
     Scene lecture = load(scenesDir() / "lecture.json");
     lecture.spheres[0].radius = 1e5;
     lecture.spheres[0].center.y = -1e5;
-    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
+    EXPECT_EQ(renderDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
     lecture = load(scenesDir() / "lecture.json");
     lecture.camera.position = {0, 2000, 3000};
     lecture.camera.target = {0, 0, -3};
-    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
+    EXPECT_EQ(renderDefines(lecture).at("RL_RESIDUAL_SPHERES"), "1");
     for (std::size_t i = 1; i < lecture.spheres.size(); ++i) lecture.spheres[i].center.y += 2000;
-    EXPECT_EQ(pictureValueDefines(lecture).at("RL_RESIDUAL_SPHERES"), "0");
+    EXPECT_EQ(renderDefines(lecture).at("RL_RESIDUAL_SPHERES"), "0");
 }
 
 // The camera's position in the anchor frame is compiled in as the float32 the
@@ -334,7 +338,7 @@ TEST(PictureValues, CameraIsCompiledInRelativeToTheAnchor) {
     char expected[128];
     std::snprintf(expected, sizeof expected, "vec3(%.9g, %.9g, %.1f)", double(e.x), double(e.y), double(e.z));
     ASSERT_EQ(e.z, 5.0f);  // an integer value: written 5.0, a GLSL float
-    EXPECT_EQ(pictureValueDefines(lecture).at("RL_CAMERA_FROM_ANCHOR"), expected);
+    EXPECT_EQ(renderDefines(lecture).at("RL_CAMERA_FROM_ANCHOR"), expected);
 }
 
 // The stub tests are compiled out only when no exercise file can return
@@ -345,7 +349,7 @@ TEST(PictureValues, CameraIsCompiledInRelativeToTheAnchor) {
 // picture program with no sphere.
 TEST(PictureValues, SkyTilesOnlyWithTheCoursesCameraAndIntersection) {
     Scene lecture = load(scenesDir() / "lecture.json");
-    const ShaderDefines course = renderProgramDefines(lecture, Implementation{solutionsDir(), {}});
+    const ShaderDefines course = pictureDefines(lecture, Implementation{solutionsDir(), {}});
     ASSERT_EQ(course.count(kSkyTilesDefine), 1u);
     const std::optional<ShaderDefines> sky = skyProgramDefines(course);
     ASSERT_TRUE(sky.has_value());
@@ -354,7 +358,7 @@ TEST(PictureValues, SkyTilesOnlyWithTheCoursesCameraAndIntersection) {
     for (const char* own : {"01-camera--aspect-on-y.glsl", "02-intersect--sign-of-b.glsl"}) {
         std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
         const ShaderDefines student =
-            renderProgramDefines(lecture, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
+            pictureDefines(lecture, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
         EXPECT_EQ(student.count(kSkyTilesDefine), 0u) << own;
         EXPECT_FALSE(skyProgramDefines(student).has_value()) << own;
     }
@@ -362,25 +366,23 @@ TEST(PictureValues, SkyTilesOnlyWithTheCoursesCameraAndIntersection) {
 
 // code, no; a file that names it in a comment only, yes.
 TEST(PictureValues, StubTestsDroppedOnlyWhenEveryExerciseIsWritten) {
-    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {}}).count("RL_EXERCISES_FINISHED"), 1u);
-    EXPECT_TRUE(finishedExerciseDefines(Implementation{exercisesDir(), {}}).empty());
+    EXPECT_TRUE(implementationFacts(Implementation{solutionsDir(), {}}).exercisesFinished);
+    EXPECT_FALSE(implementationFacts(Implementation{exercisesDir(), {}}).exercisesFinished);
     fs::path dir = test::freshTempDir("finished_exercises");
     std::string file = readRegularFile(solutionsDir() / "07-fresnel.glsl", 1 << 20);
     writeFileAtomic(dir / "code.glsl", file + "\nfloat unfinishedHelper() { return NOT_STARTED; }\n");
     writeFileAtomic(dir / "comment.glsl", file + "\n// returned NOT_STARTED until it was written\n/* NOT_STARTED */\n");
-    EXPECT_TRUE(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "code.glsl"}}}).empty());
-    EXPECT_EQ(finishedExerciseDefines(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "comment.glsl"}}})
-                  .count("RL_EXERCISES_FINISHED"),
-              1u);
+    EXPECT_FALSE(implementationFacts(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "code.glsl"}}}).exercisesFinished);
+    EXPECT_TRUE(implementationFacts(Implementation{solutionsDir(), {{"07-fresnel.glsl", dir / "comment.glsl"}}}).exercisesFinished);
     // And `raylab render`'s program has it with the solutions, not with a stub left.
     Scene lecture = load(scenesDir() / "lecture.json");
     EXPECT_EQ(renderDefines(lecture).count("RL_EXERCISES_FINISHED"), 1u);
     EXPECT_EQ(renderDefines(lecture).count("RL_SEGMENT_TEST"), 1u);
-    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"02-intersect.glsl",
+    EXPECT_EQ(pictureDefines(lecture, Implementation{solutionsDir(), {{"02-intersect.glsl",
                                                                               exercisesDir() / "02-intersect.glsl"}}})
                   .count("RL_SEGMENT_TEST"),
               0u);  // a student's own intersectSphere() stays in every ray
-    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
+    EXPECT_EQ(pictureDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
                   .count("RL_EXERCISES_FINISHED"),
               0u);
 }
@@ -398,16 +400,16 @@ TEST(PictureValues, LightsBySelectOnlyWithUnrolledShadowsAndNoStub) {
     writeFileAtomic(dir / "04-shadows.glsl",
                     readRegularFile(solutionsDir() / "04-shadows.glsl", 1 << 20) + "\n// written by a student\n");
     const Implementation ownShadows{solutionsDir(), {{"04-shadows.glsl", dir / "04-shadows.glsl"}}};
-    EXPECT_EQ(renderProgramDefines(lecture, ownShadows).count("RL_SELECT_LIGHTS"), 1u);
-    EXPECT_EQ(renderProgramDefines(lecture, ownShadows).count("RL_SHADOW_CONES"), 0u);
+    EXPECT_EQ(pictureDefines(lecture, ownShadows).count("RL_SELECT_LIGHTS"), 1u);
+    EXPECT_EQ(pictureDefines(lecture, ownShadows).count("RL_SHADOW_CONES"), 0u);
     EXPECT_EQ(renderDefines(lecture).count("RL_SELECT_LIGHTS"), 0u);
     EXPECT_EQ(renderDefines(lecture).count("RL_SHADOW_CONES"), 1u);
-    EXPECT_EQ(renderProgramDefines(random30, ownShadows).count("RL_SELECT_LIGHTS"), 0u);
-    EXPECT_EQ(renderProgramDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
+    EXPECT_EQ(pictureDefines(random30, ownShadows).count("RL_SELECT_LIGHTS"), 0u);
+    EXPECT_EQ(pictureDefines(lecture, Implementation{solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}})
                   .count("RL_SELECT_LIGHTS"),
               0u);
     for (const Scene& s : {sized(lecture), sized(load(sourceRoot() / "tests" / "bench" / "course-row-ground.json"))}) {
-        ShaderDefines select = renderProgramDefines(s, ownShadows);
+        ShaderDefines select = pictureDefines(s, ownShadows);
         ASSERT_EQ(select.count("RL_SELECT_LIGHTS"), 1u);
         ShaderDefines branchy = select;
         branchy.erase("RL_SELECT_LIGHTS");
@@ -472,7 +474,7 @@ TEST(PictureValues, OutsideCameraAndConesOnlyWhereNoRayStartsInside) {
     for (const char* own : {"02-intersect--far-root-first.glsl", "04-shadows--offset-into-surface.glsl",
                             "09-reflections--full-strength-bounces.glsl"}) {
         std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
-        const ShaderDefines student = renderProgramDefines(
+        const ShaderDefines student = pictureDefines(
             random30, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
         EXPECT_EQ(student.count("RL_CAMERA_OUTSIDE"), 0u) << own;
         EXPECT_EQ(student.count("RL_SHADOW_CONES"), file == "09-reflections.glsl" ? 1u : 0u) << own;
@@ -508,7 +510,7 @@ TEST(PictureValues, BenchScenesRenderAsWithoutThePictureValues) {
         Scene s = sized(load(sourceRoot() / "tests" / "bench" / name));
         Rendering picture = renderWith(s, renderDefines(s));
         expectWithinBudget(picture, ref::renderCpu(s), std::string(name) + ": render vs CPU reference");
-        expectWithinBudget(picture, renderWith(s, with(fullDefines(s), pictureOnlyDefines())),
+        expectWithinBudget(picture, renderWith(s, with(fullDefines(s), kPictureOnly)),
                            std::string(name) + ": render vs structure and picture only");
     }
 }

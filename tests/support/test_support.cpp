@@ -2,7 +2,7 @@
 
 #include "gl/context.h"
 #include "render/gl_renderer.h"
-#include "render/shader_config.h"
+#include "render/define_table.h"
 #include "core/paths.h"
 #include "shader/shader_library.h"
 
@@ -59,7 +59,7 @@ Rendering renderGl(const Scene& scene, const std::string& backend) {
         contexts.clear();  // only one context may be current; drop the other backend's
         contexts[backend] = createHeadlessContext(parseBackend(backend));
     }
-    ShaderProgram program = buildRayTracer(Implementation{solutionsDir(), {}}, shaderDefinesFor(scene, true));
+    ShaderProgram program = buildRayTracer(Implementation{solutionsDir(), {}}, definesFor(scene, ImplementationFacts{}, Purpose::EveryView));
     return renderOnce(program, scene, frameFromScene(scene));
 }
 

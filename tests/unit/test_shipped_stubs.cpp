@@ -3,7 +3,7 @@
 // in place, so comparing with it would call every edited file a stub.
 #include "course/exercise_registry.h"
 #include "core/paths.h"
-#include "render/shader_config.h"
+#include "render/implementation_facts.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -131,13 +131,13 @@ TEST(ShippedStubs, ARebuildAfterEditingKeepsTheShippedStub) {
 }
 
 // A picture program trusts traceRay() only once exercise 09 is written
-// (render/shader_config.h): the shipped stub keeps the first-hit fallback.
+// (render/define_table.h): the shipped stub keeps the first-hit fallback.
 TEST(ShippedStubs, TraceStartedOnlyWhenExercise09IsNoLongerTheStub) {
-    EXPECT_TRUE(traceStarted(Implementation{solutionsDir(), {}}));
+    EXPECT_TRUE(implementationFacts(Implementation{solutionsDir(), {}}).traceStarted);
     fs::path dir = test::freshTempDir("stub_trace");
     const ExerciseInfo& reflections = findExercise("9");
     test::writeText(dir / reflections.file(), stubText(reflections));
-    EXPECT_FALSE(traceStarted(Implementation{dir, {}}));
+    EXPECT_FALSE(implementationFacts(Implementation{dir, {}}).traceStarted);
     test::writeText(dir / reflections.file(), test::readText(solutionsDir() / reflections.file()));
-    EXPECT_TRUE(traceStarted(Implementation{dir, {}}));
+    EXPECT_TRUE(implementationFacts(Implementation{dir, {}}).traceStarted);
 }

@@ -6,7 +6,8 @@
 #include "core/error.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "render/live_defines.h"
+#include "render/define_table.h"
+#include "render/scene_uniforms.h"
 #include "view/adaptive_resolution.h"
 #include "view/file_watcher.h"
 #include "view/implementation_folder.h"
@@ -180,7 +181,11 @@ TEST(AdaptiveResolution, TheOverheadOutsideTheRenderShrinksTheRenderBudget) {
 
 TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
     const Scene lecture = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
-    auto defines = [](const Scene& s, View v = View::Final) { return liveViewDefines(s, s.model, v, true); };
+    ImplementationFacts started;  // exercise 09 written, nothing else known about the files
+    started.traceStarted = true;
+    auto defines = [&](const Scene& s, View v = View::Final) {
+        return definesFor(s, started, isPictureView(v) ? Purpose::LiveView : Purpose::Generic);
+    };
     const ShaderDefines base = defines(lecture);
     EXPECT_EQ(base.at("RL_SPHERE_COUNT"), std::to_string(lecture.spheres.size()));
     EXPECT_EQ(base.at("RL_MAX_BOUNCES"), std::to_string(lecture.render.maxBounces));
@@ -202,7 +207,8 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
     values.render.ambient = 0.2;
     values.camera.position.z += 3.0;
     EXPECT_EQ(defines(values), base);
-    EXPECT_NE(specialisationDefines(values), specialisationDefines(lecture)) << "the case must be a hard one";
+    EXPECT_NE(definesFor(values, started, Purpose::EveryView), definesFor(lecture, started, Purpose::EveryView))
+        << "the case must be a hard one";
 
     // Structure: another program.
     Scene more = lecture;
@@ -228,7 +234,7 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
     // The teaching term views use the generic program; the bounce views are pictures.
     EXPECT_EQ(defines(lecture, View::D), modelDefines(lecture.model));
     EXPECT_EQ(defines(lecture, View::Bounce), base);
-    EXPECT_EQ(liveViewDefines(lecture, lecture.model, View::Final, false), modelDefines(lecture.model))
+    EXPECT_EQ(definesFor(lecture, ImplementationFacts{}, Purpose::LiveView), modelDefines(lecture.model))
         << "exercise 09 still the stub: the generic program with its first-hit fallback";
 }
 
@@ -236,18 +242,18 @@ TEST(LiveDefines, ValuesNeverChangeTheProgramStructureDoes) {
 // `raylab render`'s: the solutions are finished and their 02 is the course's.
 TEST(LiveDefines, TheFilesDefinesReachThePictureProgram) {
     const Scene lecture = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
-    const ShaderDefines files = fileDefines(Implementation{solutionsDir(), {}});
-    EXPECT_EQ(files.count("RL_EXERCISES_FINISHED"), 1u);
-    EXPECT_EQ(files.count("RL_SEGMENT_TEST"), 1u);
-    const ShaderDefines live = liveViewDefines(lecture, lecture.model, View::Final, true, files);
+    const ImplementationFacts files = implementationFacts(Implementation{solutionsDir(), {}});
+    EXPECT_TRUE(files.exercisesFinished);
+    EXPECT_TRUE(files.courseFile("02-intersect.glsl"));
+    const ShaderDefines live = definesFor(lecture, files, Purpose::LiveView);
     EXPECT_EQ(live.count("RL_EXERCISES_FINISHED"), 1u);
     EXPECT_EQ(live.count("RL_SEGMENT_TEST"), 1u);
     EXPECT_EQ(live.count("RL_CANDIDATE_SHADOWS"), 0u) << "six spheres: below the candidate loop's threshold";
     Scene many = lecture;
     while (many.spheres.size() < 14) many.spheres.push_back(lecture.spheres[1]);
-    EXPECT_EQ(liveViewDefines(many, many.model, View::Final, true, files).count("RL_CANDIDATE_SHADOWS"), 1u);
+    EXPECT_EQ(definesFor(many, files, Purpose::LiveView).count("RL_CANDIDATE_SHADOWS"), 1u);
     // ...and never to the teaching views' generic program.
-    EXPECT_EQ(liveViewDefines(lecture, lecture.model, View::D, true, files), modelDefines(lecture.model));
+    EXPECT_EQ(definesFor(lecture, files, Purpose::Generic), modelDefines(lecture.model));
 }
 
 // The command docs/performance.md gives for the live view's program, run as

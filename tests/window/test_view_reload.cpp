@@ -179,7 +179,7 @@ TEST_F(ReloadTest, CtrlSSavesTheSceneWithTheTrackballCamera) {
 }
 
 // The live program is specialised to the scene's structure only
-// (render/live_defines.h): a value edit re-uploads uniforms, a structural
+// (Purpose::LiveView, render/define_table.h): a value edit re-uploads uniforms, a structural
 // edit builds another program. Every metallic set to 0 is the hard case: the
 // fully specialised program of `raylab render` compiles that in
 // (RL_NO_METALS), the live one must not.

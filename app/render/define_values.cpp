@@ -1,0 +1,112 @@
+#include "render/define_values.h"
+
+#include "core/float_range.h"
+#include "render/shadow_cones.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rl {
+
+namespace {
+
+// Float32's unit roundoff and Higham's gamma_k, as in shaders/error_bounds.glsl.
+constexpr double kUnitRoundoff = 5.9604644775390625e-8;
+double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
+
+// Whether makeHit()'s residual form can pay for some point of the sphere
+// (shaders/error_bounds.glsl: it is taken where its bound is below the centre
+// form's, gamma_12 (max|c_i| + 2r)), the sphere at `centre` relative to the
+// scene's anchor (the origin of makeHit()'s coordinates, scene units). Over
+// the points p of the sphere, with d = |c|:
+//   residual bound >= gamma_10 (|C| + 2 max(d (d - r), 0) + (d - r)^2) / 2r
+// (|p|.|c| >= p.c >= d (d - r), |p| >= |d - r|), and max|c_i| <= d. Both
+// bounds are sound; the residual form is compiled in only where it can be
+// 4 times smaller: a huge sphere near the anchor (a ground of radius 1000
+// under the spheres: 4000 times), not a small sphere beside the anchor (at
+// most 2.4 times, a few u r either way).
+bool residualFormCandidate(glm::dvec3 centre, double radius) {
+    double d = glm::length(centre);
+    double cAnchor = (d - radius) * (d + radius);
+    double residualAtBest = roundingGamma(10) *
+                            (std::abs(cAnchor) + 2.0 * std::max(d * (d - radius), 0.0) + (d - radius) * (d - radius)) /
+                            (2.0 * radius);
+    return 4.0 * residualAtBest < roundingGamma(12) * (d + 2.0 * radius);
+}
+
+// A GLSL float literal that reads back as exactly x (9 significant digits
+// round-trip a float32).
+std::string floatLiteral(float x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(x));
+    std::string literal = text;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    return literal;
+}
+
+}  // namespace
+
+std::optional<std::string> refineSphereMask(const Scene& scene) {
+    long mask = 0;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (refinesRoots(scene, i)) {
+            if (i >= 31) return std::nullopt;
+            mask |= 1L << i;
+        }
+    return std::to_string(mask);
+}
+
+std::optional<std::string> residualSphereMask(const Scene& scene) {
+    const std::size_t spheres = scene.spheres.size();
+    if (spheres == 0 || spheres > 31) return std::nullopt;  // the mask is one int
+    const glm::dvec3 anchor = sceneAnchor(scene);          // makeHit() works in the anchor's frame
+    long residual = 0;
+    for (std::size_t i = 0; i < spheres; ++i)
+        if (residualFormCandidate(scene.spheres[i].center - anchor, scene.spheres[i].radius)) residual |= 1L << i;
+    return std::to_string(residual);
+}
+
+std::string sampleGrid(const Scene& scene) {
+    return std::to_string(std::max(1, int(std::lround(std::sqrt(double(scene.render.spp))))));
+}
+
+std::string cameraFromAnchor(const Scene& scene) {
+    const glm::vec3 camera = shaderPosition(scene.camera.position, sceneAnchor(scene),
+                                            shaderUnits(scene, scene.camera.position).unit);
+    return "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " + floatLiteral(camera.z) + ")";
+}
+
+// The shader holds the camera and the centres relative to the anchor, each
+// rounded by u of its distance from it; 1e-6 of those distances is 16 times that.
+bool cameraOutsideEverySphere(const Scene& scene) {
+    const glm::dvec3 anchor = sceneAnchor(scene), eye = scene.camera.position;
+    return std::all_of(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) {
+        double blur = 1e-6 * (glm::length(eye - anchor) + glm::length(s.center - anchor) + s.radius);
+        return glm::length(eye - s.center) - s.radius > blur;
+    });
+}
+
+std::string shadowConeAxes(const Scene& scene) {
+    std::string axes;
+    for (const ShadowCone& c : shadowCones(scene))
+        axes += (axes.empty() ? "" : ", ") + ("vec4(" + floatLiteral(c.axis.x) + ", " + floatLiteral(c.axis.y) + ", " +
+                                              floatLiteral(c.axis.z) + ", " + floatLiteral(c.minCos) + ")");
+    return "vec4[](" + axes + ")";
+}
+
+std::string shadowConeNearest(const Scene& scene) {
+    std::string nearest;
+    for (const ShadowCone& c : shadowCones(scene)) nearest += (nearest.empty() ? "" : ", ") + floatLiteral(c.nearest);
+    return "float[](" + nearest + ")";
+}
+
+std::string forEachIndex(std::size_t count) {
+    std::string out;
+    for (std::size_t i = 0; i < count; ++i) out += " X(" + std::to_string(i) + ")";
+    return out;
+}
+
+}  // namespace rl

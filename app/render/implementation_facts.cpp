@@ -1,0 +1,82 @@
+#include "render/implementation_facts.h"
+
+#include "course/exercise_registry.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/paths.h"
+
+#include <cctype>
+#include <string_view>
+
+namespace rl {
+
+namespace {
+
+constexpr std::uintmax_t kLargestExercise = 1 << 20;  // a larger file is read by the compiler, not here
+
+// GLSL source of a scan: comments dropped (// to the end of the line, /* */).
+std::string withoutComments(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text.compare(i, 2, "//") == 0) {
+            while (i < text.size() && text[i] != '\n') ++i;
+            out += '\n';
+        } else if (text.compare(i, 2, "/*") == 0) {
+            std::size_t end = text.find("*/", i + 2);
+            i = end == std::string_view::npos ? text.size() : end + 1;
+            out += ' ';
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
+}
+
+bool namesIdentifier(const std::string& code, const std::string& name) {
+    auto isWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+        bool before = at > 0 && isWord(code[at - 1]);
+        bool after = at + name.size() < code.size() && isWord(code[at + name.size()]);
+        if (!before && !after) return true;
+    }
+    return false;
+}
+
+bool finished(const Implementation& impl) {
+    for (const ExerciseInfo& exercise : allExercises()) {
+        std::filesystem::path file = impl.fileFor(exercise.file());
+        if (isUnchangedStub(file, exercise)) return false;
+        try {
+            if (namesIdentifier(withoutComments(readRegularFile(file, kLargestExercise)), "NOT_STARTED")) return false;
+        } catch (const Error&) {
+            return false;  // unreadable: the compiler says why
+        }
+    }
+    return true;
+}
+
+// Whether two implementations have the same text for an exercise file (white
+// space aside, as isUnchangedStub() compares).
+bool sameExercise(const Implementation& a, const Implementation& b, const std::string& file) {
+    try {
+        return normalisedGlsl(readRegularFile(a.fileFor(file), kLargestExercise)) ==
+               normalisedGlsl(readRegularFile(b.fileFor(file), kLargestExercise));
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+}  // namespace
+
+ImplementationFacts implementationFacts(const Implementation& impl) {
+    ImplementationFacts facts;
+    facts.exercisesFinished = finished(impl);
+    const ExerciseInfo& reflections = findExercise("9");
+    facts.traceStarted = !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+    const Implementation course{solutionsDir(), {}};
+    for (const ExerciseInfo& exercise : allExercises())
+        if (sameExercise(impl, course, exercise.file())) facts.courseFiles.insert(exercise.file());
+    return facts;
+}
+
+}  // namespace rl
