@@ -117,7 +117,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         // The specialised program with one of its layers taken out again, one
         // at a time: what each costs or saves (docs/performance.md).
         ShaderDefines all = specialisationDefines(scene);
-        for (const auto& [name, value] : renderProgramDefines(scene, Implementation{solutionsDir(), {}}))
+        for (const auto& [name, value] : renderProgramDefines(scene, Implementation{defaultImplementationDir(), {}}))
             all[name] = value;
         for (const char* name : {"RL_EXERCISES_FINISHED", "RL_CANDIDATE_SHADOWS", "RL_SHADOW_CONES", "RL_CAMERA_OUTSIDE",
                                  "RL_SEGMENT_TEST", "RL_RESIDUAL_SPHERES", "RL_SAMPLE_GRID", "RL_SELECT_LIGHTS",
@@ -351,7 +351,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
 
     std::vector<std::string> files = options.scenes;
     if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
-    fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
+    fs::path implDir = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
     if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
 
     // Load every scene first: a typo in the last file fails before minutes of work.

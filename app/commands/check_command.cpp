@@ -4,6 +4,11 @@
 // folder do not compile together as `render` compiles them, one "all files"
 // line with the error. Exit 0 only when every selected exercise passes and
 // the files compile together.
+//
+// In a student edition (no solutions/): first the probes of all ten
+// exercises, then the image step only once all ten pass them; until then
+// PASS rests on the probes and says "images waiting for exercise NN"
+// (checks/checker.h, checkWithOwnFiles(); docs/decisions.md, "A student edition").
 #include "commands/commands.h"
 
 #include "checks/checker.h"
@@ -15,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <map>
 #include <chrono>
 #include <optional>
 #include <filesystem>
@@ -22,17 +28,6 @@
 
 namespace rl {
 namespace {
-
-struct CheckCommandOptions {
-    std::string impl;
-    std::vector<std::string> exercises;
-    std::string json;
-    std::string output = "check-output";
-    std::string file;
-    double timeout = 60;
-    std::string backend = "auto";
-    bool verbose = false;
-};
 
 int runCheck(const CheckCommandOptions& o) {
     auto start = std::chrono::steady_clock::now();
@@ -61,11 +56,16 @@ int runCheck(const CheckCommandOptions& o) {
     std::vector<CheckScene> scenes = makeCheckScenes();
     nlohmann::json all = nlohmann::json::array();
     int passed = 0;
-    for (const ExerciseInfo& exercise : selected) {
-        ExerciseReport report = checkExercise(exercise, options, scenes);
+    auto print = [&](const ExerciseReport& report) {
         std::cout << formatReport(report, o.verbose) << std::flush;
         if (report.status == CheckStatus::Pass) ++passed;
         all.push_back(toJson(report));
+    };
+    if (hasSolutions()) {
+        for (const ExerciseInfo& exercise : selected) print(checkExercise(exercise, options, scenes));
+    } else {
+        const std::map<int, ExerciseReport> firstPass = checkProbesOfAll(options, scenes);
+        for (const ExerciseInfo& exercise : selected) print(checkWithOwnFiles(exercise, options, scenes, firstPass));
     }
     // Then the ten files together, as render compiles them: when some
     // exercise got as far as PASS or FAIL and none failed to build (its error
