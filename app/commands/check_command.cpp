@@ -20,14 +20,25 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <map>
 #include <chrono>
 #include <optional>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 namespace rl {
 namespace {
+
+struct CheckCommandOptions {
+    std::string impl;
+    std::vector<std::string> exercises;
+    std::string json;
+    std::string output = "check-output";
+    std::string file;
+    double timeout = 60;
+    std::string backend = "auto";
+    bool verbose = false;
+};
 
 int runCheck(const CheckCommandOptions& o) {
     auto start = std::chrono::steady_clock::now();
