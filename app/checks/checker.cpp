@@ -667,12 +667,11 @@ Implementation checkCompanions(const ExerciseInfo& exercise, const fs::path& fil
     }
     own.overrides[exercise.file()] = file;
     if (!options.probesOnly) return own;
-    // The probes: the student's files of the exercises this one calls, the shipped stubs for the rest.
-    const std::set<int> called = exercisesCalled(exercise, own);
+    // The probes: the student's files in ownFiles, the shipped stubs for the rest.
     Implementation probes{shippedStubFolder(), {{exercise.file(), file}}};
-    for (int number : called) {
+    for (int number : options.ownFiles) {
         const std::string name = findExercise(std::to_string(number)).file();
-        probes.overrides[name] = own.fileFor(name);
+        if (number != exercise.number) probes.overrides[name] = own.fileFor(name);
     }
     return probes;
 }
@@ -680,8 +679,12 @@ Implementation checkCompanions(const ExerciseInfo& exercise, const fs::path& fil
 std::map<int, ExerciseReport> checkProbesOfAll(const CheckOptions& options, const std::vector<CheckScene>& scenes) {
     CheckOptions probesOnly = options;
     probesOnly.probesOnly = true;
+    probesOnly.ownFiles.clear();
     std::map<int, ExerciseReport> first;
-    for (const ExerciseInfo& e : allExercises()) first[e.number] = checkExercise(e, probesOnly, scenes);
+    for (const ExerciseInfo& e : allExercises()) {  // the teaching order: each builds on the ones before it
+        first[e.number] = checkExercise(e, probesOnly, scenes);
+        if (first[e.number].status == CheckStatus::Pass) probesOnly.ownFiles.insert(e.number);
+    }
     return first;
 }
 
@@ -703,15 +706,20 @@ ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOption
         return checkExercise(exercise, options, scenes);
     }
     if (report.status == CheckStatus::Fail) {
-        // A failure may come from an exercise this one calls: name the first of them that fails too.
+        // A failure may come from an exercise this one builds on, which the
+        // stub stood in for: name the first it calls, else the first earlier one.
         auto it = options.fileOverride.find(exercise.number);
         const fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
+        std::string waiting;
         for (int number : exercisesCalled(exercise, checkCompanions(exercise, file, options)))
-            if (!passes(number)) {
-                report.hint = "it calls exercise " + findExercise(std::to_string(number)).id +
-                              ", whose probes do not pass yet: make that one pass first (" + report.hint + ")";
-                break;
-            }
+            if (!passes(number) && waiting.empty())
+                waiting = "it calls exercise " + findExercise(std::to_string(number)).id;
+        for (const ExerciseInfo& e : allExercises())
+            if (e.number < exercise.number && !passes(e.number) && waiting.empty())
+                waiting = "it may build on exercise " + e.id;
+        if (!waiting.empty())
+            report.hint = waiting + ", whose probes do not pass yet (its stub stood in for it): make that one pass " +
+                          "first; " + report.hint;
     }
     return report;
 }

@@ -80,8 +80,10 @@ struct CheckOptions {
     // of implDir/<id>.glsl (mutant tests; grading of nested folders).
     std::map<int, std::filesystem::path> fileOverride;
     // The probes alone, no image step (a student edition's first pass):
-    // PASS when every probe passes.
+    // PASS when every probe passes. The other exercises are then the shipped
+    // stubs, but for those in ownFiles: the student's (checkCompanions()).
     bool probesOnly = false;
+    std::set<int> ownFiles;
 };
 
 // The check scenes and their CPU references, computed once and shared.
@@ -122,20 +124,22 @@ std::optional<ExerciseReport> checkTogether(const CheckOptions& options);
 // solutions where the repository has them. In a student edition the
 // student's own files (options.implDir with options.fileOverride; a missing
 // one the shipped stub); with options.probesOnly only those of the exercises
-// `file` calls (by the function names their stubs declare, transitively), the
-// shipped stubs for every other, so that a mistake in an exercise this one
-// does not use cannot fail it.
+// in options.ownFiles (the earlier ones that pass their probes), the shipped
+// stubs for every other, so that an exercise that does not pass yet (a
+// compile error, a runaway loop, wrong numbers) cannot fail this one.
 Implementation checkCompanions(const ExerciseInfo& exercise, const std::filesystem::path& file,
                                const CheckOptions& options);
 
 // A student edition's `raylab check` (no solutions/), in two passes. First
-// the probes of all ten exercises (options.probesOnly; checkCompanions()).
+// the probes of all ten exercises in the teaching order, each beside the
+// student's files of the earlier ones that pass theirs (options.probesOnly,
+// options.ownFiles; checkCompanions()).
 std::map<int, ExerciseReport> checkProbesOfAll(const CheckOptions& options, const std::vector<CheckScene>& scenes);
 // Then each exercise's verdict: when every exercise passes its probes, the
 // full check with the student's own files (its image step included);
 // otherwise the first pass's report, a PASS saying which exercise its image
 // step waits for (imagesWaitingFor), a FAIL whose hint names the exercise it
-// calls that fails too. A check scene runs every exercise: with any of them
+// calls (or the earlier one) that does not pass yet. A check scene runs every exercise: with any of them
 // wrong, its picture says nothing about the one under check.
 ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOptions& options,
                                  const std::vector<CheckScene>& scenes, const std::map<int, ExerciseReport>& firstPass);
