@@ -7,7 +7,7 @@
 //      and the solutions for all others, against the CPU reference.
 // A student edition (scripts/student-edition.sh) has no solutions/: there the
 // files beside the one under check are the student's own (missing ones the
-// shipped stubs), the probes take only the exercises the file calls, and
+// shipped stubs), the probes take only the earlier exercises that pass, and
 // `raylab check` runs the image step only once every exercise passes its
 // probes (commands/check_command.cpp; docs/decisions.md, "A student edition").
 // Each exercise runs in its own child process (core/isolated.h) so that a
