@@ -8,8 +8,9 @@
 # start renders the stubs' picture (byte for byte the instructor's
 # `raylab render --impl exercises`, not the solutions'), `raylab check` says
 # NOT STARTED ten times with exit status 1, a solution copied in for one
-# exercise passes on its probes with its images waiting, and all ten copied
-# in pass every check, images included, with exit status 0.
+# exercise passes on its probes with its images waiting, 08 alone fails with
+# a hint naming 03 (which it calls), and all ten copied in pass every check,
+# images included, with exit status 0.
 # SCRATCH lies under the build folder so that ccache (base_dir) finds the
 # instructor's objects for the clone's build; RAYLAB is the instructor's binary.
 set -euo pipefail
@@ -85,6 +86,15 @@ status=0; (cd "$clone" && ./raylab check) >"$scratch/check-03.txt" 2>&1 || statu
 cat "$scratch/check-03.txt"
 [ "$status" -eq 1 ] || fail "exit status $status, expected 1"
 grep -qE "^03-lambert +PASS .*images waiting for exercise 01-camera" "$scratch/check-03.txt" || fail "03-lambert"
+
+step "08 alone: FAIL, and the hint names the exercise it calls that is not done"
+git -C "$clone" checkout -q -- exercises
+cp "$src/solutions/08-cook-torrance.glsl" "$clone/exercises/"
+status=0; (cd "$clone" && ./raylab check -e 8) >"$scratch/check-08.txt" 2>&1 || status=$?
+head -3 "$scratch/check-08.txt"
+[ "$status" -eq 1 ] || fail "exit status $status, expected 1"
+grep -qE "^08-cook-torrance +FAIL" "$scratch/check-08.txt" || fail "08-cook-torrance is not FAIL"
+grep -q "hint: it calls exercise 03-lambert, whose probes do not pass yet" "$scratch/check-08.txt" || fail "08's hint"
 
 step "all ten done: every check passes, images included, exit status 0"
 cp "$src"/solutions/*.glsl "$clone/exercises/"
