@@ -50,8 +50,9 @@ git -C "$here" archive --format=tar HEAD | tar -x -C "$stage"
 # The answers, and what cannot work or would only mislead without them.
 leave_out=(
     solutions tests/mutants tests/alternatives tests/portability
-    tests/exercises tests/grading tests/gpu tests/accuracy tests/bench tests/metamorphic tests/fuzz
+    tests/exercises tests/grading tests/gpu tests/accuracy tests/metamorphic tests/fuzz
     tests/walkthrough tests/window tests/browser tests/edition
+    tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp  # its scenes stay: unit tests read them
     tests/unit/test_shipped_stubs.cpp tests/unit/test_loop_guard.cpp
     docs/exercises/images/make-images.sh scripts/judge-kinds.py
     scripts/student-edition.sh scripts/answer-leaks.py
