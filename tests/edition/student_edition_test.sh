@@ -6,7 +6,8 @@
 # by scripts/answer-leaks.py, which must also find one planted on purpose),
 # then a fresh clone of it built and used as its README says: the quick
 # start renders the stubs' picture (byte for byte the instructor's
-# `raylab render --impl exercises`, not the solutions'), `raylab check` says
+# `raylab render --impl exercises`, not the solutions'), `raylab view` runs
+# exercises/ and fills a partial folder with the shipped stubs, `raylab check` says
 # NOT STARTED ten times with exit status 1, a solution copied in for one
 # exercise passes on its probes with its images waiting, 08 alone fails with
 # a hint naming 03 (which it calls), and all ten copied in pass every check,
@@ -72,6 +73,15 @@ step "quick start: ./raylab render -o raylab.png shows the stubs"
 "$raylab" render -o "$scratch/solutions.png" >/dev/null
 cmp -s "$clone/raylab.png" "$scratch/stubs.png" || fail "the edition's picture is not the stubs' picture"
 ! cmp -s "$clone/raylab.png" "$scratch/solutions.png" || fail "the edition renders the solutions' picture"
+
+step "./raylab view (Xvfb): exercises/ by default, the shipped stubs beside a partial folder"
+mkdir -p "$scratch/partial"
+cp "$src/solutions/01-camera.glsl" "$src/solutions/02-intersect.glsl" "$scratch/partial/"
+(cd "$clone" && xvfb-run -a ./raylab view --frames 2 --size 64x48) >"$scratch/view.txt" 2>&1 || { cat "$scratch/view.txt"; fail "view"; }
+grep -q "(exercises)" "$scratch/view.txt" || fail "view: $(cat "$scratch/view.txt")"
+(cd "$clone" && xvfb-run -a ./raylab view --impl "$scratch/partial" --frames 2 --size 64x48) >"$scratch/view-partial.txt" 2>&1 ||
+    { cat "$scratch/view-partial.txt"; fail "view --impl partial"; }
+grep -q "(+ shipped stubs)" "$scratch/view-partial.txt" || fail "view --impl partial: $(cat "$scratch/view-partial.txt")"
 
 step "./raylab check: NOT STARTED ten times, exit status 1"
 status=0; (cd "$clone" && ./raylab check) >"$scratch/check-stubs.txt" 2>&1 || status=$?
