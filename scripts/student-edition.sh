@@ -67,8 +67,8 @@ text = open(path, encoding='utf-8').read()
 note = """> **Student edition.** This copy of raylab has no answers: no `solutions/`,
 > no `tests/mutants/`, `tests/alternatives/` or `tests/portability/`, and
 > only the `unit` tests. `./raylab render`, `view`, `record` and `bench` run
-> your files in `exercises/` (a file missing from an `--impl` folder is the
-> shipped stub), and `./raylab check` checks each exercise with your own
+> your files in `exercises/` (in `view`, a file missing from an `--impl`
+> folder is the shipped stub), and `./raylab check` checks each exercise with your own
 > files for the others: its image step waits until every exercise passes its
 > probes ([docs/exercises/README.md](docs/exercises/README.md)). Documents
 > that mention `solutions/` or the mutants describe the instructor's
