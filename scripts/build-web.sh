@@ -89,6 +89,11 @@ fi
 make -s -j"$JOBS" -f "$OUT/Makefile.objects" all
 
 OBJECTS=$(sed -n 's/^OBJECTS = //p' "$OUT/Makefile.objects")
+# The solutions where the repository has them; a student edition
+# (scripts/student-edition.sh) has none, and its page checks with the
+# student's own files (docs/web.md).
+SOLUTIONS=""
+if [ -d solutions ]; then SOLUTIONS="--embed-file solutions@/raylab/solutions"; fi
 # SINGLE_FILE: the wasm inside the .js (a separate .wasm is refused over
 # file://); MODULARIZE: one factory, instantiated in each Worker; the repository's
 # GLSL, solutions, stubs and the check scenes embedded at /raylab.
@@ -97,7 +102,7 @@ em++ $OPT -fexceptions --bind $OBJECTS -o "$OUT/raylab.js" \
     -sMODULARIZE=1 -sEXPORT_NAME=createRaylab -sENVIRONMENT=web,worker -sSINGLE_FILE=1 \
     -sALLOW_MEMORY_GROWTH=1 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
     -sEXPORTED_RUNTIME_METHODS=FS \
-    --embed-file shaders@/raylab/shaders --embed-file solutions@/raylab/solutions \
+    --embed-file shaders@/raylab/shaders $SOLUTIONS \
     --embed-file "$OUT/generated/shipped-stubs@/raylab/exercises" \
     --embed-file scenes/dielectric-row-reflections.json@/raylab/scenes/dielectric-row-reflections.json \
     --embed-file scenes/metal-row-reflections.json@/raylab/scenes/metal-row-reflections.json \

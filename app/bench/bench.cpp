@@ -122,7 +122,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         // other side too, so that the bench shows whether the threshold is
         // right for this scene.
         const ShaderDefines all =
-            definesFor(scene, implementationFacts(Implementation{solutionsDir(), {}}), Purpose::Picture);
+            definesFor(scene, implementationFacts(Implementation{defaultImplementationDir(), {}}), Purpose::Picture);
         std::vector<std::string> with;
         for (const DefineRow& row : defineTable()) {
             if (row.layer != BenchLayer::Without) continue;
@@ -353,7 +353,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
 
     std::vector<std::string> files = options.scenes;
     if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
-    fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
+    fs::path implDir = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
     if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
 
     // Load every scene first: a typo in the last file fails before minutes of work.

@@ -73,7 +73,7 @@ struct Options {
     std::set<std::string> sweeps;
     std::string backend = "auto";
     Clock clock = Clock::Auto;        // Auto: Wall on llvmpipe and other software rasterisers, else Gpu
-    std::filesystem::path implDir;    // empty: solutions/
+    std::filesystem::path implDir;    // empty: solutions/ (exercises/ where there is none)
 };
 
 // Every group name Options::sweeps accepts, in the order they run.

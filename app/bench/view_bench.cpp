@@ -41,7 +41,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     Scene scene = loaded.scene;
     scene.render.width = options.width;
     scene.render.height = options.height;
-    const fs::path implDir = options.implDir.empty() ? solutionsDir() : options.implDir;
+    const fs::path implDir = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
     if (!fs::is_directory(implDir)) throw Error("--impl: " + implDir.string() + " is not a directory");
     const Implementation impl{implDir, {}};
     const ImplementationFacts facts = implementationFacts(impl);

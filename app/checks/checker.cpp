@@ -1,8 +1,10 @@
 #include "checks/checker.h"
 
+#include "course/fallback_files.h"
 #include "checks/probe_cases.h"
 #include "checks/probe_runner.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/isolated.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -11,6 +13,7 @@
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
+#include "shader/glsl_scan.h"
 #include "shader/loop_guard.h"
 #include "shader/portability.h"
 #include "shader/shader_library.h"
@@ -23,6 +26,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -69,6 +73,7 @@ json toJson(const ExerciseReport& r) {
         j["images"].push_back({{"scene", i.scene}, {"passed", i.passed}, {"off_fraction", i.offFraction},
                                {"mean_lsb", i.meanLsb}, {"non_finite", i.nonFinite}, {"expected", i.expectedPng},
                                {"got", i.gotPng}, {"diff", i.diffPng}});
+    if (!r.imagesWaitingFor.empty()) j["images_waiting_for"] = r.imagesWaitingFor;
     return j;
 }
 
@@ -84,6 +89,7 @@ ExerciseReport reportFromJson(const json& j) {
     r.hint = j.value("hint", "");
     r.details = j.value("details", "");
     r.seconds = j.value("seconds", 0.0);
+    r.imagesWaitingFor = j.value("images_waiting_for", "");
     for (const auto& p : j.value("probes", json::array()))
         r.probes.push_back({p.value("name", ""), p.value("passed", 0), p.value("total", 0)});
     for (const auto& i : j.value("images", json::array())) {
@@ -339,7 +345,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     report.id = exercise.id;
     fastShaderCompiles();
     auto context = createHeadlessContext(parseBackend(options.backend));
-    Implementation impl{solutionsDir(), {{exercise.file(), file}}};
+    const Implementation impl = checkCompanions(exercise, file, options);
     ShaderProgram probe, program;
     setPhase("compiling");
     try {
@@ -347,11 +353,13 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         // Only this exercise's functions in the probe: the compiler drops the rest.
         ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
         probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
-        setPhase("compiling the ray tracer");
-        // Without the teaching views where the course's 09 traces: a third
-        // less code for LLVM, the same picture (Purpose::Probe, one program
-        // for every check scene, so none of them is passed).
-        program = buildRayTracer(impl, definesFor(Scene{}, implementationFacts(impl), Purpose::Probe));
+        if (!options.probesOnly) {  // the probes alone need no ray tracer
+            setPhase("compiling the ray tracer");
+            // Without the teaching views where the course's 09 traces: a third
+            // less code for LLVM, the same picture (Purpose::Probe, one program
+            // for every check scene, so none of them is passed).
+            program = buildRayTracer(impl, definesFor(Scene{}, implementationFacts(impl), Purpose::Probe));
+        }
     } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
         report.status = CheckStatus::CompileError;
         std::string text = e.what();
@@ -419,7 +427,17 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
         table += outcome.table;
     }
 
-    // Images: this exercise from the student, every other from solutions/.
+    if (options.probesOnly) {
+        report.details = table;
+        report.status = std::all_of(report.probes.begin(), report.probes.end(),
+                                    [](const ProbeSummary& p) { return p.passed == p.total; })
+                            ? CheckStatus::Pass
+                            : CheckStatus::Fail;
+        return report;
+    }
+
+    // Images: this exercise from the student, every other from solutions/
+    // (from the student too in a student edition: checkCompanions()).
     GlRenderer renderer;
     fs::path outDir = options.outputDir / exercise.id;
     for (const CheckScene& c : scenes) {
@@ -479,6 +497,8 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
 
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes) {
+    // Made here, not in the child, so that it is removed when this process ends.
+    if (!hasSolutions()) shippedStubFolder();
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
@@ -596,6 +616,114 @@ std::optional<ExerciseReport> checkTogether(const CheckOptions& options) {
     return report;
 }
 
+std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl) {
+    // Each exercise's function names, as its shipped stub declares them.
+    static const std::vector<std::pair<int, std::vector<std::string>>> declared = [] {
+        std::vector<std::pair<int, std::vector<std::string>>> out;
+        for (const ExerciseInfo& e : allExercises()) {
+            std::vector<std::string> names;
+            if (const std::string* stub = shippedStub(e.file()))
+                for (const GlslFunction& f : scanGlsl(*stub).functions) names.push_back(f.name);
+            out.emplace_back(e.number, names);
+        }
+        return out;
+    }();
+    static const std::regex comments(R"(//[^\n]*|/\*[\s\S]*?\*/)");
+    constexpr std::uintmax_t kLargestExercise = 1 << 20;  // as the checks read an exercise file
+    std::set<int> called;
+    std::vector<int> todo{exercise.number};
+    while (!todo.empty()) {
+        const ExerciseInfo& caller = findExercise(std::to_string(todo.back()));
+        todo.pop_back();
+        std::string code;
+        try {
+            code = std::regex_replace(readRegularFile(impl.fileFor(caller.file()), kLargestExercise), comments, " ");
+        } catch (const Error&) {
+            continue;  // a missing or unreadable file calls nothing; its check says why
+        }
+        for (const auto& [number, names] : declared) {
+            if (number == exercise.number || number == caller.number || called.count(number)) continue;
+            for (const std::string& name : names)
+                if (std::regex_search(code, std::regex("\\b" + name + "\\s*\\("))) {
+                    called.insert(number);
+                    todo.push_back(number);
+                    break;
+                }
+        }
+    }
+    return called;
+}
+
+Implementation checkCompanions(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options) {
+    if (hasSolutions()) return Implementation{solutionsDir(), {{exercise.file(), file}}};
+    Implementation own{options.implDir, {}};
+    std::error_code ec;
+    for (const ExerciseInfo& e : allExercises()) {
+        auto it = options.fileOverride.find(e.number);
+        if (it != options.fileOverride.end())
+            own.overrides[e.file()] = it->second;
+        else if (!fs::is_regular_file(options.implDir / e.file(), ec))
+            own.overrides[e.file()] = shippedStubFolder() / e.file();
+    }
+    own.overrides[exercise.file()] = file;
+    if (!options.probesOnly) return own;
+    // The probes: the student's files in ownFiles, the shipped stubs for the rest.
+    Implementation probes{shippedStubFolder(), {{exercise.file(), file}}};
+    for (int number : options.ownFiles) {
+        const std::string name = findExercise(std::to_string(number)).file();
+        if (number != exercise.number) probes.overrides[name] = own.fileFor(name);
+    }
+    return probes;
+}
+
+std::map<int, ExerciseReport> checkProbesOfAll(const CheckOptions& options, const std::vector<CheckScene>& scenes) {
+    CheckOptions probesOnly = options;
+    probesOnly.probesOnly = true;
+    probesOnly.ownFiles.clear();
+    std::map<int, ExerciseReport> first;
+    for (const ExerciseInfo& e : allExercises()) {  // the teaching order: each builds on the ones before it
+        first[e.number] = checkExercise(e, probesOnly, scenes);
+        if (first[e.number].status == CheckStatus::Pass) probesOnly.ownFiles.insert(e.number);
+    }
+    return first;
+}
+
+ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOptions& options,
+                                 const std::vector<CheckScene>& scenes, const std::map<int, ExerciseReport>& firstPass) {
+    auto passes = [&](int number) {
+        auto it = firstPass.find(number);
+        return it != firstPass.end() && it->second.status == CheckStatus::Pass;
+    };
+    auto own = firstPass.find(exercise.number);
+    if (own == firstPass.end()) return checkExercise(exercise, options, scenes);
+    ExerciseReport report = own->second;
+    if (report.status == CheckStatus::Pass) {
+        for (const ExerciseInfo& e : allExercises())
+            if (e.number != exercise.number && !passes(e.number)) {
+                report.imagesWaitingFor = e.id;
+                return report;
+            }
+        return checkExercise(exercise, options, scenes);
+    }
+    if (report.status == CheckStatus::Fail) {
+        // A failure may come from an exercise this one builds on, which the
+        // stub stood in for: name the first it calls, else the first earlier one.
+        auto it = options.fileOverride.find(exercise.number);
+        const fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
+        std::string waiting;
+        for (int number : exercisesCalled(exercise, checkCompanions(exercise, file, options)))
+            if (!passes(number) && waiting.empty())
+                waiting = "it calls exercise " + findExercise(std::to_string(number)).id;
+        for (const ExerciseInfo& e : allExercises())
+            if (e.number < exercise.number && !passes(e.number) && waiting.empty())
+                waiting = "it may build on exercise " + e.id;
+        if (!waiting.empty())
+            report.hint = waiting + ", whose probes do not pass yet (its stub stood in for it): make that one pass " +
+                          "first; " + report.hint;
+    }
+    return report;
+}
+
 std::string formatReport(const ExerciseReport& r, bool verbose) {
     char head[64];
     std::snprintf(head, sizeof head, "%-17s %-13s ", r.id.c_str(), statusName(r.status).c_str());
@@ -603,7 +731,9 @@ std::string formatReport(const ExerciseReport& r, bool verbose) {
     if (r.status == CheckStatus::Pass) {
         int cases = 0;
         for (const auto& p : r.probes) cases += p.total;
-        out += std::to_string(cases) + " probe cases, " + std::to_string(r.images.size()) + " images";
+        out += std::to_string(cases) + " probe cases, " +
+               (r.imagesWaitingFor.empty() ? std::to_string(r.images.size()) + " images"
+                                           : "images waiting for exercise " + r.imagesWaitingFor);
     } else {
         out += r.message;
     }

@@ -5,6 +5,11 @@
 //      the CPU reference (checks/probe_cases.h);
 //   3. images: the check scenes rendered with this exercise from the folder
 //      and the solutions for all others, against the CPU reference.
+// A student edition (scripts/student-edition.sh) has no solutions/: there the
+// files beside the one under check are the student's own (missing ones the
+// shipped stubs), the probes take only the earlier exercises that pass, and
+// `raylab check` runs the image step only once every exercise passes its
+// probes (commands/check_command.cpp; docs/decisions.md, "A student edition").
 // Each exercise runs in its own child process (core/isolated.h) so that a
 // shader that hangs or crashes costs that exercise only.
 #pragma once
@@ -13,12 +18,14 @@
 #include "checks/probe_cases.h"
 #include "core/image.h"
 #include "core/scene.h"
+#include "shader/shader_library.h"
 
 #include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -50,6 +57,9 @@ struct ExerciseReport {
     std::string details;   // the failure table, compile log, image paths
     std::vector<ProbeSummary> probes;
     std::vector<ImageSummary> images;
+    // A student edition: the exercise whose probes do not pass yet ("05-ggx"),
+    // for which the image step waited; empty when it ran (or was not due).
+    std::string imagesWaitingFor;
     double seconds = 0;
 
     double probeFraction() const;  // passed / total over all probes (0 when none ran)
@@ -69,6 +79,11 @@ struct CheckOptions {
     // When set, this file is checked as the exercise's implementation instead
     // of implDir/<id>.glsl (mutant tests; grading of nested folders).
     std::map<int, std::filesystem::path> fileOverride;
+    // The probes alone, no image step (a student edition's first pass):
+    // PASS when every probe passes. The other exercises are then the shipped
+    // stubs, but for those in ownFiles: the student's (checkCompanions()).
+    bool probesOnly = false;
+    std::set<int> ownFiles;
 };
 
 // The check scenes and their CPU references, computed once and shared.
@@ -104,6 +119,34 @@ ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<f
 // Status Pass or CompileError (TimedOut, Crashed); id "all files". nullopt,
 // without compiling, when a file of the ten is missing (each is NOT STARTED).
 std::optional<ExerciseReport> checkTogether(const CheckOptions& options);
+
+// The files a check compiles beside `file` (the exercise under check): the
+// solutions where the repository has them. In a student edition the
+// student's own files (options.implDir with options.fileOverride; a missing
+// one the shipped stub); with options.probesOnly only those of the exercises
+// in options.ownFiles (the earlier ones that pass their probes), the shipped
+// stubs for every other, so that an exercise that does not pass yet (a
+// compile error, a runaway loop, wrong numbers) cannot fail this one.
+Implementation checkCompanions(const ExerciseInfo& exercise, const std::filesystem::path& file,
+                               const CheckOptions& options);
+
+// A student edition's `raylab check` (no solutions/), in two passes. First
+// the probes of all ten exercises in the teaching order, each beside the
+// student's files of the earlier ones that pass theirs (options.probesOnly,
+// options.ownFiles; checkCompanions()).
+std::map<int, ExerciseReport> checkProbesOfAll(const CheckOptions& options, const std::vector<CheckScene>& scenes);
+// Then each exercise's verdict: when every exercise passes its probes, the
+// full check with the student's own files (its image step included);
+// otherwise the first pass's report, a PASS saying which exercise its image
+// step waits for (imagesWaitingFor), a FAIL whose hint names the exercise it
+// calls (or the earlier one) that does not pass yet. A check scene runs every exercise: with any of them
+// wrong, its picture says nothing about the one under check.
+ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOptions& options,
+                                 const std::vector<CheckScene>& scenes, const std::map<int, ExerciseReport>& firstPass);
+
+// The exercises (numbers) whose functions the files of `impl` for `exercise`
+// call, directly or through each other; `exercise` itself not included.
+std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl);
 
 // The one-line verdict printed by `raylab check` for a report, plus its hint
 // and details on the following lines (indented).

@@ -158,7 +158,7 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--clock", options->clock,
                     "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")
         ->capture_default_str();
-    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)");
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/; exercises/ where there is none)");
     cmd->callback([options, cmd] {
         options->sizeGiven = cmd->count("--size") > 0;
         runBenchCommand(*options);

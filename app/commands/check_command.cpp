@@ -4,6 +4,11 @@
 // folder do not compile together as `render` compiles them, one "all files"
 // line with the error. Exit 0 only when every selected exercise passes and
 // the files compile together.
+//
+// In a student edition (no solutions/): first the probes of all ten
+// exercises, then the image step only once all ten pass them; until then
+// PASS rests on the probes and says "images waiting for exercise NN"
+// (checks/checker.h, checkWithOwnFiles(); docs/decisions.md, "A student edition").
 #include "commands/commands.h"
 
 #include "checks/checker.h"
@@ -19,6 +24,7 @@
 #include <optional>
 #include <filesystem>
 #include <iostream>
+#include <map>
 
 namespace rl {
 namespace {
@@ -61,11 +67,16 @@ int runCheck(const CheckCommandOptions& o) {
     std::vector<CheckScene> scenes = makeCheckScenes();
     nlohmann::json all = nlohmann::json::array();
     int passed = 0;
-    for (const ExerciseInfo& exercise : selected) {
-        ExerciseReport report = checkExercise(exercise, options, scenes);
+    auto print = [&](const ExerciseReport& report) {
         std::cout << formatReport(report, o.verbose) << std::flush;
         if (report.status == CheckStatus::Pass) ++passed;
         all.push_back(toJson(report));
+    };
+    if (hasSolutions()) {
+        for (const ExerciseInfo& exercise : selected) print(checkExercise(exercise, options, scenes));
+    } else {
+        const std::map<int, ExerciseReport> firstPass = checkProbesOfAll(options, scenes);
+        for (const ExerciseInfo& exercise : selected) print(checkWithOwnFiles(exercise, options, scenes, firstPass));
     }
     // Then the ten files together, as render compiles them: when some
     // exercise got as far as PASS or FAIL and none failed to build (its error

@@ -85,7 +85,7 @@ void runRecord(const RecordOptions& o) {
     }
     int bounce = 0;
     const View view = parseView(o.view, bounce);
-    Implementation impl{o.impl.empty() ? solutionsDir() : fs::path(o.impl), {}};
+    Implementation impl{o.impl.empty() ? defaultImplementationDir() : fs::path(o.impl), {}};
     if (!fs::is_directory(impl.dir)) throw Error("--impl: " + impl.dir.string() + " is not a directory");
     fs::create_directories(o.out);
 
@@ -167,7 +167,7 @@ void addRecordCommand(CLI::App& app) {
     cmd->add_option("--orbit", o->orbit, "Turntable orbit about the scene's up, degrees over the clip (e.g. 360)");
     cmd->add_option("--sweep", o->sweep, "Slider sweep NAME:FROM:TO, NAME = exposure, roughness or metallic");
     cmd->add_option("--view", o->view, "Teaching view, as raylab render --view")->capture_default_str();
-    cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/)");
+    cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/; exercises/ where there is none)");
     cmd->add_option("--fps", o->fps, "Frame rate of the video")->check(CLI::Range(1, 120))->capture_default_str();
     cmd->add_flag("--no-captions", o->noCaptions, "Frames without the caption and colour bar of the view");
     cmd->add_option("--ui-scale", o->uiScale, "Caption size (default: frame height / 720, at least 1)")

@@ -48,7 +48,7 @@ void runRender(const RenderOptions& o) {
         result = ref::renderCpu(scene);
     } else {
         Backend backend = parseBackend(o.backend);
-        Implementation impl{o.impl.empty() ? solutionsDir() : std::filesystem::path(o.impl), {}};
+        Implementation impl{o.impl.empty() ? defaultImplementationDir() : std::filesystem::path(o.impl), {}};
         std::error_code ec;
         if (!std::filesystem::is_directory(impl.dir, ec))
             throw Error("--impl: " + impl.dir.string() + " is not a directory");
@@ -84,7 +84,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--spp", options->spp, "Override samples per pixel (a square number)")
         ->check(squareNumberIn(1, 1024));
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
-    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/)")
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/; exercises/ where there is none)")
         ->check(notEmpty());
     cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();

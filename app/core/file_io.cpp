@@ -5,7 +5,9 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -178,6 +180,27 @@ std::string readRegularFile(const fs::path& path, std::uintmax_t maxBytes, const
         data.append(buffer, std::size_t(n));
     }
     return data;
+}
+
+fs::path privateTempFolder(const std::string& what) {
+    // Removes, at a normal exit of the process that made them, the folders it made.
+    struct Made {
+        pid_t owner = getpid();
+        std::vector<fs::path> folders;
+        ~Made() {
+            if (getpid() != owner) return;
+            std::error_code ec;
+            for (const fs::path& f : folders) fs::remove_all(f, ec);
+        }
+    };
+    static Made made;
+    std::error_code ec;
+    fs::path base = fs::temp_directory_path(ec);
+    if (ec) base = "/tmp";
+    std::string name = (base / ("raylab-" + what + "-XXXXXX")).string();
+    if (!mkdtemp(name.data())) throw Error(name + ": cannot make a temporary folder (" + std::strerror(errno) + ")");
+    made.folders.push_back(name);
+    return name;
 }
 
 }  // namespace rl

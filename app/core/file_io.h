@@ -49,4 +49,10 @@ std::string readRegularFile(const std::filesystem::path& path, std::uintmax_t ma
 // "16 MiB", "4 GiB", "512 bytes": for the limits in messages.
 std::string byteSizeText(std::uintmax_t bytes);
 
+// A new folder under the system's temporary folder that only this user can
+// open (mkdtemp: "raylab-<what>-XXXXXX", mode 0700), removed with its files
+// when the process that made it exits normally (a forked child that inherits
+// it leaves it alone). Throws rl::Error naming the folder it could not make.
+std::filesystem::path privateTempFolder(const std::string& what);
+
 }  // namespace rl

@@ -16,4 +16,11 @@ std::filesystem::path solutionsDir() { return sourceRoot() / "solutions"; }
 std::filesystem::path exercisesDir() { return sourceRoot() / "exercises"; }
 std::filesystem::path scenesDir() { return sourceRoot() / "scenes"; }
 
+bool hasSolutions() {
+    std::error_code ec;
+    return std::filesystem::is_directory(solutionsDir(), ec);
+}
+
+std::filesystem::path defaultImplementationDir() { return hasSolutions() ? solutionsDir() : exercisesDir(); }
+
 }  // namespace rl

@@ -12,4 +12,11 @@ std::filesystem::path solutionsDir();   // <root>/solutions
 std::filesystem::path exercisesDir();   // <root>/exercises: the stubs as shipped
 std::filesystem::path scenesDir();      // <root>/scenes
 
+// Whether <root>/solutions is a folder: the instructor's repository has it, a
+// student edition (scripts/student-edition.sh) does not.
+bool hasSolutions();
+// What render, view, record and bench run without --impl: solutions/ where
+// the repository has it, else exercises/ (the student's own files).
+std::filesystem::path defaultImplementationDir();
+
 }  // namespace rl

@@ -1,6 +1,7 @@
 #include "view/implementation_folder.h"
 
 #include "course/exercise_registry.h"
+#include "course/fallback_files.h"
 #include "core/error.h"
 #include "core/paths.h"
 
@@ -15,7 +16,8 @@ Implementation fromSingleFile(const fs::path& file, const std::string& option) {
     const std::string stem = file.stem().string();
     const std::string id = stem.substr(0, stem.find("--"));
     for (const ExerciseInfo& e : allExercises())
-        if (e.id == id && file.extension() == ".glsl") return Implementation{solutionsDir(), {{e.file(), file}}};
+        if (e.id == id && file.extension() == ".glsl")
+            return Implementation{fallbackImplementationDir(), {{e.file(), file}}};
     throw Error(option + ": " + file.string() + " is not named after an exercise (expected e.g. 05-ggx.glsl or " +
                 "05-ggx--what-is-wrong.glsl)");
 }
@@ -35,7 +37,7 @@ Implementation implementationFrom(const fs::path& path, const std::string& optio
     if (present == 0)
         throw Error(option + ": " + dir.string() + " has none of the exercise files (" + allExercises().front().file() +
                     " ... " + allExercises().back().file() + ")");
-    impl.dir = solutionsDir();
+    impl.dir = fallbackImplementationDir();
     for (const ExerciseInfo& e : allExercises())
         if (fs::is_regular_file(dir / e.file(), ec)) impl.overrides[e.file()] = dir / e.file();
     return impl;
@@ -47,7 +49,10 @@ std::string implementationLabel(const Implementation& impl) {
         if (clean.filename().empty()) clean = clean.parent_path();  // "exercises/" -> "exercises"
         return clean.filename().string();
     };
-    if (impl.overrides.empty()) return shortName(impl.dir);
+    auto dirName = [&](const fs::path& dir) {
+        return !hasSolutions() && dir == shippedStubFolder() ? std::string("shipped stubs") : shortName(dir);
+    };
+    if (impl.overrides.empty()) return dirName(impl.dir);
     const fs::path first = impl.overrides.begin()->second.lexically_normal();
     const fs::path folder = first.parent_path();
     // One file: name the file (a mutant's name says what is wrong); several: the folder.
@@ -55,7 +60,7 @@ std::string implementationLabel(const Implementation& impl) {
         impl.overrides.size() == 1
             ? shortName(folder) + "/" + first.filename().string()
             : (folder.has_parent_path() ? shortName(folder.parent_path()) + "/" : "") + shortName(folder);
-    return shown + " (+ " + shortName(impl.dir) + ")";
+    return shown + " (+ " + dirName(impl.dir) + ")";
 }
 
 }  // namespace rl

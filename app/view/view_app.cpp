@@ -67,7 +67,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     if (state_.view == View::Bounce) state_.viewBounce = bounce;
 
     std::vector<Implementation> impls;
-    impls.push_back(implementationFrom(options_.impl.empty() ? solutionsDir() : fs::path(options_.impl), "--impl"));
+    impls.push_back(implementationFrom(options_.impl.empty() ? defaultImplementationDir() : fs::path(options_.impl), "--impl"));
     if (!options_.compare.empty()) impls.push_back(implementationFrom(options_.compare, "--compare"));
     std::optional<ShadingModel> compareModel;
     std::string compareModelName;

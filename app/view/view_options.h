@@ -7,7 +7,7 @@ namespace rl {
 
 struct ViewOptions {
     std::string scene;           // scene file; "" = the embedded default scene
-    std::string impl;            // exercise folder; "" = solutions/
+    std::string impl;            // exercise folder; "" = solutions/ (exercises/ in a student edition)
     std::string compare;         // second folder for the wipe; "" = none
     std::string compareModel;    // "blinn-phong" or "pbr": the wipe's right side uses that model; "" = the scene's
     int width = 0, height = 0;   // window size (--size); 0 = the scene's render size

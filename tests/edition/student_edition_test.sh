@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# The student edition as a course makes and uses it (issue 21):
+#   tests/edition/student_edition_test.sh SOURCE_ROOT RAYLAB SCRATCH
+# scripts/student-edition.sh into SCRATCH, its refusals, its contents (no
+# answer folder; no solution's function body in any .glsl, .md or test file,
+# by scripts/answer-leaks.py, which must also find one planted on purpose),
+# then a fresh clone of it built and used as its README says: the quick
+# start renders the stubs' picture (byte for byte the instructor's
+# `raylab render --impl exercises`, not the solutions'), `raylab view` runs
+# exercises/ and fills a partial folder with the shipped stubs, `raylab check` says
+# NOT STARTED ten times with exit status 1, a solution copied in for one
+# exercise passes on its probes with its images waiting, 08 alone fails with
+# a hint naming 03 (which it calls), and all ten copied in pass every check,
+# images included, with exit status 0.
+# SCRATCH lies under the build folder so that ccache (base_dir) finds the
+# instructor's objects for the clone's build; RAYLAB is the instructor's binary.
+set -euo pipefail
+src="$1"; raylab="$2"; scratch="$3"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+step() { echo "--- $* ($(date +%s) s)"; }
+
+rm -rf -- "$scratch"  # this test's own folder, from an earlier run
+mkdir -p "$scratch"
+edition="$scratch/edition"
+
+step "export"
+"$src/scripts/student-edition.sh" "$edition" >"$scratch/export.log" 2>&1 || { cat "$scratch/export.log"; fail "export"; }
+git -C "$edition" log --oneline | wc -l | grep -qx 1 || fail "the edition has not exactly one commit"
+[ -z "$(git -C "$edition" status --porcelain)" ] || fail "the edition has uncommitted files"
+
+step "refusals: a non-empty folder, a file"
+if out=$("$src/scripts/student-edition.sh" "$edition" 2>&1); then fail "a non-empty OUT_DIR was accepted"; fi
+[ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ "$out" == *"is not empty"* ]] || fail "refusal: $out"
+touch "$scratch/a-file"
+if out=$("$src/scripts/student-edition.sh" "$scratch/a-file" 2>&1); then fail "a file as OUT_DIR was accepted"; fi
+[[ "$out" == *"not a folder"* ]] && [ -f "$scratch/a-file" ] || fail "refusal: $out"
+[ -z "$(ls -A "$scratch" | grep '^\.student-edition-' || true)" ] || fail "a half-made folder was left beside OUT_DIR"
+
+step "no answers"
+for answers in solutions tests/mutants tests/alternatives tests/portability; do
+    [ ! -e "$edition/$answers" ] || fail "$answers/ is in the edition"
+done
+# (the test files; a comment of tests/CMakeLists.txt names the folders, and
+# tests/support/ keeps the GL helper of the suites left out, which no unit test calls)
+if grep -rlE --include='test_*' --exclude-dir=support "solutionsDir\(\)|tests/(mutants|alternatives|portability)/" "$edition/tests"; then
+    fail "a test of the edition reads an answer folder (files above)"
+fi
+python3 "$src/scripts/answer-leaks.py" "$src/solutions" "$edition" || fail "an answer is in the edition (lines above)"
+# The search can fail: one solution's D_GGX quoted in a copy of its handout.
+planted="$scratch/planted"
+mkdir -p "$planted"
+{ cat "$src/docs/exercises/05-ggx.md"; printf '\n```glsl\n'; cat "$src/solutions/05-ggx.glsl"; printf '```\n'; } \
+    >"$planted/05-ggx.md"
+if python3 "$src/scripts/answer-leaks.py" "$src/solutions" "$planted" >"$scratch/planted.log"; then
+    fail "answer-leaks.py did not find a solution pasted into a handout"
+fi
+grep -q "05-ggx.md: the body of D_GGX" "$scratch/planted.log" || fail "planted: $(cat "$scratch/planted.log")"
+
+step "a fresh clone, built as its README says (scripts/build.sh)"
+clone="$scratch/clone"
+git clone -q "$edition" "$clone"
+if command -v ccache >/dev/null; then
+    export CMAKE_CXX_COMPILER_LAUNCHER="${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}"
+    export CMAKE_C_COMPILER_LAUNCHER="${CMAKE_C_COMPILER_LAUNCHER:-ccache}"
+fi
+start=$(date +%s)
+(cd "$clone" && scripts/build.sh) >"$scratch/build.log" 2>&1 || { tail -30 "$scratch/build.log"; fail "scripts/build.sh"; }
+echo "build of the clone: $(( $(date +%s) - start )) s"
+
+step "quick start: ./raylab render -o raylab.png shows the stubs"
+(cd "$clone" && ./raylab render -o raylab.png) || fail "./raylab render -o raylab.png"
+"$raylab" render --impl "$src/exercises" -o "$scratch/stubs.png" >/dev/null
+"$raylab" render -o "$scratch/solutions.png" >/dev/null
+cmp -s "$clone/raylab.png" "$scratch/stubs.png" || fail "the edition's picture is not the stubs' picture"
+! cmp -s "$clone/raylab.png" "$scratch/solutions.png" || fail "the edition renders the solutions' picture"
+
+step "./raylab view (Xvfb): exercises/ by default, the shipped stubs beside a partial folder"
+mkdir -p "$scratch/partial"
+cp "$src/solutions/01-camera.glsl" "$src/solutions/02-intersect.glsl" "$scratch/partial/"
+(cd "$clone" && xvfb-run -a ./raylab view --frames 2 --size 64x48) >"$scratch/view.txt" 2>&1 || { cat "$scratch/view.txt"; fail "view"; }
+grep -q "(exercises)" "$scratch/view.txt" || fail "view: $(cat "$scratch/view.txt")"
+(cd "$clone" && xvfb-run -a ./raylab view --impl "$scratch/partial" --frames 2 --size 64x48) >"$scratch/view-partial.txt" 2>&1 ||
+    { cat "$scratch/view-partial.txt"; fail "view --impl partial"; }
+grep -q "(+ shipped stubs)" "$scratch/view-partial.txt" || fail "view --impl partial: $(cat "$scratch/view-partial.txt")"
+
+step "./raylab check: NOT STARTED ten times, exit status 1"
+status=0; (cd "$clone" && ./raylab check) >"$scratch/check-stubs.txt" 2>&1 || status=$?
+cat "$scratch/check-stubs.txt"
+[ "$status" -eq 1 ] || fail "exit status $status, expected 1"
+[ "$(grep -c "NOT STARTED" "$scratch/check-stubs.txt")" -eq 10 ] || fail "not ten NOT STARTED"
+grep -q "^0 of 10 exercises pass" "$scratch/check-stubs.txt" || fail "no '0 of 10 exercises pass'"
+
+step "one exercise done: PASS on its probes, images waiting"
+cp "$src/solutions/03-lambert.glsl" "$clone/exercises/"
+status=0; (cd "$clone" && ./raylab check) >"$scratch/check-03.txt" 2>&1 || status=$?
+cat "$scratch/check-03.txt"
+[ "$status" -eq 1 ] || fail "exit status $status, expected 1"
+grep -qE "^03-lambert +PASS .*images waiting for exercise 01-camera" "$scratch/check-03.txt" || fail "03-lambert"
+
+step "08 alone: FAIL, and the hint names the exercise it calls that is not done"
+git -C "$clone" checkout -q -- exercises
+cp "$src/solutions/08-cook-torrance.glsl" "$clone/exercises/"
+status=0; (cd "$clone" && ./raylab check -e 8) >"$scratch/check-08.txt" 2>&1 || status=$?
+head -3 "$scratch/check-08.txt"
+[ "$status" -eq 1 ] || fail "exit status $status, expected 1"
+grep -qE "^08-cook-torrance +FAIL" "$scratch/check-08.txt" || fail "08-cook-torrance is not FAIL"
+grep -q "hint: it calls exercise 03-lambert, whose probes do not pass yet" "$scratch/check-08.txt" || fail "08's hint"
+
+step "all ten done: every check passes, images included, exit status 0"
+cp "$src"/solutions/*.glsl "$clone/exercises/"
+status=0; (cd "$clone" && ./raylab check) >"$scratch/check-all.txt" 2>&1 || status=$?
+cat "$scratch/check-all.txt"
+[ "$status" -eq 0 ] || fail "exit status $status, expected 0"
+[ "$(grep -cE "PASS +[0-9]+ probe cases, [1-9][0-9]* images" "$scratch/check-all.txt")" -eq 10 ] || fail "not ten PASS with images"
+echo "PASS"
