@@ -85,7 +85,18 @@ int runExports(const GradeCommandOptions& o, const std::filesystem::path& out) {
     return status;
 }
 
+// Every export asked for, checked before the first student is graded: a
+// wrong roster or option found after hours of grading costs the hours.
+void checkExports(const GradeCommandOptions& o) {
+    for (const std::string& format : o.exports) {
+        ExportOptions e = o.exportOptions;
+        e.format = format;
+        checkExportOptions(e);
+    }
+}
+
 int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
+    checkExports(o);
     if (exportOnly) {
         if (o.exports.empty()) throw Error("grade export: --format canvas|moodle|csv is required");
         if (o.exports.size() > 1 && !o.exportOptions.output.empty())
@@ -116,6 +127,7 @@ int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
     run.submissions = o.submissions;
     run.settings = settingsFrom(o);
     if (!o.shard.empty()) parseShard(o.shard, run.shardIndex, run.shardCount);
+    run.roster = o.exportOptions.roster;
     int status = runGrade(run, std::cout);
     if (status != 0) return status;
     return runExports(o, run.settings.out);

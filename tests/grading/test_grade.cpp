@@ -732,6 +732,81 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
     if (!HasFailure()) fs::remove_all(root);
 }
 
+// Issue 22: the names LMS downloads hold, end to end. Before: the Unicode and
+// anonymous Canvas files were skipped, the folder named with byte 0xE9 stopped
+// the whole run with "internal error: [json.exception.type_error.316]" and no
+// outputs, ignored entries and roster students without a submission were not
+// in index.html, and an id starting with '=' reached grades.csv as a formula.
+TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
+    fs::path root = freshTempDir("grade_names");
+    const fs::path sub = root / "sub", out = root / "out";
+    const std::string camera = solutionFiles()["01-camera.glsl"];
+    fs::create_directories(sub);
+    writeText(sub / "m\xC3\xBCllerj\xC3\xBCrgen_1005_70021_01-camera.glsl", camera);
+    writeText(sub / "doejane_1001_70020_01-camera-1.glsl", camera);
+    writeText(sub / "anon_x7Kq2_70024_01-camera.glsl", camera);
+    writeFolder(sub / "caf\xE9", {{"01-camera.glsl", camera}});
+    writeZip(sub / "bad\xFFname.zip", {{"01-camera.glsl", camera}});
+    writeFolder(sub / "=HYPERLINK(1)", {{"01-camera.glsl", stubFiles()["01-camera.glsl"]}});
+    writeText(sub / "notes.txt", "x");
+    writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"01-camera\", \"weight\": 10}]}");
+    const std::string roster = (rl::sourceRoot() / "tests" / "grading" / "fixtures" / "canvas-gradebook-export.csv").string();
+    CommandResult r = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string() +
+                                                        " --export canvas --roster " + roster));
+    EXPECT_EQ(r.status, 3) << "graded, with submissions left out of the Canvas export: " << r.output;
+    ASSERT_TRUE(fs::exists(out / "summary.json")) << r.output;
+    const json summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary.at("students").get<int>(), 6) << summary.dump(2);
+    std::map<std::string, double> scores;
+    for (const std::string& id : summary.at("student_ids").get<std::vector<std::string>>())
+        scores[id] = readJson(out / id / "results.json").at("score").get<double>();
+    EXPECT_EQ(scores, (std::map<std::string, double>{{"=HYPERLINK(1)", 0},
+                                                     {"anon_x7Kq2", 10},
+                                                     {"bad%FFname", 10},
+                                                     {"caf%E9", 10},
+                                                     {"doejane_1001", 10},
+                                                     {"m\xC3\xBCllerj\xC3\xBCrgen_1005", 10}}));
+    EXPECT_EQ(readJson(out / "caf%E9" / "grade.json").value("source_bytes", ""), "63 61 66 e9");
+    const std::string csv = readText(out / "grades.csv");
+    for (const std::string& line : lines(csv))
+        EXPECT_EQ(std::string("=+-@\t\r").find(line[0]), std::string::npos) << line;
+    EXPECT_TRUE(contains(csv, "\n'=HYPERLINK(1),0.00,0.00\n")) << csv;
+    EXPECT_EQ(summary.at("ignored_entries").size(), 1u);
+    const std::string index = readText(out / "index.html");
+    EXPECT_TRUE(contains(index, "id=\"not-graded\"")) << "the not-graded list is at the top of the report";
+    EXPECT_LT(index.find("id=\"not-graded\""), index.find("id=\"grades\""));
+    EXPECT_TRUE(contains(index, "notes.txt (a file that is not a .zip")) << index;
+    EXPECT_TRUE(contains(index, "Smith, John (canvas-gradebook-export.csv line 4)")) << index;
+    EXPECT_TRUE(contains(index, "anon_x7Kq2: an anonymous Canvas download")) << index;
+    EXPECT_FALSE(contains(index, "Doe, Jane (canvas")) << "doejane_1001 has a submission";
+    // The second run finds every record and writes the same bytes.
+    CommandResult again = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    EXPECT_EQ(again.status, 0) << again.output;
+    EXPECT_TRUE(contains(again.output, "6 students already graded")) << again.output;
+    EXPECT_EQ(readText(out / "grades.csv"), csv);
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+// Every option and the roster are checked before the first student: a wrong
+// roster found after the class is graded costs the whole run.
+TEST(GradeCli, AnExportThatCannotBeWrittenIsRefusedBeforeGrading) {
+    fs::path root = freshTempDir("grade_early");
+    writeFolder(root / "sub" / "alice", {{"01-camera.glsl", "// mine\n"}});
+    const std::string canvasRoster = (rl::sourceRoot() / "tests" / "grading" / "fixtures" / "canvas-gradebook-export.csv").string();
+    CommandResult r = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() +
+                                " --export moodle --roster " + canvasRoster);
+    EXPECT_NE(r.status, 0);
+    EXPECT_TRUE(contains(r.output, "canvas-gradebook-export.csv: a Canvas roster; the Moodle export needs")) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(root / "out" / "alice")) << "nobody was graded";
+    CommandResult missing = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() +
+                                      " --export canvas --roster " + (root / "none.csv").string());
+    EXPECT_NE(missing.status, 0);
+    EXPECT_TRUE(contains(missing.output, "none.csv: roster file not found")) << missing.output;
+    EXPECT_FALSE(fs::exists(root / "out" / "alice"));
+    if (!HasFailure()) fs::remove_all(root);
+}
+
 TEST(GradeCli, BadArgumentsGiveOneLineAndNonZeroExit) {
     fs::path root = freshTempDir("grade_cli");
     CommandResult noArgs = runRaylab("grade");
