@@ -153,7 +153,9 @@ fs::path buildClass(const fs::path& root) {
     fs::create_symlink("../full/05-ggx.glsl", sub / "symlink" / "05-ggx.glsl");
     fs::create_directories(sub / "empty");
     std::string latin1 = solutionFiles()["03-lambert.glsl"];
-    latin1.insert(latin1.find('\n') + 1, "// r\xe9sum\xe9 in Latin-1\n");
+    // Outside a comment (inside one it is read as Windows-1252: the cp1252 student of
+    // GradeRun.EveryNameShapeIsGradedOnceAndNothingDropsSilently).
+    latin1.insert(latin1.find('\n') + 1, "float r\xe9sum\xe9 = 1.0;\n");
     writeFolder(sub / "non-utf8", solutionFiles({{"03-lambert.glsl", latin1}}));
     std::string big = solutionFiles()["05-ggx.glsl"] + "// " + std::string(300 * 1024, 'x') + "\n";
     writeFolder(sub / "oversize", solutionFiles({{"05-ggx.glsl", big}}));
@@ -369,7 +371,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     Student latin1 = load(out, "non-utf8");
     EXPECT_EQ(latin1.exercises.at("03-lambert").status, "REFUSED");
-    EXPECT_TRUE(contains(latin1.exercises.at("03-lambert").message, "03-lambert.glsl:2: file is not UTF-8"))
+    EXPECT_TRUE(contains(latin1.exercises.at("03-lambert").message, "03-lambert.glsl:2: file is not UTF-8 text: byte 0xE9"))
         << latin1.exercises.at("03-lambert").message;
     EXPECT_DOUBLE_EQ(latin1.score, 92);
 
@@ -732,6 +734,12 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
     if (!HasFailure()) fs::remove_all(root);
 }
 
+std::string joinedNotes(const std::vector<std::string>& notes) {
+    std::string out;
+    for (const std::string& n : notes) out += n + "\n";
+    return out;
+}
+
 // Issue 22: the names LMS downloads hold, end to end. Before: the Unicode and
 // anonymous Canvas files were skipped, the folder named with byte 0xE9 stopped
 // the whole run with "internal error: [json.exception.type_error.316]" and no
@@ -748,6 +756,7 @@ TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
     writeFolder(sub / "caf\xE9", {{"01-camera.glsl", camera}});
     writeZip(sub / "bad\xFFname.zip", {{"01-camera.glsl", camera}});
     writeFolder(sub / "=HYPERLINK(1)", {{"01-camera.glsl", stubFiles()["01-camera.glsl"]}});
+    writeFolder(sub / "cp1252", {{"01-camera.glsl", "// r\xe9sum\xe9 saved by Notepad\n" + camera}});
     writeText(sub / "notes.txt", "x");
     writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"01-camera\", \"weight\": 10}]}");
     const std::string roster = (rl::sourceRoot() / "tests" / "grading" / "fixtures" / "canvas-gradebook-export.csv").string();
@@ -756,7 +765,7 @@ TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
     EXPECT_EQ(r.status, 3) << "graded, with submissions left out of the Canvas export: " << r.output;
     ASSERT_TRUE(fs::exists(out / "summary.json")) << r.output;
     const json summary = readJson(out / "summary.json");
-    EXPECT_EQ(summary.at("students").get<int>(), 6) << summary.dump(2);
+    EXPECT_EQ(summary.at("students").get<int>(), 7) << summary.dump(2);
     std::map<std::string, double> scores;
     for (const std::string& id : summary.at("student_ids").get<std::vector<std::string>>())
         scores[id] = readJson(out / id / "results.json").at("score").get<double>();
@@ -764,9 +773,15 @@ TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
                                                      {"anon_x7Kq2", 10},
                                                      {"bad%FFname", 10},
                                                      {"caf%E9", 10},
+                                                     {"cp1252", 10},
                                                      {"doejane_1001", 10},
                                                      {"m\xC3\xBCllerj\xC3\xBCrgen_1005", 10}}));
     EXPECT_EQ(readJson(out / "caf%E9" / "grade.json").value("source_bytes", ""), "63 61 66 e9");
+    EXPECT_TRUE(contains(joinedNotes(load(out, "cp1252").notes), "were read as Windows-1252"));
+    // Byte-identical copies are listed, never marked down.
+    const json similar = summary.at("similar_submissions");
+    EXPECT_FALSE(similar.empty());
+    for (const json& p : similar) EXPECT_EQ(p.at("kind"), "identical") << p.dump();
     const std::string csv = readText(out / "grades.csv");
     for (const std::string& line : lines(csv))
         EXPECT_EQ(std::string("=+-@\t\r").find(line[0]), std::string::npos) << line;
@@ -779,10 +794,14 @@ TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
     EXPECT_TRUE(contains(index, "Smith, John (canvas-gradebook-export.csv line 4)")) << index;
     EXPECT_TRUE(contains(index, "anon_x7Kq2: an anonymous Canvas download")) << index;
     EXPECT_FALSE(contains(index, "Doe, Jane (canvas")) << "doejane_1001 has a submission";
+    EXPECT_TRUE(contains(index, "<h2 id=\"similar\">Similar submissions</h2>"));
+    EXPECT_TRUE(contains(index, "<h2 id=\"mistakes\">What the class got wrong</h2>"));
+    ASSERT_EQ(summary.at("class_mistakes").size(), 1u);
+    EXPECT_EQ(summary.at("class_mistakes")[0].at("passed"), 6);
     // The second run finds every record and writes the same bytes.
     CommandResult again = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
     EXPECT_EQ(again.status, 0) << again.output;
-    EXPECT_TRUE(contains(again.output, "6 students already graded")) << again.output;
+    EXPECT_TRUE(contains(again.output, "7 students already graded")) << again.output;
     EXPECT_EQ(readText(out / "grades.csv"), csv);
     if (!HasFailure()) fs::remove_all(root);
 }
