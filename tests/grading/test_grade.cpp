@@ -542,6 +542,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     writeFolder(sub / "broken", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
     writeFolder(sub / "a b&<c>", stubFiles());  // an id that needs escaping in HTML and in URLs
     writeText(sub / "corrupt.zip", "not a zip");
+    writeText(sub / "notes.txt", "not a student");  // issue 22: listed at the top of the report
     CommandResult run = runRaylab(gradeArgs(sub, out));
     ASSERT_EQ(run.status, 0) << run.output;
 
@@ -604,7 +605,13 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
                   "notes.right <= window.innerWidth && document.documentElement.scrollWidth <= window.innerWidth));"
                   "var box = document.getElementById('filter'); box.value = 'ggx.glsl:3';"
                   "box.dispatchEvent(new Event('input'));"
-                  "document.body.setAttribute('data-shown', document.getElementById('shown').textContent);</script></body>");
+                  "document.body.setAttribute('data-shown', document.getElementById('shown').textContent);"
+                  // Issue 22: what was not graded is on the first screen; the class's mistakes fit the width.
+                  "var ng = document.getElementById('not-graded').getBoundingClientRect();"
+                  "document.body.setAttribute('data-not-graded', String(ng.bottom <= 900 && ng.right <= window.innerWidth));"
+                  "var cm = document.getElementById('class-mistakes');"
+                  "document.body.setAttribute('data-mistakes', String(!!cm && cm.getBoundingClientRect().right <= "
+                  "window.innerWidth));</script></body>");
     writeText(out / "probe.html", probe);
     std::string probeDom = (root / "probe-dom.html").string();
     std::string layout = chromium + "--user-data-dir=" + (root / "chromium-probe").string() +
@@ -614,6 +621,8 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     std::string laidOut = readText(probeDom);
     EXPECT_TRUE(contains(laidOut, "data-fit=\"true\"")) << "the table is wider than 1280 px: " << laidOut.substr(0, 600);
     EXPECT_TRUE(contains(laidOut, "data-shown=\"1 shown\"")) << laidOut.substr(0, 600);
+    EXPECT_TRUE(contains(laidOut, "data-not-graded=\"true\"")) << laidOut.substr(0, 600);
+    EXPECT_TRUE(contains(laidOut, "data-mistakes=\"true\"")) << laidOut.substr(0, 600);
 
     // Sorting: the same page with two clicks on the Total header, as Chromium leaves the DOM.
     std::string clicked = index;
