@@ -538,15 +538,23 @@ void explainLoopGuard(ShaderDiagnostic& d) {
 }
 
 std::string loopTimeoutMessage(const std::vector<SourceLocation>& loops, int id, const std::string& where) {
-    std::string loop = "a loop";
+    const bool total = id > kLoopTotalFlag;
+    if (total) id -= kLoopTotalFlag;
+    std::string at;
     if (id >= 1 && id <= int(loops.size())) {
         const SourceLocation& l = loops[std::size_t(id) - 1];
         const std::string file = l.file.substr(l.file.find_last_of('/') + 1);
-        loop += " in " + file + ":" + std::to_string(l.line);
+        at = file + ":" + std::to_string(l.line);
     }
-    return loop + " ran more than " + std::to_string(kLoopLimit) + " iterations " + where +
-           ": on a GPU it would not finish (raylab ends every loop there, so the verdict is the same on every "
-           "machine)";
+    const std::string end = ": on a GPU it would not finish (raylab ends every loop there, so the verdict is the same on "
+                            "every machine)";
+    if (total)
+        return "the loops of the exercise files ran more than " + std::to_string(kLoopTotalLimit) +
+               " iterations in all " + where + (at.empty() ? "" : ", the last one tested being the loop in " + at) +
+               " (every run of a loop ended within " + std::to_string(kLoopLimit) +
+               ": a loop run too many times, or an outer loop that never ends)" + end;
+    return (at.empty() ? std::string("a loop") : "a loop in " + at) + " ran more than " + std::to_string(kLoopLimit) +
+           " iterations " + where + " in one run, without its condition becoming false" + end;
 }
 
 }  // namespace rl

@@ -113,6 +113,27 @@ TEST(LoopGuard, TheShaderLimitIsTheHostLimit) {
     const std::string s = text.str();
     ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_LIMIT = (\d+);)")));
     EXPECT_EQ(std::stoi(m[1]), kLoopLimit);
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_TOTAL_LIMIT = (\d+);)")));
+    EXPECT_EQ(std::stoi(m[1]), kLoopTotalLimit);
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_TOTAL_FLAG = (\d+);)")));
+    EXPECT_EQ(std::stoi(m[1]), kLoopTotalFlag);
+}
+
+// Issue 22: the message says which bound a loop met, and what was counted.
+TEST(LoopGuard, TheTimeoutSaysWhatWasMeasured) {
+    const std::vector<SourceLocation> loops = {{"/x/student/10-display.glsl", 24}};
+    const std::string one = loopTimeoutMessage(loops, 1, "for one input of toneMap");
+    EXPECT_EQ(one.rfind("a loop in 10-display.glsl:24 ran more than 16384 iterations for one input of toneMap in one run, "
+                        "without its condition becoming false: on a GPU",
+                        0),
+              0u)
+        << one;
+    const std::string total = loopTimeoutMessage(loops, kLoopTotalFlag + 1, "in one pixel");
+    EXPECT_EQ(total.rfind("the loops of the exercise files ran more than 60000 iterations in all in one pixel, the last "
+                          "one tested being the loop in 10-display.glsl:24",
+                          0),
+              0u)
+        << total;
 }
 
 TEST(LoopGuard, TrippedLoopIsTheLowestIdMarked) {
