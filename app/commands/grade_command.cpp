@@ -62,6 +62,11 @@ GradeSettings settingsFrom(const GradeCommandOptions& o) {
     if (o.jobs < 1) throw Error("--jobs: must be at least 1");
     if (!(o.timeout > 0)) throw Error("--timeout: must be more than 0 seconds");
     parseBackend(o.backend);  // refused now, not in every student's worker
+    // Named by its option, the path quoted short: a path too long for one line of message named
+    // nothing (found by the fuzzer, issue 22).
+    std::error_code ec;
+    if (!o.rubric.empty() && !std::filesystem::is_regular_file(o.rubric, ec))
+        throw Error("--rubric: " + quotedValue(o.rubric) + ": rubric file not found");
     s.rubric = loadRubric(o.rubric.empty() ? defaultRubricPath() : std::filesystem::path(o.rubric));
     if (!o.idColumn.empty()) s.rubric.idColumn = o.idColumn;
     s.out = o.out;
