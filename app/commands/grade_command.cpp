@@ -62,6 +62,11 @@ GradeSettings settingsFrom(const GradeCommandOptions& o) {
     if (o.jobs < 1) throw Error("--jobs: must be at least 1");
     if (!(o.timeout > 0)) throw Error("--timeout: must be more than 0 seconds");
     parseBackend(o.backend);  // refused now, not in every student's worker
+    // Named by its option, the path quoted short: a path too long for one line of message named
+    // nothing (found by the fuzzer, issue 22).
+    std::error_code ec;
+    if (!o.rubric.empty() && !std::filesystem::is_regular_file(o.rubric, ec))
+        throw Error("--rubric: " + quotedValue(o.rubric) + ": rubric file not found");
     s.rubric = loadRubric(o.rubric.empty() ? defaultRubricPath() : std::filesystem::path(o.rubric));
     if (!o.idColumn.empty()) s.rubric.idColumn = o.idColumn;
     s.out = o.out;
@@ -85,7 +90,18 @@ int runExports(const GradeCommandOptions& o, const std::filesystem::path& out) {
     return status;
 }
 
+// Every export asked for, checked before the first student is graded: a
+// wrong roster or option found after hours of grading costs the hours.
+void checkExports(const GradeCommandOptions& o) {
+    for (const std::string& format : o.exports) {
+        ExportOptions e = o.exportOptions;
+        e.format = format;
+        checkExportOptions(e);
+    }
+}
+
 int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
+    checkExports(o);
     if (exportOnly) {
         if (o.exports.empty()) throw Error("grade export: --format canvas|moodle|csv is required");
         if (o.exports.size() > 1 && !o.exportOptions.output.empty())
@@ -116,6 +132,7 @@ int runGradeCommand(const GradeCommandOptions& o, bool merge, bool exportOnly) {
     run.submissions = o.submissions;
     run.settings = settingsFrom(o);
     if (!o.shard.empty()) parseShard(o.shard, run.shardIndex, run.shardCount);
+    run.roster = o.exportOptions.roster;
     int status = runGrade(run, std::cout);
     if (status != 0) return status;
     return runExports(o, run.settings.out);

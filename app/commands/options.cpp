@@ -41,7 +41,13 @@ std::string sizeProblem(const std::string& text, Size& size) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
     long long pixels = 0;
-    if (text.size() > 32 || std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
+    // At most 5 digits a side: sscanf's %d overflows silently ("4294967328" read as 32).
+    const std::size_t cross = text.find_first_of("xX");
+    const bool digitsOnly = cross != std::string::npos && cross >= 1 && cross <= 5 && text.size() - cross - 1 >= 1 &&
+                            text.size() - cross - 1 <= 5 &&
+                            text.find_first_not_of("0123456789", 0) == cross &&
+                            text.find_first_not_of("0123456789", cross + 1) == std::string::npos;
+    if (!digitsOnly || std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
         (x != 'x' && x != 'X') || w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide ||
         !std::isdigit(static_cast<unsigned char>(text[0])))
         return "expected WIDTHxHEIGHT between 1x1 and 16384x16384, e.g. 640x480, not " + quotedValue(text);

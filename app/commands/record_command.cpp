@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/isolated.h"
+#include "core/message.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -79,7 +80,12 @@ void runRecord(const RecordOptions& o) {
         sweepName = name;
         if (sweepName != "exposure" && sweepName != "roughness" && sweepName != "metallic")
             throw Error("--sweep: unknown value '" + sweepName + "' (expected exposure, roughness or metallic)");
-        if (sweepName == "exposure" && !(from > 0 && to > 0)) throw Error("--sweep: exposure must be > 0");
+        // inf or nan parse as numbers and made black frames with exit 0. 2^20 stops either way
+        // is far past any picture (a display value of 1 at exposure 1 is 2^20 times too bright there).
+        if (!std::isfinite(from) || !std::isfinite(to))
+            throw Error("--sweep: FROM and TO must be finite numbers, not " + quotedValue(o.sweep));
+        if (sweepName == "exposure" && !(from >= 0x1p-20 && to >= 0x1p-20 && from <= 0x1p20 && to <= 0x1p20))
+            throw Error("--sweep: exposure must be between 2^-20 and 2^20 (about 1e-6 and 1e6), not " + quotedValue(o.sweep));
         if (sweepName != "exposure" && !(from >= 0 && from <= 1 && to >= 0 && to <= 1))
             throw Error("--sweep: " + sweepName + " must be in [0, 1]");
     }

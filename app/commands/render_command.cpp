@@ -34,9 +34,47 @@ struct RenderOptions {
     bool generic = false;
 };
 
+// The PNG and the PFM of one render, both replaced or neither: each is
+// written in full beside its destination first (a full disk fails there,
+// leaving both old files as they were), then both are renamed into place.
+void writeRenderOutputs(const std::string& png, const std::string& pfm, const Rendering& result) {
+    namespace fs = std::filesystem;
+    if (pfm.empty()) {
+        writePng(png, result.display);
+        return;
+    }
+    const std::string pngPart = png + ".raylab-part", pfmPart = pfm + ".raylab-part";
+    std::error_code ec;
+    try {
+        writePng(pngPart, result.display);
+        writePfm(pfmPart, result.radiance);
+    } catch (...) {
+        fs::remove(pngPart, ec);
+        fs::remove(pfmPart, ec);
+        throw;
+    }
+    fs::rename(pfmPart, pfm, ec);
+    if (ec) {
+        fs::remove(pngPart, ec);
+        fs::remove(pfmPart, ec);
+        throw Error(pfm + ": cannot be written (" + ec.message() + "); " + png + " was left as it was");
+    }
+    fs::rename(pngPart, png, ec);
+    if (ec) {
+        fs::remove(pngPart, ec);
+        throw Error(png + ": cannot be written (" + ec.message() + ")");
+    }
+}
+
 void runRender(const RenderOptions& o) {
     requireOutputPath(o.png, "PNG");
     if (!o.pfm.empty()) requireOutputPath(o.pfm, "PFM");
+    if (!o.pfm.empty()) {
+        std::error_code ec;
+        const std::filesystem::path a = std::filesystem::weakly_canonical(o.png, ec),
+                                    b = std::filesystem::weakly_canonical(o.pfm, ec);
+        if (a == b) throw Error("--hdr: " + o.pfm + " is also the PNG of -o: give the PFM a file of its own");
+    }
     Scene scene = sceneForCommand(o.scene, o.size);
     if (o.spp != 0) scene.render.spp = o.spp;  // a square from 1 to 1024 (the option's validator)
     int bounce = 0;
@@ -63,8 +101,7 @@ void runRender(const RenderOptions& o) {
         frame.viewBounce = bounce;
         result = renderOnce(picture, scene, frame);
     }
-    writePng(o.png, result.display);
-    if (!o.pfm.empty()) writePfm(o.pfm, result.radiance);
+    writeRenderOutputs(o.png, o.pfm, result);
     std::cout << std::filesystem::absolute(o.png).lexically_normal().string() << "\n";
     if (!o.pfm.empty()) std::cout << std::filesystem::absolute(o.pfm).lexically_normal().string() << "\n";
 }

@@ -2,9 +2,14 @@
 
 #include "course/exercise_registry.h"
 #include "core/error.h"
+#include "core/paths.h"
+#include "core/message.h"
 #include "core/process_pool.h"
 #include "grading/atomic_file.h"
+#include "grading/entry_name.h"
+#include "grading/lms_export.h"
 #include "grading/outputs.h"
+#include "grading/similarity.h"
 #include "grading/summary.h"
 #include "shader/source_assembler.h"
 
@@ -87,12 +92,20 @@ ExerciseReport reportWithReason(const ExerciseInfo& info, CheckStatus status, co
     return r;
 }
 
+// Where the record says the student's work came from: the entry's name, as
+// a safe string, with its bytes kept when they had to be escaped.
+void setSource(StudentGrade& g, const SubmissionEntry& entry) {
+    const std::string raw = entry.path.filename().string();
+    g.source = safeEntryId(raw);
+    g.sourceBytes = g.source == raw ? "" : hexBytes(raw);
+}
+
 // The record of a student whose worker died or hung: kept so that the
 // student appears in every output with the reason, and regraded next time.
 StudentGrade failedRecord(const SubmissionEntry& entry, const Rubric& rubric, const std::string& why) {
     StudentGrade g;
     g.id = entry.id;
-    g.source = entry.path.filename().string();
+    setSource(g, entry);
     g.complete = false;
     g.notes.push_back("the grader itself failed for this submission (" + why +
                       "); it is graded again on the next run");
@@ -119,6 +132,24 @@ std::string workerMain(const SubmissionEntry& entry, const GradeSettings& settin
         std::fprintf(stderr, "raylab: grading %s: %s\n", entry.id.c_str(), e.what());
         throw ChildExit{2};
     }
+}
+
+// The graded copies of every student's exercise files, compared (grading/similarity.h).
+std::vector<SimilarPair> similarPairs(const fs::path& out, const Rubric& rubric, const std::vector<StudentGrade>& grades) {
+    std::vector<SimilarityFile> files, stubs;
+    std::error_code ec;
+    for (const RubricExercise& r : rubric.exercises) {
+        const ExerciseInfo& info = findExercise(r.id);
+        if (fs::is_regular_file(exercisesDir() / info.file(), ec))
+            stubs.push_back({"", r.id, readWholeFile(exercisesDir() / info.file())});
+        for (const StudentGrade& g : grades) {
+            const ExerciseGrade* x = g.find(r.id);
+            if (!x || x->refused) continue;
+            const fs::path file = studentDir(out, g.id) / "submission" / info.file();
+            if (fs::is_regular_file(fs::symlink_status(file, ec))) files.push_back({g.id, r.id, readWholeFile(file)});
+        }
+    }
+    return findSimilarSubmissions(files, stubs);
 }
 
 }  // namespace
@@ -151,10 +182,13 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
 
     StudentGrade grade;
     grade.id = entry.id;
-    grade.source = entry.path.filename().string();
+    setSource(grade, entry);
     grade.fingerprint = submissionFingerprint(entry);
     StagedSubmission staged = stageSubmission(entry, dir / "submission", dir / ".unzip");
     grade.notes = staged.notes;
+    if (!grade.sourceBytes.empty())
+        grade.notes.insert(grade.notes.begin(), "the name of this submission is not plain UTF-8 text (bytes " +
+                                                    grade.sourceBytes + "): graded as " + grade.id);
     if (staged.problem != StagedSubmission::Problem::None) grade.notes.insert(grade.notes.begin(), staged.problemReason);
 
     CheckOptions options;
@@ -286,7 +320,7 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
     if (pathsOverlap(settings.out, options.submissions))
         throw Error(settings.out.string() + ": the output folder must lie outside " + options.submissions.string() +
                     " (and hold no submissions)");
-    for (const std::string& ignored : list.ignored) log << "ignored in " << options.submissions.string() << ": " << ignored << "\n";
+    for (const std::string& ignored : list.ignored) log << "ignored in " << printable(options.submissions.string(), 300) << ": " << printable(ignored, 300) << "\n";
     std::error_code ec;
     fs::create_directories(settings.out, ec);
     if (ec) throw Error(settings.out.string() + ": cannot create the output folder (" + ec.message() + ")");
@@ -316,7 +350,11 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
     info.shardCount = options.shardCount;
     info.submissionsTotal = list.students.size();
     info.ignored = list.ignored;
-    writeClassOutputs(settings.out, settings.rubric, grades, gradeSummary(settings.rubric, grades, info));
+    if (!options.roster.empty() && options.shardCount <= 1)
+        rosterCoverage(options.roster, grades, info.rosterWithoutSubmission, info.unmatchedSubmissions);
+    nlohmann::json summary = gradeSummary(settings.rubric, grades, info);
+    summary["similar_submissions"] = toJson(similarPairs(settings.out, settings.rubric, grades));
+    writeClassOutputs(settings.out, settings.rubric, grades, summary);
     char line[256];
     std::snprintf(line, sizeof line, "graded %d, skipped %d (already graded), %d failed to grade, in %.1f s: ",
                   batch.graded, batch.skipped, batch.failed, info.seconds);
@@ -331,7 +369,7 @@ int runGradescope(const fs::path& root, GradeSettings settings, std::ostream& lo
                             {"output", "raylab could not grade this submission: " + why},
                             {"output_format", "text"},
                             {"tests", nlohmann::json::array()}};
-        writeOutputFile(results, j.dump(2) + "\n");
+        writeOutputFile(results, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
         log << "raylab grade --gradescope: " << why << "\n";
     };
     SubmissionEntry entry;

@@ -71,6 +71,7 @@ struct GradeRunOptions {
     std::filesystem::path submissions;
     GradeSettings settings;
     int shardIndex = 1, shardCount = 1;  // --shard I/N
+    std::filesystem::path roster;        // --roster: its students without a submission go into the report
 };
 int runGrade(const GradeRunOptions& options, std::ostream& log);
 

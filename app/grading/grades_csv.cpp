@@ -1,15 +1,25 @@
 #include "grading/grades_csv.h"
 
 #include <algorithm>
+#include <regex>
 
 namespace rl {
 
+bool startsLikeFormula(const std::string& text) {
+    if (text.empty() || std::string("=+-@\t\r").find(text[0]) == std::string::npos) return false;
+    static const std::regex number(R"(^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$)");
+    return !std::regex_match(text, number);
+}
+
 std::string csvField(const std::string& text) {
-    // Ids are written as they are (an LMS matches them exactly), never
-    // rewritten against spreadsheet formulas: import the file, do not open it.
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    // Instructors open these files in a spreadsheet before they import them:
+    // a cell that would start a formula gets a leading ' (OWASP's rule). The
+    // columns the importers match students by are numbers (Canvas's ID) or
+    // are checked by lms_export.cpp before they are written.
+    const std::string cell = startsLikeFormula(text) ? "'" + text : text;
+    if (cell.find_first_of(",;\"\r\n") == std::string::npos) return cell;
     std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
 

@@ -15,7 +15,13 @@ namespace rl {
 
 std::string gradesCsv(const Rubric& rubric, const std::vector<StudentGrade>& grades);
 
-// RFC 4180 quoting, only where needed.
+// Whether a spreadsheet would read the cell as a formula (OWASP's CSV
+// injection rule): it starts with '=', '+', '-', '@', a tab or a carriage
+// return, and is not a plain number ("-1.5" stays a number).
+bool startsLikeFormula(const std::string& text);
+
+// RFC 4180 quoting, only where needed; a cell that startsLikeFormula gets a
+// leading ' first, so that no spreadsheet runs it (docs/decisions.md).
 std::string csvField(const std::string& text);
 
 }  // namespace rl

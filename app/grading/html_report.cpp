@@ -206,6 +206,33 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
             "its tooltip gives the whole reason, and the student's page the renders, differences and logs. "
             "Files: <a href=\"grades.csv\">grades.csv</a>, <a href=\"summary.json\">summary.json</a>, "
             "<a href=\"rubric.json\">rubric.json</a>.</p>\n";
+    // What was not graded, first: an instructor must see a dropped student here, not on a terminal long closed.
+    const json ignored = summary.value("ignored_entries", json::array());
+    const json missing = summary.value("roster_without_submission", json::array());
+    const json unmatched = summary.value("submissions_without_roster_student", json::array());
+    if (!ignored.empty() || !missing.empty() || !unmatched.empty()) {
+        html += "<div class=\"notes\" id=\"not-graded\"><b>Not graded</b>";
+        if (!ignored.empty()) {
+            html += "<p>" + std::to_string(ignored.size()) + " entr" + (ignored.size() == 1 ? "y" : "ies") +
+                    " of the submissions folder " + (ignored.size() == 1 ? "is" : "are") +
+                    " no student, and " + (ignored.size() == 1 ? "was" : "were") + " not graded:</p><ul>\n";
+            for (const json& i : ignored) html += "<li>" + htmlEscape(i.is_string() ? i.get<std::string>() : i.dump()) + "</li>\n";
+            html += "</ul>\n";
+        }
+        if (!missing.empty()) {
+            html += "<p>" + std::to_string(missing.size()) + " student" + (missing.size() == 1 ? "" : "s") +
+                    " of the roster without a submission:</p><ul>\n";
+            for (const json& m : missing) html += "<li>" + htmlEscape(m.is_string() ? m.get<std::string>() : m.dump()) + "</li>\n";
+            html += "</ul>\n";
+        }
+        if (!unmatched.empty()) {
+            html += "<p>" + std::to_string(unmatched.size()) + " graded submission" + (unmatched.size() == 1 ? "" : "s") +
+                    " that no roster student matches (left out of the gradebook export):</p><ul>\n";
+            for (const json& u : unmatched) html += "<li>" + htmlEscape(u.is_string() ? u.get<std::string>() : u.dump()) + "</li>\n";
+            html += "</ul>\n";
+        }
+        html += "</div>\n";
+    }
     html += "<div class=\"filter\"><input type=\"search\" id=\"filter\" placeholder=\"Filter: id, status, reason, "
             "note...\" aria-label=\"Filter the students\"><label><input type=\"checkbox\" id=\"problems-only\"> only "
             "students with problems</label><span class=\"muted\" id=\"shown\"></span></div>\n";
@@ -239,6 +266,53 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
                 std::to_string(problems) + "</td><td class=\"l notecol\">" + htmlEscape(notes) + "</td></tr>\n";
     }
     html += "</tbody>\n</table>\n";
+    // What the class got wrong: the page to open before the next lecture.
+    const json mistakes = summary.value("class_mistakes", json::array());
+    std::string rows;
+    for (const json& m : mistakes) {
+        std::string list;
+        for (const json& h : m.value("hints", json::array()))
+            list += "<li>" + std::to_string(h.value("students", 0)) + " &times; " + htmlEscape(h.value("hint", "")) + "</li>";
+        std::string probes;
+        for (const json& p : m.value("failed_probe_groups", json::array()))
+            probes += (probes.empty() ? "" : ", ") + htmlEscape(p.value("probe_group", "")) + " (" +
+                      std::to_string(p.value("students", 0)) + ")";
+        std::string statuses;
+        for (const json& st : m.value("not_passed", json::array()))
+            statuses += (statuses.empty() ? "" : ", ") + htmlEscape(st.value("status", "")) + " " +
+                        std::to_string(st.value("students", 0));
+        if (statuses.empty()) continue;
+        rows += "<tr><td class=\"l\">" + htmlEscape(m.value("exercise", "")) + "</td><td>" +
+                std::to_string(m.value("passed", 0)) + "</td><td class=\"l wrap\">" + statuses +
+                "</td><td class=\"l wrap\">" + (list.empty() ? "" : "<ul>" + list + "</ul>") +
+                "</td><td class=\"l wrap\">" + probes + "</td></tr>\n";
+    }
+    if (!rows.empty())
+        html += "<h2 id=\"mistakes\">What the class got wrong</h2>\n<table id=\"class-mistakes\">\n<thead><tr><th "
+                "class=\"l\">Exercise</th><th>Passed</th><th class=\"l\">Not passed</th><th class=\"l\">Mistakes the "
+                "checker recognised (students &times; hint)</th><th class=\"l\">Probe groups failed (students)</th>"
+                "</tr></thead>\n<tbody>\n" + rows + "</tbody>\n</table>\n";
+    // Similar submissions: for the instructor to look at; grades are not changed by them.
+    const json similar = summary.value("similar_submissions", json::array());
+    if (!similar.empty()) {
+        html += "<h2 id=\"similar\">Similar submissions</h2>\n<p class=\"muted\">Pairs whose exercise file is the same "
+                "after white space and comments are removed (identical), or shares at least 80% of its code outside the "
+                "stub and outside code common to many students (similar). Information only: no grade changes.</p>\n";
+        for (const json& p : similar) {
+            const std::string a = p.value("a", ""), b = p.value("b", "");
+            char share[16];
+            std::snprintf(share, sizeof share, "%.0f%%", 100.0 * p.value("similarity", 0.0));
+            html += "<details class=\"similar\"><summary>" + htmlEscape(p.value("exercise", "")) + ": <a href=\"" +
+                    urlSegment(a) + "/index.html\">" + htmlEscape(a) + "</a> and <a href=\"" + urlSegment(b) +
+                    "/index.html\">" + htmlEscape(b) + "</a> &middot; " + htmlEscape(p.value("kind", "")) + " (" +
+                    share + ")</summary>\n<table><thead><tr><th>" + htmlEscape(a) + " line</th><th>" + htmlEscape(b) +
+                    " line</th><th class=\"l\">Shared line</th></tr></thead><tbody>\n";
+            for (const json& l : p.value("shared_lines", json::array()))
+                html += "<tr><td>" + std::to_string(l.value("line_a", 0)) + "</td><td>" + std::to_string(l.value("line_b", 0)) +
+                        "</td><td class=\"l\"><code>" + htmlEscape(l.value("text", "")) + "</code></td></tr>\n";
+            html += "</tbody></table></details>\n";
+        }
+    }
     html += kSortScript;
     html += kFilterScript;
     html += "</body>\n</html>\n";

@@ -1,6 +1,7 @@
 #include "grading/lms_export.h"
 
 #include "core/error.h"
+#include "core/message.h"
 #include "grading/atomic_file.h"
 #include "grading/grades_csv.h"
 #include "grading/roster.h"
@@ -45,22 +46,52 @@ struct Matched {
 
 }  // namespace
 
-std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& grades, const ExportOptions& o,
-                       ExportReport& report) {
+namespace {
+
+std::optional<Roster> checkedRoster(const ExportOptions& o) {
     if (o.format != "canvas" && o.format != "moodle" && o.format != "csv")
-        throw Error("--format: expected canvas, moodle or csv, got '" + o.format + "'");
-    if (o.format == "csv") {
-        report.rows = grades.size();
-        return gradesCsv(rubric, grades);
-    }
+        throw Error("--format: expected canvas, moodle or csv, got " + quotedValue(o.format));
+    if (o.format == "csv") return std::nullopt;
     if (o.moodleId != "username" && o.moodleId != "idnumber" && o.moodleId != "email")
-        throw Error("--moodle-id: expected username, idnumber or email, got '" + o.moodleId + "'");
+        throw Error("--moodle-id: expected username, idnumber or email, got " + quotedValue(o.moodleId));
     std::optional<Roster> roster;
     if (!o.roster.empty()) roster = loadRoster(o.roster);
     if (roster && o.format == "canvas" && roster->kind != Roster::Kind::Canvas)
         throw Error(o.roster.string() + ": a Moodle roster; the Canvas export needs Canvas's gradebook export as roster");
     if (roster && o.format == "moodle" && roster->kind != Roster::Kind::Moodle)
         throw Error(o.roster.string() + ": a Canvas roster; the Moodle export needs a Moodle export as roster");
+    return roster;
+}
+
+}  // namespace
+
+void checkExportOptions(const ExportOptions& options) { checkedRoster(options); }
+
+void rosterCoverage(const fs::path& rosterFile, const std::vector<StudentGrade>& grades,
+                    std::vector<std::string>& withoutSubmission, std::vector<std::string>& unmatched) {
+    const Roster roster = loadRoster(rosterFile);
+    std::vector<bool> taken(roster.students.size(), false);
+    for (const StudentGrade& g : grades) {
+        std::string why;
+        const int k = matchRosterStudent(roster, g.id, g.source, why);
+        if (k < 0)
+            unmatched.push_back(g.id + ": " + why);
+        else
+            taken[std::size_t(k)] = true;
+    }
+    for (std::size_t k = 0; k < roster.students.size(); ++k)
+        if (!taken[k])
+            withoutSubmission.push_back(roster.students[k].name + " (" + rosterFile.filename().string() + " line " +
+                                        std::to_string(roster.students[k].line) + ")");
+}
+
+std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& grades, const ExportOptions& o,
+                       ExportReport& report) {
+    std::optional<Roster> roster = checkedRoster(o);
+    if (o.format == "csv") {
+        report.rows = grades.size();
+        return gradesCsv(rubric, grades);
+    }
 
     std::vector<const StudentGrade*> sorted;
     for (const StudentGrade& g : grades) sorted.push_back(&g);
@@ -114,12 +145,18 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
                           m.student->section};
             } else {
                 LmsDownloadName n = parseLmsDownloadName(m.grade->source);
-                static const std::regex grouped(R"(^([a-z0-9]*)_(\d+)$)");
+                static const std::regex grouped(R"(^([\s\S]*)_(\d+)$)");
                 std::smatch g;
                 if (n.kind != LmsDownloadName::Kind::Canvas && std::regex_match(m.grade->id, g, grouped)) {
                     n.kind = LmsDownloadName::Kind::Canvas;
                     n.name = g[1];
                     n.number = g[2];
+                }
+                if (n.anonymous) {
+                    report.unmatched.push_back(m.grade->id +
+                                               ": an anonymous Canvas download (anon_<id>): Canvas gives no user id; "
+                                               "import these grades in SpeedGrader, or turn anonymity off and download again");
+                    continue;
                 }
                 if (n.kind != LmsDownloadName::Kind::Canvas) {
                     report.unmatched.push_back(m.grade->id +
@@ -150,6 +187,13 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
                 id = o.moodleId == "username" ? m.student->username
                      : o.moodleId == "idnumber" ? m.student->idNumber
                                                 : m.student->email;
+                if (startsLikeFormula(id)) {
+                    report.unmatched.push_back(m.grade->id + ": the " + idHeader + " of " + m.student->name +
+                                               " (line " + std::to_string(m.student->line) +
+                                               ") starts like a spreadsheet formula; written with a leading ' Moodle "
+                                               "would not find the user and stop the import: choose another --moodle-id");
+                    continue;
+                }
                 if (id.empty()) {
                     report.unmatched.push_back(m.grade->id + ": the roster has no " + idHeader + " for " +
                                                m.student->name + " (line " + std::to_string(m.student->line) +
@@ -163,6 +207,11 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
                     continue;
                 }
                 id = m.grade->id;
+                if (startsLikeFormula(id)) {
+                    report.unmatched.push_back(m.grade->id + ": starts like a spreadsheet formula; not a " + idHeader +
+                                               " Moodle knows: give a Moodle export with --roster");
+                    continue;
+                }
             }
             StudentScore s = scoreStudent(rubric, *m.grade);
             std::vector<std::string> fields = {id, formatPoints(s.total)};
@@ -219,14 +268,14 @@ void printExportReport(const ExportReport& report, const std::string& format, st
     if (!report.unmatched.empty()) {
         log << report.unmatched.size() << " submission" << (report.unmatched.size() == 1 ? "" : "s")
             << " left out of the export (fix them before importing):\n";
-        for (const std::string& u : report.unmatched) log << "  " << u << "\n";
+        for (const std::string& u : report.unmatched) log << "  " << printable(u, 500) << "\n";
     }
     if (!report.withoutSubmission.empty()) {
         log << report.withoutSubmission.size() << " student" << (report.withoutSubmission.size() == 1 ? "" : "s")
             << " of the roster without a submission (not in the export):\n";
-        for (const std::string& s : report.withoutSubmission) log << "  " << s << "\n";
+        for (const std::string& s : report.withoutSubmission) log << "  " << printable(s, 500) << "\n";
     }
-    for (const std::string& n : report.notes) log << "note: " << n << "\n";
+    for (const std::string& n : report.notes) log << "note: " << printable(n, 500) << "\n";
 }
 
 }  // namespace rl

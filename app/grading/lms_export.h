@@ -50,6 +50,17 @@ struct ExportReport {
     std::vector<std::string> notes;             // other things the instructor must know
 };
 
+// Checks the options of one export before anything is graded: the format,
+// --moodle-id, and the roster (readable, and of the LMS the format is for).
+// Throws rl::Error naming the option or the roster file.
+void checkExportOptions(const ExportOptions& options);
+
+// The roster students no graded submission matches ("Name (line N)"), and
+// the submissions that match no roster student ("id: why"), as the export's
+// report lists them.
+void rosterCoverage(const std::filesystem::path& roster, const std::vector<StudentGrade>& grades,
+                    std::vector<std::string>& withoutSubmission, std::vector<std::string>& unmatched);
+
 // Writes the export from the students' records in OUT (as `raylab grade`
 // leaves them). Throws rl::Error for a bad format, roster or OUT.
 ExportReport exportGrades(const std::filesystem::path& out, const ExportOptions& options);

@@ -26,7 +26,7 @@ void writeReferenceImages(const fs::path& out, const std::vector<CheckScene>& sc
 
 void writeStudentOutputs(const fs::path& out, const Rubric& rubric, const StudentGrade& grade) {
     fs::path dir = studentDir(out, grade.id);
-    writeOutputFile(dir / "results.json", gradescopeResults(rubric, grade).dump(2) + "\n");
+    writeOutputFile(dir / "results.json", gradescopeResults(rubric, grade).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     writeOutputFile(dir / "index.html", studentPage(rubric, grade));
 }
 
@@ -35,7 +35,7 @@ void writeClassOutputs(const fs::path& out, const Rubric& rubric, const std::vec
     for (const StudentGrade& g : grades) writeStudentOutputs(out, rubric, g);
     writeOutputFile(out / "rubric.json", toJson(rubric).dump(2) + "\n");
     writeOutputFile(out / "grades.csv", gradesCsv(rubric, grades));
-    writeOutputFile(out / "summary.json", summary.dump(2) + "\n");
+    writeOutputFile(out / "summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     writeOutputFile(out / "index.html", classIndexPage(rubric, grades, summary));
 }
 

@@ -187,15 +187,42 @@ LmsDownloadName parseLmsDownloadName(const std::string& entryName) {
         n.student = n.name + "_" + n.number;
         return n;
     }
-    // Canvas: "<lastfirst>[_LATE]_<user id>_<file id>_<file name>".
-    static const std::regex canvas(R"(^([a-z0-9]*)(_LATE|_late)?_(\d+)_(\d+)_(.+)$)");
-    if (std::regex_match(entryName, m, canvas)) {
+    // Canvas (lib/content_zipper.rb): sanitize_file_name of "<sortable name,
+    // downcased>[_LATE]_<user id>" (or "[LATE_]anon_<anonymous id>" when the
+    // assignment grades anonymously), then "_<attachment id>_<file name>".
+    // sanitize_file_name keeps word characters only: Unicode letters and
+    // digits, and '_' ("m\u00fcllerj\u00fcrgen", "\u674e\u96f7"); so the name
+    // part is every byte that is a lower-case ASCII letter, a digit, '_' or
+    // part of a non-ASCII character, and the ids are found at the first
+    // "_<digits>_<digits>_" after it (as Canvas itself finds them again when
+    // graded files are uploaded).
+    static const std::regex anonymous(R"(^(LATE_)?anon_([A-Za-z0-9]+)_(\d+)_([\s\S]+)$)");
+    if (std::regex_match(entryName, m, anonymous)) {
         n.kind = LmsDownloadName::Kind::Canvas;
-        n.name = m[1];
-        n.late = m[2].matched;
-        n.number = m[3];
-        n.file = m[5];
-        n.student = n.name + "_" + n.number;
+        n.anonymous = true;
+        n.late = m[1].matched;
+        n.number = m[2];
+        n.file = m[4];
+        n.student = "anon_" + n.number;
+        return n;
+    }
+    static const std::regex ids(R"(^(_LATE|_late)?_(\d+)_(\d+)_([\s\S]+)$)");
+    for (std::size_t end = 0; end < entryName.size(); ++end) {
+        const unsigned char c = static_cast<unsigned char>(entryName[end]);
+        if (c == '_') {
+            const std::string rest = entryName.substr(end);
+            if (std::regex_match(rest, m, ids)) {
+                n.kind = LmsDownloadName::Kind::Canvas;
+                n.name = entryName.substr(0, end);
+                n.late = m[1].matched;
+                n.number = m[2];
+                n.file = m[4];
+                n.student = n.name + "_" + n.number;
+                return n;
+            }
+        } else if (!(std::islower(c) || std::isdigit(c) || c >= 0x80)) {
+            break;  // not a character sanitize_file_name keeps: no Canvas name
+        }
     }
     return n;
 }
@@ -219,6 +246,11 @@ int matchRosterStudent(const Roster& roster, const std::string& id, const std::s
         std::smatch m;
         static const std::regex grouped(R"(^(.*)_(\d+)$)");
         LmsDownloadName n = parseLmsDownloadName(candidate);
+        if (n.anonymous) {
+            why = "an anonymous Canvas download (anon_" + n.number +
+                  "): Canvas gives no user id or name with it, so no roster student can be matched";
+            return -1;
+        }
         if (n.kind == LmsDownloadName::Kind::None && std::regex_match(candidate, m, grouped)) {
             n.kind = roster.kind == Roster::Kind::Canvas ? LmsDownloadName::Kind::Canvas : LmsDownloadName::Kind::Moodle;
             n.name = m[1];

@@ -15,7 +15,10 @@
 // roster's ids), or the names the LMS's bulk download gives:
 //   - Canvas: "doejane_12345_67890_05-ggx.glsl" (sortable name without
 //     punctuation, the Canvas user id, the file id, the file's own name;
-//     "_LATE" after the name for a late submission), one file each;
+//     "_LATE" after the name for a late submission), one file each; the
+//     name keeps Unicode letters ("müllerjürgen_1005_70021_01-camera.glsl");
+//     with anonymous grading "anon_<anonymous id>_<file id>_<file name>"
+//     ("LATE_anon_..." when late), which no roster can match;
 //   - Moodle: "Jane Doe_12345_assignsubmission_file_" (full name, the
 //     participant id of this assignment, the plugin), a folder each, or
 //     "Jane Doe_12345_assignsubmission_file_05-ggx.glsl" without folders.
@@ -64,7 +67,8 @@ struct LmsDownloadName {
     std::string name;     // "doejane" / "Jane Doe"
     std::string number;   // Canvas user id / Moodle participant id
     std::string file;     // the file's own name ("" for a Moodle folder)
-    bool late = false;    // Canvas "_LATE"
+    bool late = false;    // Canvas "_LATE" ("LATE_" before "anon_")
+    bool anonymous = false;  // Canvas anonymous grading: "anon_<id>"; number is that id, there is no name
 };
 LmsDownloadName parseLmsDownloadName(const std::string& entryName);
 

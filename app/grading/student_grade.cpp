@@ -28,14 +28,17 @@ json toJson(const StudentGrade& g) {
         r["refused"] = e.refused;
         exercises.push_back(r);
     }
-    return {{"id", g.id},         {"source", g.source},     {"fingerprint", g.fingerprint}, {"notes", g.notes},
-            {"seconds", g.seconds}, {"complete", g.complete}, {"exercises", exercises}};
+    json j = {{"id", g.id},         {"source", g.source},     {"fingerprint", g.fingerprint}, {"notes", g.notes},
+              {"seconds", g.seconds}, {"complete", g.complete}, {"exercises", exercises}};
+    if (!g.sourceBytes.empty()) j["source_bytes"] = g.sourceBytes;
+    return j;
 }
 
 StudentGrade studentGradeFromJson(const json& j) {
     StudentGrade g;
     g.id = j.at("id").get<std::string>();
     g.source = j.value("source", "");
+    g.sourceBytes = j.value("source_bytes", "");
     g.fingerprint = j.value("fingerprint", "");
     g.notes = j.value("notes", std::vector<std::string>{});
     g.seconds = j.value("seconds", 0.0);
@@ -62,7 +65,7 @@ std::optional<StudentGrade> loadStudentGrade(const fs::path& out, const std::str
 }
 
 void saveStudentGrade(const fs::path& out, const StudentGrade& grade) {
-    writeOutputFile(gradeRecordPath(out, grade.id), toJson(grade).dump(1) + "\n");
+    writeOutputFile(gradeRecordPath(out, grade.id), toJson(grade).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace rl

@@ -27,7 +27,8 @@ std::string gradeStatus(const ExerciseGrade& grade);
 
 struct StudentGrade {
     std::string id;                        // the entry's name in SUBMISSIONS ("alice" for alice.zip)
-    std::string source;                    // that entry ("alice.zip")
+    std::string source;                    // that entry ("alice.zip"), escaped when not plain UTF-8 (grading/entry_name.h)
+    std::string sourceBytes;               // the entry's name as bytes (hex) when `source` is escaped; else ""
     std::string fingerprint;               // submissionFingerprint() of what was graded
     std::vector<std::string> notes;        // about the whole submission: ignored files, nesting, refusals
     std::vector<ExerciseGrade> exercises;  // in rubric order

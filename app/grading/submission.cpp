@@ -4,6 +4,8 @@
 #include "core/error.h"
 #include "core/file_handle.h"
 #include "grading/atomic_file.h"
+#include "grading/entry_name.h"
+#include "grading/legacy_text.h"
 #include "grading/roster.h"
 #include "grading/safe_unzip.h"
 #include "shader/source_assembler.h"
@@ -30,7 +32,14 @@ namespace {
 const std::set<std::string> kReservedIds = {"grades.csv", "index.html", "summary.json", "rubric.json", "_reference"};
 
 // Limits on what is copied from one submission: far above a real one.
+// Entries looked at in full (any shader file, for #include); past this only
+// files named as an exercise are kept, so a finished 05-ggx.glsl beside
+// 10,000 generated files is still found. A real submission holds under 100.
 constexpr std::size_t kMaxWalkedEntries = 5000;  // after build folders and .git are left out
+// Entries listed at all: past this the submission is REFUSED, naming the
+// limit (listing 200,000 names takes about 0.3 s; a submission this big is
+// not a student's work but a disk image or a home folder).
+constexpr std::size_t kMaxListedEntries = 200000;
 constexpr int kMaxWalkDepth = 16;                  // "any depth": deeper than any real project
 constexpr int kMaxZipDepth = 3;                    // a zip in a zip in a zip
 constexpr int kMaxZips = 16;                       // each one within safe_unzip.h's limits
@@ -284,6 +293,7 @@ public:
     std::set<std::string> skippedFolders; // not searched ("build/", ".git/")
     std::vector<std::string> notes;
     std::string firstZipProblem;          // a zip that was refused, for when nothing else is found
+    std::string overLimit;                // more than kMaxListedEntries: the submission is refused with this
 
     void folder(const fs::path& dir, const std::string& prefix, int zipDepth) {
         std::error_code ec;
@@ -295,14 +305,29 @@ public:
         }
         for (; it != end; it.increment(ec)) {
             if (ec) break;
-            if (++walked_ > kMaxWalkedEntries) {
-                if (walked_ == kMaxWalkedEntries + 1)
-                    notes.push_back("the submission holds more than " + std::to_string(kMaxWalkedEntries) +
-                                    " files; the rest were not looked at");
+            if (++walked_ > kMaxListedEntries) {
+                overLimit = "the submission holds more than " + std::to_string(kMaxListedEntries) +
+                            " files and folders (the limit): refused, submit your exercise files only";
                 break;
             }
             const fs::path& p = it->path();
             const std::string name = p.filename().string();
+            if (walked_ > kMaxWalkedEntries) {
+                // Past the first 5,000: folders are still searched, only exercise files are kept.
+                if (walked_ == kMaxWalkedEntries + 1)
+                    notes.push_back("the submission holds more than " + std::to_string(kMaxWalkedEntries) +
+                                    " files; among the rest only files named as exercises were looked for");
+                bool exact = false;
+                fs::file_status st = it->symlink_status(ec);
+                if (fs::is_directory(st) && (isSkippedFolder(name) || it.depth() + 1 >= kMaxWalkDepth))
+                    it.disable_recursion_pending();
+                else if (!fs::is_directory(st) && exerciseNamed(name, exact))
+                    items.push_back({fs::is_symlink(st) ? Item::Type::Link : fs::is_regular_file(st) ? Item::Type::File
+                                                                                                     : Item::Type::Other,
+                                     prefix + p.lexically_relative(dir).generic_string(), p,
+                                     fs::is_regular_file(st) ? it->file_size(ec) : 0, ""});
+                continue;
+            }
             std::string rel = prefix + p.lexically_relative(dir).generic_string();
             fs::file_status st = it->symlink_status(ec);
             if (fs::is_directory(st)) {
@@ -522,6 +547,25 @@ void stageItems(const std::vector<Item>& items, const Collector& found, const fs
             writeFileAtomic(staging / file, text.substr(3));
             out.notes.push_back("removed the UTF-8 byte-order mark at the start of " + e.rel);
         }
+        // Windows-1252 bytes in comments: read as such, with a note; outside comments: refused naming the byte.
+        {
+            LegacyTextResult legacy = commentsFromWindows1252(readWholeFile(staging / file));
+            if (legacy.badLine > 0) {
+                char byte[8];
+                std::snprintf(byte, sizeof byte, "0x%02X", legacy.badByte);
+                out.refused[file] = e.rel + ":" + std::to_string(legacy.badLine) + ": file is not UTF-8 text: byte " +
+                                    byte + " (at offset " + std::to_string(legacy.badOffset) +
+                                    ") outside a comment; save the file as UTF-8";
+                continue;
+            }
+            if (legacy.converted > 0) {
+                writeFileAtomic(staging / file, legacy.text);
+                out.notes.push_back(e.rel + ": " + std::to_string(legacy.converted) + " byte" +
+                                    (legacy.converted == 1 ? "" : "s") + " in comments (first on line " +
+                                    std::to_string(legacy.firstConvertedLine) +
+                                    ") are not UTF-8 and were read as Windows-1252; save the file as UTF-8");
+            }
+        }
         // The checks the shader assembler makes on every file (size, UTF-8, NUL
         // bytes), here, so that the reason names the student's own file.
         try {
@@ -617,8 +661,9 @@ SubmissionList listSubmissions(const fs::path& dir) {
     std::map<std::string, SubmissionEntry> groups;  // LMS downloads, by student
     for (const fs::directory_entry& entry : entries) {
         const std::string name = entry.path().filename().string();
+        const std::string shown = safeEntryId(name);  // what JSON, HTML, CSV and the terminal get
         if (isHidden(name)) {
-            list.ignored.push_back(name + " (hidden)");
+            list.ignored.push_back(shown + " (hidden)");
             continue;
         }
         fs::file_status st = entry.symlink_status(ec);
@@ -627,7 +672,7 @@ SubmissionList listSubmissions(const fs::path& dir) {
         const bool lmsPart = (lms.kind == LmsDownloadName::Kind::Canvas && fs::is_regular_file(st)) ||
                              (lms.kind == LmsDownloadName::Kind::Moodle && (fs::is_directory(st) || fs::is_regular_file(st)));
         if (lmsPart) {
-            SubmissionEntry& g = groups[lms.student];
+            SubmissionEntry& g = groups[safeEntryId(lms.student)];
             if (g.parts.empty()) {
                 g.kind = SubmissionEntry::Kind::Group;
                 g.path = entry.path();
@@ -644,15 +689,19 @@ SubmissionList listSubmissions(const fs::path& dir) {
         } else if (fs::is_regular_file(st) && endsWithZip(name)) {
             s.kind = SubmissionEntry::Kind::Zip;
         } else {
-            list.ignored.push_back(name + " (not a folder or .zip)");
+            list.ignored.push_back(shown + (fs::is_regular_file(st) ? " (a file that is not a .zip, and not named as "
+                                                                      "Canvas or Moodle name a student's file)"
+                                                                    : " (not a folder, .zip or regular file)"));
             continue;
         }
-        s.id = s.kind != SubmissionEntry::Kind::Folder && endsWithZip(name) ? name.substr(0, name.size() - 4) : name;
-        if (taken.count(s.id)) s.id = name;  // "alice" and "alice.zip": both graded, apart
-        if (kReservedIds.count(s.id)) {
-            list.ignored.push_back(name + " (its name is one of the grader's own outputs: rename it)");
+        s.id = safeEntryId(s.kind != SubmissionEntry::Kind::Folder && endsWithZip(name) ? name.substr(0, name.size() - 4)
+                                                                                         : name);
+        if (taken.count(s.id)) s.id = shown;  // "alice" and "alice.zip": both graded, apart
+        if (kReservedIds.count(s.id) || s.id == "." || s.id == "..") {
+            list.ignored.push_back(shown + " (its name is one of the grader's own outputs: rename it)");
             continue;
         }
+        for (int k = 2; taken.count(s.id); ++k) s.id = shown + "-" + std::to_string(k);  // an escaped id met a real one
         taken.insert(s.id);
         list.students.push_back(s);
     }
@@ -709,7 +758,7 @@ std::string submissionFingerprint(const SubmissionEntry& entry) {
     } else {
         std::vector<std::pair<std::string, fs::path>> files;
         fs::recursive_directory_iterator it(entry.path, fs::directory_options::skip_permission_denied, ec), end;
-        for (; !ec && it != end && files.size() < kMaxWalkedEntries; it.increment(ec))
+        for (; !ec && it != end && files.size() <= kMaxListedEntries; it.increment(ec))
             files.emplace_back(it->path().lexically_relative(entry.path).generic_string(), it->path());
         std::sort(files.begin(), files.end());
         for (const auto& [rel, path] : files) {
@@ -762,11 +811,17 @@ StagedSubmission stageSubmission(const SubmissionEntry& entry, const fs::path& s
         }
         out.notes.push_back("graded the files " + listSome([&] {
                                 std::vector<std::string> names;
-                                for (const auto& part : entry.parts) names.push_back(part.first.filename().string());
+                                for (const auto& part : entry.parts) names.push_back(safeEntryId(part.first.filename().string()));
                                 return names;
                             }()) + " of the LMS download as one submission");
     }
     out.notes.insert(out.notes.end(), found.notes.begin(), found.notes.end());
+    if (!found.overLimit.empty()) {
+        out.problem = StagedSubmission::Problem::Refused;
+        out.problemReason = found.overLimit;
+        fs::remove_all(scratchDir, ec);
+        return out;
+    }
     stageItems(found.items, found, stagingDir, shown, out);
     fs::remove_all(scratchDir, ec);
     return out;

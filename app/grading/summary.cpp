@@ -2,12 +2,49 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 namespace rl {
 
 using nlohmann::json;
+
+json classMistakes(const Rubric& rubric, const std::vector<StudentGrade>& grades) {
+    json all = json::array();
+    // Most students first, then by text, so that the same class gives the same bytes.
+    auto sorted = [](const std::map<std::string, int>& counts, const char* key) {
+        std::vector<std::pair<std::string, int>> v(counts.begin(), counts.end());
+        std::stable_sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+        json out = json::array();
+        for (const auto& [text, n] : v) out.push_back({{key, text}, {"students", n}});
+        return out;
+    };
+    for (const RubricExercise& e : rubric.exercises) {
+        std::map<std::string, int> hints, probes, statuses;
+        int passed = 0;
+        for (const StudentGrade& g : grades) {
+            const ExerciseGrade* x = g.find(e.id);
+            const std::string status = x ? gradeStatus(*x) : "NOT STARTED";
+            if (status == "PASS") {
+                ++passed;
+                continue;
+            }
+            ++statuses[status];
+            if (!x) continue;
+            // The checker's hint names a recognised mistake; a stub or a refusal is no mistake in the shader.
+            if (!x->report.hint.empty() && status != "NOT STARTED" && status != "REFUSED") ++hints[x->report.hint];
+            for (const ProbeSummary& p : x->report.probes)
+                if (p.passed < p.total) ++probes[p.name];
+        }
+        all.push_back({{"exercise", e.id},
+                       {"passed", passed},
+                       {"not_passed", sorted(statuses, "status")},
+                       {"hints", sorted(hints, "hint")},
+                       {"failed_probe_groups", sorted(probes, "probe_group")}});
+    }
+    return all;
+}
 
 json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades, const RunInfo& info) {
     // Every status, always present, so that scripts need no defaults.
@@ -50,6 +87,9 @@ json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades,
     j["shard"] = {{"index", info.shardIndex}, {"count", info.shardCount}};
     j["submissions_total"] = info.submissionsTotal;
     j["ignored_entries"] = info.ignored;
+    j["roster_without_submission"] = info.rosterWithoutSubmission;
+    j["submissions_without_roster_student"] = info.unmatchedSubmissions;
+    j["class_mistakes"] = classMistakes(rubric, grades);
     json ids = json::array();
     for (const StudentGrade& g : grades) ids.push_back(g.id);
     j["student_ids"] = ids;

@@ -19,8 +19,15 @@ struct RunInfo {
     double timeoutSeconds = 0;
     int shardIndex = 1, shardCount = 1;
     std::size_t submissionsTotal = 0; // students in SUBMISSIONS, all shards
-    std::vector<std::string> ignored; // entries of SUBMISSIONS that are no student
+    std::vector<std::string> ignored; // entries of SUBMISSIONS that are no student, with the reason
+    std::vector<std::string> rosterWithoutSubmission;  // with --roster: "Name (roster.csv line N)"
+    std::vector<std::string> unmatchedSubmissions;     // with --roster: "id: why no student matches"
 };
+
+// What the class got wrong, per rubric exercise: how many students made each
+// mistake the checker recognised (its hint) and failed each probe group,
+// most students first (summary.json's "class_mistakes", the report's table).
+nlohmann::json classMistakes(const Rubric& rubric, const std::vector<StudentGrade>& grades);
 
 nlohmann::json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades, const RunInfo& info);
 

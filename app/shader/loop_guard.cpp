@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <limits>
+#include <optional>
 #include <cstdlib>
 #include <map>
 
@@ -143,6 +146,274 @@ void refuseMacroBombs(const std::string& text, const std::vector<Token>& tokens,
                     "compiler would run out of time or memory depending on the machine");
 }
 
+
+// Constant folding of GLSL int expressions, enough for array sizes: decimal,
+// hex and octal literals (a u suffix allowed), names of `const int` /
+// `const uint` variables and of object-like macros declared earlier, unary
+// + and -, binary + - * / % and parentheses. Iterative (two stacks), values
+// saturate at +-2^62, so any input costs time linear in its length.
+class ConstFolder {
+public:
+    ConstFolder(const std::string& text, const std::vector<Token>& tokens) : text_(text), tokens_(tokens) {}
+
+    void define(const std::string& name, std::optional<long long> value) {
+        if (value)
+            values_[name] = *value;
+        else
+            values_.erase(name);
+    }
+
+    // The value of tokens [from, to), or nullopt when they are not such an expression.
+    std::optional<long long> fold(std::size_t from, std::size_t to) const {
+        if (from >= to || to - from > 4096) return std::nullopt;
+        std::vector<long long> values;
+        std::vector<char> ops;  // '(' , binary + - * / % , unary 'n' (minus) 'p' (plus)
+        auto prec = [](char op) { return op == 'n' || op == 'p' ? 3 : op == '*' || op == '/' || op == '%' ? 2 : 1; };
+        auto apply = [&](char op) -> bool {
+            if (op == 'n' || op == 'p') {
+                if (values.empty()) return false;
+                if (op == 'n') values.back() = -values.back();
+                return true;
+            }
+            if (values.size() < 2) return false;
+            const long long b = values.back();
+            values.pop_back();
+            long long& a = values.back();
+            const long double r = op == '+'   ? (long double)a + b
+                                  : op == '-' ? (long double)a - b
+                                  : op == '*' ? (long double)a * b
+                                  : b == 0    ? std::numeric_limits<long double>::quiet_NaN()
+                                  : op == '/' ? (long double)(a / b)
+                                              : (long double)(a % b);
+            if (r != r) return false;
+            a = (long long)std::max<long double>(-kSaturate, std::min<long double>(kSaturate, r));
+            return true;
+        };
+        bool expectValue = true;
+        for (std::size_t k = from; k < to; ++k) {
+            const Token& t = tokens_[k];
+            const std::string w = text_.substr(t.at, t.size);
+            if (expectValue) {
+                if (t.number) {
+                    std::string digits = w;
+                    if (!digits.empty() && (digits.back() == 'u' || digits.back() == 'U')) digits.pop_back();
+                    if (digits.find_first_of(".eE") != std::string::npos && digits.compare(0, 2, "0x") != 0 &&
+                        digits.compare(0, 2, "0X") != 0)
+                        return std::nullopt;  // a float: no array size
+                    char* end = nullptr;
+                    errno = 0;
+                    unsigned long long v = std::strtoull(digits.c_str(), &end, 0);
+                    if (end == nullptr || *end != '\0') return std::nullopt;
+                    values.push_back(errno == ERANGE || v > (unsigned long long)kSaturate ? (long long)kSaturate
+                                                                                        : (long long)v);
+                    expectValue = false;
+                } else if (t.ident) {
+                    auto it = values_.find(w);
+                    if (it == values_.end()) return std::nullopt;
+                    values.push_back(it->second);
+                    expectValue = false;
+                } else if (w == "(") {
+                    ops.push_back('(');
+                } else if (w == "-" || w == "+") {
+                    ops.push_back(w == "-" ? 'n' : 'p');
+                } else {
+                    return std::nullopt;
+                }
+            } else {
+                if (w == ")") {
+                    while (!ops.empty() && ops.back() != '(')
+                        if (!apply(ops.back()) || (ops.pop_back(), false)) return std::nullopt;
+                    if (ops.empty()) return std::nullopt;
+                    ops.pop_back();
+                } else if (w.size() == 1 && std::string("+-*/%").find(w[0]) != std::string::npos) {
+                    while (!ops.empty() && ops.back() != '(' && prec(ops.back()) >= prec(w[0])) {
+                        if (!apply(ops.back())) return std::nullopt;
+                        ops.pop_back();
+                    }
+                    ops.push_back(w[0]);
+                    expectValue = true;
+                } else {
+                    return std::nullopt;
+                }
+            }
+        }
+        if (expectValue) return std::nullopt;
+        while (!ops.empty()) {
+            if (ops.back() == '(' || !apply(ops.back())) return std::nullopt;
+            ops.pop_back();
+        }
+        if (values.size() != 1) return std::nullopt;
+        return values.back();
+    }
+
+    static constexpr long double kSaturate = 4611686018427387904.0L;  // 2^62
+
+private:
+    const std::string& text_;
+    const std::vector<Token>& tokens_;
+    std::map<std::string, long long> values_;
+};
+
+// Arrays bigger than kMaxArrayElements, however their size is written:
+// `float a[100000]`, `const int N = 50000000; float a[N];`, `#define N ...`,
+// `float a[7000 * 7000]`, `float a[64][128]` (the product), and structs:
+// `struct S { float a[4000]; float b[4000]; };` (the sum of its members) and
+// `S s[100]` (the struct's size times the count). Sizes that do not fold are
+// left to the driver, which requires a constant expression anyway.
+void refuseHugeArrays(const std::string& text, const std::vector<Token>& tokens, const std::string& shown) {
+    ConstFolder folder(text, tokens);
+    std::map<std::string, long long> structSize;  // elements one value of the struct holds
+    auto word = [&](std::size_t k) { return text.substr(tokens[k].at, tokens[k].size); };
+    auto is = [&](std::size_t k, const char* w) { return k < tokens.size() && rl::is(text, tokens[k], w); };
+    auto fail = [&](int line, const std::string& what, long long n) {
+        throw Error(shown + ":" + std::to_string(line) + ": error: " + what + " " + std::to_string(n) +
+                    " elements is more memory than a GPU gives one pixel (at most " + std::to_string(kMaxArrayElements) +
+                    " elements here): refused before compiling, as it would run out of memory or time depending on "
+                    "the machine");
+    };
+    // The ']' that closes the '[' at k (same line or not), or tokens.size().
+    auto closeOf = [&](std::size_t k) {
+        int depth = 0;
+        for (std::size_t j = k; j < tokens.size(); ++j) {
+            if (is(j, "[")) ++depth;
+            if (is(j, "]") && --depth == 0) return j;
+            if (is(j, ";") || is(j, "{") || is(j, "}")) break;
+        }
+        return tokens.size();
+    };
+    // The dimensions starting at the '[' at k: their product (unknown ones count 1), and where they end.
+    auto dims = [&](std::size_t k, std::size_t& after, std::string& written) {
+        long double product = 1;
+        after = k;
+        written.clear();
+        while (is(after, "[")) {
+            const std::size_t close = closeOf(after);
+            if (close >= tokens.size()) break;
+            std::optional<long long> n = folder.fold(after + 1, close);
+            if (n && *n > 0) product *= (long double)*n;
+            written += text.substr(tokens[after].at, tokens[close].at + 1 - tokens[after].at);
+            after = close + 1;
+        }
+        return (long long)std::min<long double>(product, ConstFolder::kSaturate);
+    };
+    struct Open {
+        std::string name;
+        int depthBefore;  // brace depth outside its body
+        long double total = 0;
+        int line = 0;
+    };
+    std::vector<Open> structs;  // struct bodies being read
+    int depth = 0;
+    std::string memberType;     // inside a struct: the type of the member being declared
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+        const Token& t = tokens[k];
+        if (t.directive) {
+            if (is(k, "#") && is(k + 1, "define") && k + 2 < tokens.size() && tokens[k + 2].ident &&
+                tokens[k + 2].directive) {
+                const std::string name = word(k + 2);
+                std::size_t end = k + 3;
+                while (end < tokens.size() && tokens[end].directive && !(is(end, "#") && tokens[end].line != t.line))
+                    ++end;
+                const bool functionLike = is(k + 3, "(") && tokens[k + 3].at == tokens[k + 2].at + tokens[k + 2].size;
+                folder.define(name, functionLike ? std::nullopt : folder.fold(k + 3, end));
+                k = end - 1;
+            }
+            continue;
+        }
+        // `const int N = expr;` (qualifiers allowed): N is known from here on.
+        if (is(k, "const")) {
+            std::size_t j = k + 1;
+            while (is(j, "highp") || is(j, "mediump") || is(j, "lowp")) ++j;
+            if ((is(j, "int") || is(j, "uint")) && j + 2 < tokens.size() && tokens[j + 1].ident && is(j + 2, "=")) {
+                std::size_t end = j + 3;
+                int parens = 0;
+                for (; end < tokens.size() && !(parens == 0 && (is(end, ";") || is(end, ","))); ++end)
+                    parens += is(end, "(") ? 1 : is(end, ")") ? -1 : 0;
+                folder.define(word(j + 1), folder.fold(j + 3, end));
+            }
+        }
+        if (is(k, "struct") && k + 2 < tokens.size() && tokens[k + 1].ident && is(k + 2, "{")) {
+            structs.push_back({word(k + 1), depth, 0, t.line});
+            memberType.clear();
+            ++depth;
+            k += 2;
+            continue;
+        }
+        if (is(k, "{")) ++depth;
+        if (is(k, "}")) {
+            --depth;
+            if (!structs.empty() && depth == structs.back().depthBefore) {
+                Open s = structs.back();
+                structs.pop_back();
+                const long long n = (long long)std::min<long double>(std::max<long double>(s.total, 1), ConstFolder::kSaturate);
+                if (n > kMaxArrayElements) fail(s.line, "the struct " + s.name + " holds", n);
+                structSize[s.name] = n;
+            }
+            continue;
+        }
+        if (!structs.empty()) {
+            // A member: `type name[dims], name2;` (or `type[dims] name;`).
+            if (is(k, ";")) {
+                memberType.clear();
+            } else if (t.ident && memberType.empty() && !is(k, "highp") && !is(k, "mediump") && !is(k, "lowp") &&
+                       !is(k, "precise") && !is(k, "invariant")) {
+                memberType = word(k);
+                std::size_t after = k + 1;
+                std::string written;
+                long long typeDims = dims(k + 1, after, written);
+                auto sizeOfType = structSize.count(memberType) ? structSize[memberType] : 1;
+                // Each declarator up to ';'.
+                std::size_t j = after;
+                while (j < tokens.size() && !is(j, ";") && !is(j, "}")) {
+                    if (tokens[j].ident) {
+                        std::size_t end = j + 1;
+                        long long n = dims(j + 1, end, written);
+                        structs.back().total += (long double)n * typeDims * sizeOfType;
+                        j = end;
+                    } else {
+                        ++j;
+                    }
+                }
+                k = j - 1;
+            }
+            continue;
+        }
+        if (!is(k, "[")) continue;
+        // Outside structs: any size or index that folds; its chain of dimensions; a struct type's size.
+        std::size_t after = k;
+        std::string written;
+        const std::size_t close = closeOf(k);
+        if (close >= tokens.size()) continue;
+        std::optional<long long> one = folder.fold(k + 1, close);
+        long long n = dims(k, after, written);
+        long long per = 1;
+        if (k >= 1 && tokens[k - 1].ident) {
+            // `S name[...]` or `S[...] name`.
+            const std::string before = word(k - 1);
+            if (structSize.count(before))
+                per = structSize[before];
+            else if (k >= 2 && tokens[k - 2].ident && structSize.count(word(k - 2)))
+                per = structSize[word(k - 2)];
+        }
+        const long double total = (long double)n * per;
+        if ((one && *one > kMaxArrayElements) || total > kMaxArrayElements) {
+            const bool literal = close == k + 2 && tokens[k + 1].number && after == close + 1 && per == 1;
+            if (literal) {
+                const std::string lit = word(k + 1);
+                throw Error(shown + ":" + std::to_string(t.line) + ": error: an array of " + lit +
+                            " elements is more memory than a GPU gives one pixel (at most " +
+                            std::to_string(kMaxArrayElements) +
+                            " elements here): refused before compiling, as it would run out of memory or time depending "
+                            "on the machine");
+            }
+            fail(t.line, "an array " + written + (per > 1 ? " of a struct of " + std::to_string(per) + " elements" : "") +
+                             " of",
+                 (long long)std::min<long double>(std::max<long double>(total, one ? (long double)*one : 0),
+                                                  ConstFolder::kSaturate));
+        }
+        k = after - 1;
+    }
+}
 }  // namespace
 
 GuardedSource guardLoops(const std::string& text, const std::string& shown, int firstId) {
@@ -152,7 +423,6 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
     auto fail = [&](int line, const std::string& why) {
         throw Error(shown + ":" + std::to_string(line) + ": error: " + why);
     };
-    auto word = [&](std::size_t k) { return text.substr(tokens[k].at, tokens[k].size); };
     // A condition that declares a variable (`bool b = ...`) cannot be passed to rl_loop.
     auto declares = [&](std::size_t from, std::size_t to) {
         std::size_t k = from;
@@ -195,17 +465,6 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
         }
         if (is(text, t, "{")) ++depth;
         if (is(text, t, "}")) --depth;
-        // An array size: `float a[100000]`, `float[100000](...)`.
-        if (is(text, t, "[") && k + 2 < tokens.size() && tokens[k + 1].number && is(text, tokens[k + 2], "]")) {
-            const std::string literal = word(k + 1);
-            char* end = nullptr;
-            const long long n = std::strtoll(literal.c_str(), &end, 0);
-            const bool huge = literal.size() > 9 || n > kMaxArrayElements;
-            if (huge && literal.find_first_of(".eE") == std::string::npos)
-                fail(t.line, "an array of " + literal + " elements is more memory than a GPU gives one pixel (at "
-                                 "most " + std::to_string(kMaxArrayElements) + " elements here): refused before "
-                                 "compiling, as it would run out of memory or time depending on the machine");
-        }
         if (!t.ident) continue;
         if (is(text, t, "do")) {
             doStack.push_back({t.line, depth});
@@ -238,6 +497,7 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
         k = open;  // the header's tokens are looked at again (arrays), none is a loop
     }
     refuseMacroBombs(text, tokens, shown);
+    refuseHugeArrays(text, tokens, shown);
     std::stable_sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at < b.at; });
     out.text.reserve(text.size() + 24 * edits.size());
     std::size_t from = 0;
@@ -278,15 +538,23 @@ void explainLoopGuard(ShaderDiagnostic& d) {
 }
 
 std::string loopTimeoutMessage(const std::vector<SourceLocation>& loops, int id, const std::string& where) {
-    std::string loop = "a loop";
+    const bool total = id > kLoopTotalFlag;
+    if (total) id -= kLoopTotalFlag;
+    std::string at;
     if (id >= 1 && id <= int(loops.size())) {
         const SourceLocation& l = loops[std::size_t(id) - 1];
         const std::string file = l.file.substr(l.file.find_last_of('/') + 1);
-        loop += " in " + file + ":" + std::to_string(l.line);
+        at = file + ":" + std::to_string(l.line);
     }
-    return loop + " ran more than " + std::to_string(kLoopLimit) + " iterations " + where +
-           ": on a GPU it would not finish (raylab ends every loop there, so the verdict is the same on every "
-           "machine)";
+    const std::string end = ": on a GPU it would not finish (raylab ends every loop there, so the verdict is the same on "
+                            "every machine)";
+    if (total)
+        return "the loops of the exercise files ran more than " + std::to_string(kLoopTotalLimit) +
+               " iterations in all " + where + (at.empty() ? "" : ", the last one tested being the loop in " + at) +
+               " (every run of a loop ended within " + std::to_string(kLoopLimit) +
+               ": a loop run too many times, or an outer loop that never ends)" + end;
+    return (at.empty() ? std::string("a loop") : "a loop in " + at) + " ran more than " + std::to_string(kLoopLimit) +
+           " iterations " + where + " in one run, without its condition becoming false" + end;
 }
 
 }  // namespace rl

@@ -7,9 +7,10 @@
 //     for (init; cond; step)   ->  for (init; rl_loop((cond), ID); step)
 //     while (cond)             ->  while (rl_loop((cond), ID))
 //     do { } while (cond);     ->  do { } while (rl_loop((cond), ID));
-// rl_loop (shaders/loop_guard.glsl) counts the iterations of all guarded
-// loops of one invocation (one pixel, one probe case); past kLoopLimit it
-// ends every loop and records the first loop that went over, which main.frag
+// rl_loop (shaders/loop_guard.glsl) counts the iterations of each run of a
+// guarded loop, and of all of them in one invocation (one pixel, one probe
+// case); past kLoopLimit in one run, or kLoopTotalLimit in all, it ends every
+// loop and records the loop that went over, which main.frag
 // and probe.frag write into their output's alpha as -ID. The host reads it
 // back and reports TIMEOUT naming that loop's file and line, the same on every
 // machine. No newline is added, so every line keeps its number.
@@ -39,6 +40,17 @@ namespace rl {
 // loops (spheres x lights x bounces x samples: about 1000), so the guard, not
 // llvmpipe, ends a runaway loop.
 constexpr int kLoopLimit = 16384;
+// That limit is per run of one loop (from its first test to the false test
+// that ends it), so a bounded loop that a function runs on every call (D_GGX
+// for every light, bounce and sample of a pixel) is never cut for the calls
+// it adds up to. All guarded loops of one invocation together may run at
+// most kLoopTotalLimit iterations: llvmpipe ends every loop of an invocation
+// after 65535 in all, and the framework's own loops take about 1000 of them,
+// so past 60000 the guard, not llvmpipe, decides (an endless outer loop
+// around a bounded inner one meets this bound).
+constexpr int kLoopTotalLimit = 60000;
+// A loop that met the total is recorded as kLoopTotalFlag + its ID.
+constexpr int kLoopTotalFlag = 65536;
 // Elements of one array in an exercise file: an exercise needs a handful.
 constexpr long kMaxArrayElements = 4096;
 
@@ -64,9 +76,11 @@ int trippedLoopInFramebuffer(GLuint framebuffer, int attachment, int width, int 
 // converts no number to bool: `while (1)`): says so, without naming rl_loop.
 void explainLoopGuard(ShaderDiagnostic& diagnostic);
 
-// "a loop in 05-ggx.glsl:12 ran more than 16384 iterations in one pixel..."
-// for a tripped loop ID of an assembly (AssembledSource::loops), with the
-// file's name only (the student's file, wherever it was staged).
+// "a loop in 05-ggx.glsl:12 ran more than 16384 iterations without its
+// condition becoming false, in one pixel..." (or, for kLoopTotalFlag + ID,
+// "the loops ran more than 60000 iterations in all ...; the last one tested
+// was 05-ggx.glsl:12") for a tripped ID of an assembly
+// (AssembledSource::loops), with the file's name only.
 std::string loopTimeoutMessage(const std::vector<SourceLocation>& loops, int id, const std::string& where);
 
 }  // namespace rl

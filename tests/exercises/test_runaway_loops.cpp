@@ -69,6 +69,39 @@ TEST_P(RunawayLoops, AreTimeoutWithTheLoopsLineInEveryRun) {
 INSTANTIATE_TEST_SUITE_P(Fixtures, RunawayLoops, ::testing::ValuesIn(kRunaways),
                          [](const ::testing::TestParamInfo<Runaway>& info) { return std::string(info.param.name); });
 
+// Issue 22: the guard counted every guarded iteration of a pixel together, so
+// a loop of 7000 iterations in toneMap, bounded and finished in every call,
+// was TIMEOUT ("needs a bound that it reaches"). It counts per run of a loop now.
+TEST(RunawayLoops, ABoundedLoopOf7000InToneMapPasses) {
+    std::string text = test::readText(solutionsDir() / "10-display.glsl");
+    const std::string head = "vec3 toneMap(vec3 c, int op) {\n";
+    auto pos = text.find(head);
+    ASSERT_NE(pos, std::string::npos);
+    text.insert(pos + head.size(), "    float spin = 0.0;\n    for (int i = 0; i < 7000; i++) { spin += 1.0; }\n"
+                                   "    c += 1e-30 * spin;\n");
+    const fs::path file = test::freshTempDir("bounded_7000") / "10-display.glsl";
+    test::writeText(file, text);
+    auto r = test::runRaylab("check --exercise 10 --file " + file.string() + " --output " +
+                             test::freshTempDir("bounded_7000_out").string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("10-display        PASS"), std::string::npos) << r.output;
+}
+
+// A bounded loop run too often in one pixel (5000 iterations in D_GGX, which
+// runs for every light, bounce and sample) meets the total bound, and the
+// message says so rather than blaming one run.
+TEST(RunawayLoops, ALoopRunTooOftenMeetsTheTotalAndSaysSo) {
+    Runaway often{"often", "    float spin = 0.0; for (int i = 0; i < 5000; ++i) { spin += 1.0; }"};
+    const fs::path file = runawayFile(often);
+    auto r = test::runRaylab("check --exercise 5 --file " + file.string() + " --output " +
+                             test::freshTempDir("often_out").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("05-ggx            TIMEOUT       the loops of the exercise files ran more than 60000 "
+                            "iterations in all"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST(RunawayLoops, ALoopThatEndsInTimePasses) {
     // The guard only ends loops that run away: a bounded loop of 64
     // iterations per call (about 20,000 per pixel would trip it) changes nothing.

@@ -320,6 +320,11 @@ void expectPromise(Sandbox& box, const Invocation& run, const Settings& settings
         before.erase(o);
         after.erase(o);
     }
+    if (!run.outputFolder.empty())
+        for (auto* files : {&before, &after})
+            for (auto it = files->begin(); it != files->end();)
+                it = it->first == run.outputFolder || it->first.rfind(run.outputFolder + "/", 0) == 0 ? files->erase(it)
+                                                                                                     : std::next(it);
     for (const auto& [path, sig] : after) {
         auto it = before.find(path);
         if (it == before.end()) problems.push_back("new file " + printableForReport(path));

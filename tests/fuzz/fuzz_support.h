@@ -74,6 +74,7 @@ private:
 struct Invocation {
     std::vector<std::string> args;
     std::vector<std::string> outputs;  // files the command names as outputs (relative)
+    std::string outputFolder;          // a folder the command writes into (grade -o): everything under it is output
     std::vector<std::string> culprits;  // the error line must name one of them (none: anything)
     std::string description;           // for failure messages
     std::uint64_t seed = 0;

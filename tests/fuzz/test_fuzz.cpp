@@ -19,8 +19,10 @@
 #include "core/message.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 
@@ -427,7 +429,7 @@ TEST_F(Fuzz, ShaderFolders) {
         std::string t = readFile(victim);
         std::string what;
         bool certainlyBad = true;
-        switch (rng.below(9)) {
+        switch (rng.below(12)) {
             case 0: {  // delete a function: from its signature to its closing brace
                 std::size_t open = t.find("{\n");
                 std::size_t close = t.find("\n}", open);
@@ -449,6 +451,13 @@ TEST_F(Fuzz, ShaderFolders) {
             }
             case 6: t = "#line 1000\n" + t + "\nsyntax error here\n"; what = "line directive"; break;
             case 7: t = ""; what = "empty file"; break;
+            // Issue 22: array sizes behind a constant, a macro or a struct (refused with the line, before compiling).
+            case 8: t += "\nconst int RL_FUZZ_N = 50000000;\nfloat rl_fuzz_big[RL_FUZZ_N];\n"; what = "array behind a const"; break;
+            case 9: t += "\n#define RL_FUZZ_N 7000 * 7000\nfloat rl_fuzz_big[RL_FUZZ_N];\n"; what = "array behind a macro"; break;
+            case 10:
+                t += "\nstruct RlFuzz { float a[4000]; float b[4000]; };\nRlFuzz rl_fuzz_s;\n";
+                what = "arrays in a struct";
+                break;
             default:
                 // Valid GLSL after the other half of the issue: a BOM, a line of 30,000 spaces.
                 t = rng.below(2) ? "\xef\xbb\xbf" + t : std::string(30000, rng.below(2) ? ' ' : '\t') + "\n" + t;
@@ -474,6 +483,66 @@ TEST_F(Fuzz, ShaderFolders) {
         expectPromise(box, run, settings_);
     }
     budget.report("shader folders");
+}
+
+
+// Issue 22: entries of SUBMISSIONS named with any bytes (0xFF, escapes, Canvas
+// and Moodle shapes, Unicode): the run never stops, every entry is a student
+// or an ignored entry with its reason, and summary.json is valid JSON.
+TEST_F(Fuzz, SubmissionNames) {
+    Budget budget(settings_, 12);
+    const std::string stub = readFile(sourceRoot() / "exercises" / "01-camera.glsl");
+    for (std::uint64_t i = 0; budget.next(); ++i) {
+        Rng rng(settings_.seed, "names", i);
+        Sandbox box;
+        box.write("r.json", "{\"exercises\": [{\"id\": \"01-camera\", \"weight\": 10}]}");
+        box.write("folder/.keep", "");
+        std::set<std::string> names;
+        const std::size_t entries = 1 + rng.below(4);
+        for (std::size_t k = 0; k < entries; ++k) {
+            std::string name;
+            for (std::size_t n = 1 + rng.below(12); name.size() < n;) {
+                const char c = char(1 + rng.below(255));
+                if (c != '/') name += c;
+            }
+            if (name == "." || name == ".." || name[0] == '.') name = "x" + name;
+            switch (rng.below(4)) {
+                case 0: name += "_" + std::to_string(1000 + k) + "_7002" + std::to_string(k) + "_01-camera.glsl"; break;
+                case 1: name += "_" + std::to_string(4000 + k) + "_assignsubmission_file_"; break;
+                case 2: name += ".zip"; break;
+                default: break;
+            }
+            if (!names.insert(name).second) continue;
+            if (name.size() > 4 && name.compare(name.size() - 5, 5, ".glsl") == 0)
+                box.write("folder/" + name, stub);
+            else
+                box.write("folder/" + name + (name.size() > 4 && name.compare(name.size() - 4, 4, ".zip") == 0 ? "" : "/01-camera.glsl"),
+                          stub);  // a "zip" that is not one: refused, with the reason
+        }
+        Invocation run;
+        run.args = {"grade", "folder", "-o", "graded", "--rubric", "r.json", "--timeout", "20"};
+        run.description = "submission names";
+        run.outputFolder = "graded";
+        run.seed = rng.seed();
+        run.mayPass = true;
+        expectPromise(box, run, settings_);
+        const fs::path summary = box.dir() / "graded" / "summary.json";
+        ASSERT_TRUE(fs::exists(summary)) << "seed " << run.seed << ": no summary.json";
+        nlohmann::json j;
+        try {
+            j = nlohmann::json::parse(readFile(summary));
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "seed " << run.seed << ": summary.json is not JSON: " << e.what();
+        }
+        // Every entry is a student (Canvas parts of one student count once) or ignored with its reason
+        // ("folder/.keep" is hidden: one more ignored).
+        const std::size_t listed = j.value("student_ids", nlohmann::json::array()).size() +
+                                   j.value("ignored_entries", nlohmann::json::array()).size();
+        EXPECT_GE(listed, 2u) << "seed " << run.seed;
+        EXPECT_LE(listed, names.size() + 1) << "seed " << run.seed;
+        if (HasFailure()) box.keep("submission names, seed " + std::to_string(run.seed));
+    }
+    budget.report("submission names");
 }
 
 }  // namespace

@@ -194,6 +194,33 @@ TEST(CliHostile, AnExistingOutputIsReplacedWholeWithNothingBeside) {
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 }
 
+// Issue 22: the PNG was replaced before the PFM failed; -o X --hdr X lost the
+// PNG; an exposure sweep to inf rendered black frames with exit 0.
+TEST(CliHostile, ThePngAndPfmOfOneRenderAreReplacedTogetherOrNotAtAll) {
+    fs::path dir = test::freshTempDir("cli_pair");
+    test::writeText(dir / "a.png", "the previous picture");
+    test::writeText(dir / "a.pfm", "the previous radiance");
+    fs::create_directory(dir / "a.pfm.raylab-part");  // the PFM cannot be written where it is written first
+    auto failed = runBounded("render --size 8x8 -o " + (dir / "a.png").string() + " --hdr " + (dir / "a.pfm").string());
+    EXPECT_EQ(failed.status, 1) << failed.output;
+    EXPECT_EQ(test::readText(dir / "a.png"), "the previous picture") << "the PNG was replaced without its PFM";
+    EXPECT_EQ(test::readText(dir / "a.pfm"), "the previous radiance");
+    EXPECT_FALSE(fs::exists(dir / "a.png.raylab-part"));
+    fs::remove(dir / "a.pfm.raylab-part");
+    auto ok = runBounded("render --size 8x8 -o " + (dir / "a.png").string() + " --hdr " + (dir / "a.pfm").string());
+    EXPECT_EQ(ok.status, 0) << ok.output;
+    EXPECT_EQ(readPng((dir / "a.png").string()).width, 8);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2) << "nothing left beside";
+    auto same = runBounded("render --size 8x8 -o " + (dir / "b.png").string() + " --hdr " + (dir / "b.png").string());
+    EXPECT_EQ(same.status, 1);
+    EXPECT_EQ(same.output, "raylab: error: --hdr: " + (dir / "b.png").string() +
+                               " is also the PNG of -o: give the PFM a file of its own\n");
+    EXPECT_FALSE(fs::exists(dir / "b.png"));
+    auto sweep = runBounded("record --size 8x8 --frames 2 --sweep exposure:inf:1 -o " + (dir / "frames").string());
+    EXPECT_EQ(sweep.status, 1) << sweep.output;
+    EXPECT_NE(sweep.output.find("--sweep: FROM and TO must be finite numbers"), std::string::npos) << sweep.output;
+}
+
 TEST(CliHostile, SceneThatIsAFifoOrDeviceIsRefusedWithoutBlocking) {
     fs::path dir = test::freshTempDir("cli_fifo");
     fs::path fifo = dir / "scene.json";
@@ -263,6 +290,9 @@ TEST(CliHostile, UsageErrorsAreOneLineWithStatus2) {
         {"render --size 16384x16384",
          "raylab: error: --size: 16384x16384 is 268435456 pixels, more than the limit of 67108864 (8192x8192)"},
         {"render -o ''", "raylab: error: --output: must not be empty"},
+        // Issue 22: %d overflowed silently, and 2^32 + 32 rendered 32 pixels wide.
+        {"render --size 4294967328x24",
+         "raylab: error: --size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, e.g. 640x480, not '4294967328x24'"},
         {"check --timeout -1", "raylab: error: --timeout: must be a number of seconds more than 0 and at most 86400, not '-1'"},
         {"check --timeout nan", "raylab: error: --timeout: must be a number of seconds more than 0 and at most 86400, not 'nan'"},
         {"check --timeout ''", "raylab: error: --timeout: must be a number of seconds more than 0 and at most 86400, not ''"},

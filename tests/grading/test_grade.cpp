@@ -153,7 +153,9 @@ fs::path buildClass(const fs::path& root) {
     fs::create_symlink("../full/05-ggx.glsl", sub / "symlink" / "05-ggx.glsl");
     fs::create_directories(sub / "empty");
     std::string latin1 = solutionFiles()["03-lambert.glsl"];
-    latin1.insert(latin1.find('\n') + 1, "// r\xe9sum\xe9 in Latin-1\n");
+    // Outside a comment (inside one it is read as Windows-1252: the cp1252 student of
+    // GradeRun.EveryNameShapeIsGradedOnceAndNothingDropsSilently).
+    latin1.insert(latin1.find('\n') + 1, "float r\xe9sum\xe9 = 1.0;\n");
     writeFolder(sub / "non-utf8", solutionFiles({{"03-lambert.glsl", latin1}}));
     std::string big = solutionFiles()["05-ggx.glsl"] + "// " + std::string(300 * 1024, 'x') + "\n";
     writeFolder(sub / "oversize", solutionFiles({{"05-ggx.glsl", big}}));
@@ -369,7 +371,7 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
 
     Student latin1 = load(out, "non-utf8");
     EXPECT_EQ(latin1.exercises.at("03-lambert").status, "REFUSED");
-    EXPECT_TRUE(contains(latin1.exercises.at("03-lambert").message, "03-lambert.glsl:2: file is not UTF-8"))
+    EXPECT_TRUE(contains(latin1.exercises.at("03-lambert").message, "03-lambert.glsl:2: file is not UTF-8 text: byte 0xE9"))
         << latin1.exercises.at("03-lambert").message;
     EXPECT_DOUBLE_EQ(latin1.score, 92);
 
@@ -540,6 +542,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     writeFolder(sub / "broken", solutionFiles({{"05-ggx.glsl", compileErrorGgx()}}));
     writeFolder(sub / "a b&<c>", stubFiles());  // an id that needs escaping in HTML and in URLs
     writeText(sub / "corrupt.zip", "not a zip");
+    writeText(sub / "notes.txt", "not a student");  // issue 22: listed at the top of the report
     CommandResult run = runRaylab(gradeArgs(sub, out));
     ASSERT_EQ(run.status, 0) << run.output;
 
@@ -602,7 +605,13 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
                   "notes.right <= window.innerWidth && document.documentElement.scrollWidth <= window.innerWidth));"
                   "var box = document.getElementById('filter'); box.value = 'ggx.glsl:3';"
                   "box.dispatchEvent(new Event('input'));"
-                  "document.body.setAttribute('data-shown', document.getElementById('shown').textContent);</script></body>");
+                  "document.body.setAttribute('data-shown', document.getElementById('shown').textContent);"
+                  // Issue 22: what was not graded is on the first screen; the class's mistakes fit the width.
+                  "var ng = document.getElementById('not-graded').getBoundingClientRect();"
+                  "document.body.setAttribute('data-not-graded', String(ng.bottom <= 900 && ng.right <= window.innerWidth));"
+                  "var cm = document.getElementById('class-mistakes');"
+                  "document.body.setAttribute('data-mistakes', String(!!cm && cm.getBoundingClientRect().right <= "
+                  "window.innerWidth));</script></body>");
     writeText(out / "probe.html", probe);
     std::string probeDom = (root / "probe-dom.html").string();
     std::string layout = chromium + "--user-data-dir=" + (root / "chromium-probe").string() +
@@ -612,6 +621,8 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     std::string laidOut = readText(probeDom);
     EXPECT_TRUE(contains(laidOut, "data-fit=\"true\"")) << "the table is wider than 1280 px: " << laidOut.substr(0, 600);
     EXPECT_TRUE(contains(laidOut, "data-shown=\"1 shown\"")) << laidOut.substr(0, 600);
+    EXPECT_TRUE(contains(laidOut, "data-not-graded=\"true\"")) << laidOut.substr(0, 600);
+    EXPECT_TRUE(contains(laidOut, "data-mistakes=\"true\"")) << laidOut.substr(0, 600);
 
     // Sorting: the same page with two clicks on the Total header, as Chromium leaves the DOM.
     std::string clicked = index;
@@ -729,6 +740,98 @@ TEST(GradeRun, DocumentedRunAutograderInAFakedLayout) {
     EXPECT_DOUBLE_EQ(results.at("score").get<double>(), 26);
     EXPECT_EQ(results.at("output_format"), "text");
     EXPECT_TRUE(contains(results.value("output", ""), "upload.zip")) << "the note says what was graded";
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+std::string joinedNotes(const std::vector<std::string>& notes) {
+    std::string out;
+    for (const std::string& n : notes) out += n + "\n";
+    return out;
+}
+
+// Issue 22: the names LMS downloads hold, end to end. Before: the Unicode and
+// anonymous Canvas files were skipped, the folder named with byte 0xE9 stopped
+// the whole run with "internal error: [json.exception.type_error.316]" and no
+// outputs, ignored entries and roster students without a submission were not
+// in index.html, and an id starting with '=' reached grades.csv as a formula.
+TEST(GradeRun, EveryNameShapeIsGradedOnceAndNothingDropsSilently) {
+    fs::path root = freshTempDir("grade_names");
+    const fs::path sub = root / "sub", out = root / "out";
+    const std::string camera = solutionFiles()["01-camera.glsl"];
+    fs::create_directories(sub);
+    writeText(sub / "m\xC3\xBCllerj\xC3\xBCrgen_1005_70021_01-camera.glsl", camera);
+    writeText(sub / "doejane_1001_70020_01-camera-1.glsl", camera);
+    writeText(sub / "anon_x7Kq2_70024_01-camera.glsl", camera);
+    writeFolder(sub / "caf\xE9", {{"01-camera.glsl", camera}});
+    writeZip(sub / "bad\xFFname.zip", {{"01-camera.glsl", camera}});
+    writeFolder(sub / "=HYPERLINK(1)", {{"01-camera.glsl", stubFiles()["01-camera.glsl"]}});
+    writeFolder(sub / "cp1252", {{"01-camera.glsl", "// r\xe9sum\xe9 saved by Notepad\n" + camera}});
+    writeText(sub / "notes.txt", "x");
+    writeText(root / "rubric.json", "{\"exercises\": [{\"id\": \"01-camera\", \"weight\": 10}]}");
+    const std::string roster = (rl::sourceRoot() / "tests" / "grading" / "fixtures" / "canvas-gradebook-export.csv").string();
+    CommandResult r = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string() +
+                                                        " --export canvas --roster " + roster));
+    EXPECT_EQ(r.status, 3) << "graded, with submissions left out of the Canvas export: " << r.output;
+    ASSERT_TRUE(fs::exists(out / "summary.json")) << r.output;
+    const json summary = readJson(out / "summary.json");
+    EXPECT_EQ(summary.at("students").get<int>(), 7) << summary.dump(2);
+    std::map<std::string, double> scores;
+    for (const std::string& id : summary.at("student_ids").get<std::vector<std::string>>())
+        scores[id] = readJson(out / id / "results.json").at("score").get<double>();
+    EXPECT_EQ(scores, (std::map<std::string, double>{{"=HYPERLINK(1)", 0},
+                                                     {"anon_x7Kq2", 10},
+                                                     {"bad%FFname", 10},
+                                                     {"caf%E9", 10},
+                                                     {"cp1252", 10},
+                                                     {"doejane_1001", 10},
+                                                     {"m\xC3\xBCllerj\xC3\xBCrgen_1005", 10}}));
+    EXPECT_EQ(readJson(out / "caf%E9" / "grade.json").value("source_bytes", ""), "63 61 66 e9");
+    EXPECT_TRUE(contains(joinedNotes(load(out, "cp1252").notes), "were read as Windows-1252"));
+    // Byte-identical copies are listed, never marked down.
+    const json similar = summary.at("similar_submissions");
+    EXPECT_FALSE(similar.empty());
+    for (const json& p : similar) EXPECT_EQ(p.at("kind"), "identical") << p.dump();
+    const std::string csv = readText(out / "grades.csv");
+    for (const std::string& line : lines(csv))
+        EXPECT_EQ(std::string("=+-@\t\r").find(line[0]), std::string::npos) << line;
+    EXPECT_TRUE(contains(csv, "\n'=HYPERLINK(1),0.00,0.00\n")) << csv;
+    EXPECT_EQ(summary.at("ignored_entries").size(), 1u);
+    const std::string index = readText(out / "index.html");
+    EXPECT_TRUE(contains(index, "id=\"not-graded\"")) << "the not-graded list is at the top of the report";
+    EXPECT_LT(index.find("id=\"not-graded\""), index.find("id=\"grades\""));
+    EXPECT_TRUE(contains(index, "notes.txt (a file that is not a .zip")) << index;
+    EXPECT_TRUE(contains(index, "Smith, John (canvas-gradebook-export.csv line 4)")) << index;
+    EXPECT_TRUE(contains(index, "anon_x7Kq2: an anonymous Canvas download")) << index;
+    EXPECT_FALSE(contains(index, "Doe, Jane (canvas")) << "doejane_1001 has a submission";
+    EXPECT_TRUE(contains(index, "<h2 id=\"similar\">Similar submissions</h2>"));
+    EXPECT_TRUE(contains(index, "<h2 id=\"mistakes\">What the class got wrong</h2>"));
+    ASSERT_EQ(summary.at("class_mistakes").size(), 1u);
+    EXPECT_EQ(summary.at("class_mistakes")[0].at("passed"), 6);
+    // The second run finds every record and writes the same bytes.
+    CommandResult again = runRaylab(gradeArgs(sub, out, "--rubric " + (root / "rubric.json").string()));
+    EXPECT_EQ(again.status, 0) << again.output;
+    EXPECT_TRUE(contains(again.output, "7 students already graded")) << again.output;
+    EXPECT_EQ(readText(out / "grades.csv"), csv);
+    if (!HasFailure()) fs::remove_all(root);
+}
+
+// Every option and the roster are checked before the first student: a wrong
+// roster found after the class is graded costs the whole run.
+TEST(GradeCli, AnExportThatCannotBeWrittenIsRefusedBeforeGrading) {
+    fs::path root = freshTempDir("grade_early");
+    writeFolder(root / "sub" / "alice", {{"01-camera.glsl", "// mine\n"}});
+    const std::string canvasRoster = (rl::sourceRoot() / "tests" / "grading" / "fixtures" / "canvas-gradebook-export.csv").string();
+    CommandResult r = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() +
+                                " --export moodle --roster " + canvasRoster);
+    EXPECT_NE(r.status, 0);
+    EXPECT_TRUE(contains(r.output, "canvas-gradebook-export.csv: a Canvas roster; the Moodle export needs")) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(root / "out" / "alice")) << "nobody was graded";
+    CommandResult missing = runRaylab("grade " + (root / "sub").string() + " -o " + (root / "out").string() +
+                                      " --export canvas --roster " + (root / "none.csv").string());
+    EXPECT_NE(missing.status, 0);
+    EXPECT_TRUE(contains(missing.output, "none.csv: roster file not found")) << missing.output;
+    EXPECT_FALSE(fs::exists(root / "out" / "alice"));
     if (!HasFailure()) fs::remove_all(root);
 }
 

@@ -75,6 +75,36 @@ TEST(LoopGuard, RefusesWhatItCannotBound) {
     EXPECT_EQ(refusal("void f() { for (int i = 0; i < 3) {} while x {} }\n"), "");
 }
 
+// Issue 22: sizes behind a constant, a macro, a product or a struct were not
+// folded, so 50,000,000 floats reached the compiler (60 s, 3.1 GB per check).
+TEST(LoopGuard, ArraySizesAreBoundedAfterFoldingConstantsAndMacros) {
+    auto refusedAt = [](const std::string& text) {
+        const std::string r = refusal(text);
+        return r.empty() ? std::string("(accepted)") : r.substr(0, r.find(": error: ") + 9);
+    };
+    EXPECT_EQ(refusedAt("const int N = 50000000;\nvoid f() {\n  float big[N];\n}\n"), "student/05-ggx.glsl:3: error: ");
+    EXPECT_EQ(refusedAt("#define N 50000000\nvoid f() {\n  float big[N];\n}\n"), "student/05-ggx.glsl:3: error: ");
+    EXPECT_EQ(refusedAt("void f() {\n  float big[7000 * 7000];\n}\n"), "student/05-ggx.glsl:2: error: ");
+    EXPECT_EQ(refusedAt("const int A = 7000;\n#define B (A * 2 + 1)\nvoid f() {\n  float big[B];\n}\n"),
+              "student/05-ggx.glsl:4: error: ");
+    EXPECT_EQ(refusedAt("void f() {\n  float grid[100][100];\n}\n"), "student/05-ggx.glsl:2: error: ");
+    // Arrays inside a struct: the struct's members add up, an array of structs multiplies.
+    EXPECT_EQ(refusedAt("struct S {\n  float a[4000];\n  float b[4000];\n};\n"), "student/05-ggx.glsl:1: error: ");
+    EXPECT_EQ(refusedAt("struct S { float a[64]; vec3 p; };\nvoid f() {\n  S many[1000];\n}\n"),
+              "student/05-ggx.glsl:3: error: ");
+    EXPECT_EQ(refusedAt("void f() {\n  struct T { float a[3000]; float b[3000]; } t;\n}\n"),
+              "student/05-ggx.glsl:2: error: ");
+    EXPECT_NE(refusal("const int N = 50000000;\nvoid f() {\n  float big[N];\n}\n").find("[N] of 50000000 elements"),
+              std::string::npos)
+        << refusal("const int N = 50000000;\nvoid f() {\n  float big[N];\n}\n");
+    // What a finished exercise writes stays accepted: small constants, indexes, function-like macros.
+    EXPECT_EQ(refusedAt("const int MAX_LIGHTS = 8;\n#define SPHERES 64\nstruct Hit { float t; vec3 p; vec3 n; };\n"
+                        "void f(int i) {\n  Hit hits[SPHERES];\n  vec3 l[MAX_LIGHTS * 2];\n  float x = l[MAX_LIGHTS - 1].x;\n"
+                        "  mat3 m; float y = m[2][1];\n  float g[64][64];\n}\n#define SQ(a) ((a) * (a))\n"),
+              "(accepted)");
+    EXPECT_EQ(refusedAt("void f(int n) {\n  float a[n * 100000];\n}\n"), "(accepted)") << "not constant: the driver's to report";
+}
+
 TEST(LoopGuard, TheShaderLimitIsTheHostLimit) {
     std::ifstream in(shadersDir() / "loop_guard.glsl");
     std::stringstream text;
@@ -83,6 +113,27 @@ TEST(LoopGuard, TheShaderLimitIsTheHostLimit) {
     const std::string s = text.str();
     ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_LIMIT = (\d+);)")));
     EXPECT_EQ(std::stoi(m[1]), kLoopLimit);
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_TOTAL_LIMIT = (\d+);)")));
+    EXPECT_EQ(std::stoi(m[1]), kLoopTotalLimit);
+    ASSERT_TRUE(std::regex_search(s, m, std::regex(R"(const int RL_LOOP_TOTAL_FLAG = (\d+);)")));
+    EXPECT_EQ(std::stoi(m[1]), kLoopTotalFlag);
+}
+
+// Issue 22: the message says which bound a loop met, and what was counted.
+TEST(LoopGuard, TheTimeoutSaysWhatWasMeasured) {
+    const std::vector<SourceLocation> loops = {{"/x/student/10-display.glsl", 24}};
+    const std::string one = loopTimeoutMessage(loops, 1, "for one input of toneMap");
+    EXPECT_EQ(one.rfind("a loop in 10-display.glsl:24 ran more than 16384 iterations for one input of toneMap in one run, "
+                        "without its condition becoming false: on a GPU",
+                        0),
+              0u)
+        << one;
+    const std::string total = loopTimeoutMessage(loops, kLoopTotalFlag + 1, "in one pixel");
+    EXPECT_EQ(total.rfind("the loops of the exercise files ran more than 60000 iterations in all in one pixel, the last "
+                          "one tested being the loop in 10-display.glsl:24",
+                          0),
+              0u)
+        << total;
 }
 
 TEST(LoopGuard, TrippedLoopIsTheLowestIdMarked) {
