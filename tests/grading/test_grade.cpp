@@ -466,6 +466,39 @@ TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
     if (!HasFailure()) fs::remove_all(root);
 }
 
+// A run killed outright (SIGKILL: no handler runs, the pool's workers are
+// left to finish or die) and started again grades only who is missing and
+// writes the same bytes as a run that was never interrupted.
+TEST(GradeRun, ARunKilledOutrightResumesToTheSameBytes) {
+    fs::path root = freshTempDir("grade_sigkill");
+    fs::path sub = root / "submissions";
+    writeFolder(sub / "full", solutionFiles());
+    writeFolder(sub / "fresnel", solutionFiles({{"07-fresnel.glsl", mutantText("07-fresnel--power-on-voh")}}));
+    writeFolder(sub / "display", solutionFiles({{"10-display.glsl", mutantText("10-display--gamma-before-tonemap")}}));
+    writeFolder(sub / "stubs", {});
+    // The same folder name for both runs, so that nothing differs but the interruption.
+    fs::path whole = root / "a" / "out", killed = root / "b" / "out";
+    CommandResult reference = runRaylab(gradeArgs(sub, whole));
+    ASSERT_EQ(reference.status, 0) << reference.output;
+
+    // Killed once the first student's record is written (at most 60 s of waiting).
+    CommandResult kill = runShell("cd " + root.string() + " && (" + std::string(RAYLAB_BINARY) + " " +
+                                  gradeArgs(sub, killed, "--jobs 1") +
+                                  " >/dev/null 2>&1 & pid=$!; for i in $(seq 600); do "
+                                  "ls " + killed.string() + "/*/grade.json >/dev/null 2>&1 && break; sleep 0.1; done; "
+                                  "kill -9 $pid; wait $pid; echo killed $?)");
+    ASSERT_TRUE(contains(kill.output, "killed 137")) << kill.output;
+
+    CommandResult resumed = runRaylab(gradeArgs(sub, killed));
+    ASSERT_EQ(resumed.status, 0) << resumed.output;
+    EXPECT_FALSE(contains(resumed.output, "graded 4, skipped 0")) << "nothing kept from the killed run: " << resumed.output;
+    for (const char* name : {"grades.csv", "summary.json", "index.html", "gradescope-results.json"}) {
+        if (!fs::exists(whole / name)) continue;
+        EXPECT_EQ(readText(killed / name), readText(whole / name)) << name;
+    }
+    if (!HasFailure()) fs::remove_all(root);
+}
+
 // The run's shader cache (OUT/.shader-cache) holds compiled code keyed by
 // the whole source, never a result: swap two students' files and run again
 // over the same OUT, with the cache warm, and each gets what the files now
