@@ -10,6 +10,7 @@
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
+#include "render/live_defines.h"
 #include "render/shader_config.h"
 #include "shader/source_assembler.h"
 
@@ -61,6 +62,27 @@ Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specia
     auto it = cache.find(key);
     if (it == cache.end()) it = cache.emplace(key, buildPictureProgram(impl, defines)).first;  // with its sky tiles' program
     return renderOnce(it->second, scene, frameFromScene(scene));
+}
+
+Rendering renderGlslLive(const Scene& scene, const Implementation& impl) {
+    ensureContext();
+    ShaderDefines defines = liveViewDefines(scene, scene.model, View::Final, traceStarted(impl), fileDefines(impl));
+    auto& cache = programCache();
+    std::string key = programKey("live", impl, defines);
+    auto it = cache.find(key);
+    if (it == cache.end()) it = cache.emplace(key, PictureProgram{buildRayTracer(impl, defines), std::nullopt}).first;
+    return renderOnce(it->second, scene, frameFromScene(scene));
+}
+
+const ShaderProgram& probeProgram(int exercise, const Implementation& impl) {
+    ensureContext();
+    ShaderDefines defines{{"RL_PROBE_EXERCISE", std::to_string(exercise)}};
+    auto& cache = programCache();
+    std::string key = programKey("probe", impl, defines);
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second.program;
+    ShaderProgram program(assembleShader("fullscreen.vert", impl, {}), assembleShader("probe.frag", impl, defines));
+    return cache.emplace(key, PictureProgram{std::move(program), std::nullopt}).first->second.program;
 }
 
 // ---- the double-precision oracle ----------------------------------------------------------
