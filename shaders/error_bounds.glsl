@@ -171,7 +171,12 @@ Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float anchorC, bool r
     vec3 c = geometry.xyz;
     float r = geometry.w;
     vec3 p = o + t * d;
-    vec3 n = normalize(p - c);
+    // Where float32 cannot place p apart from the centre (a sphere smaller
+    // than the rounding of o + t d: radius 1 seen from 1e10, or hit at t ~
+    // 1e15 inside a huge sphere), p - c rounds to 0 and normalize() would be
+    // 0/0, NaN in every term after it (issue #23). Then the hit faces the ray.
+    vec3 fromCentre = p - c;
+    vec3 n = dot(fromCentre, fromCentre) > 0.0 ? normalize(fromCentre) : -d;
     vec3 an = abs(n);
     hit.p = c + r * n;
     hit.error = GAMMA_12 * (abs(hit.p) + r * an);
