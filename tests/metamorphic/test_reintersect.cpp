@@ -1,7 +1,7 @@
 // pbrt-v4's re-intersection test as a yardstick (issue #23; pbrt-v4,
 // src/pbrt/shapes_test.cpp, FullSphere.Reintersect): spheres of radius
-// 10^[-4, 4], each hit by a ray from an origin whose components are up to
-// 10^8 away, and from that hit rays leave in random directions. A ray that
+// 10^[-4, 4], each hit from outside by a ray from an origin whose components
+// are up to 10^8 away, and from that hit rays leave in random directions. A ray that
 // leaves the side the normal faces must not meet the same surface again (a
 // self-hit); one that leaves into the surface (n.w < -0.05) must meet it
 // (else it wrongly passed through it). The GLSL runs through the probe
@@ -84,8 +84,9 @@ struct Yardstick {
 
 // Sphere k: radius 10^[-4, 4], its centre anywhere up to 10^6 from the
 // world's origin (the GLSL sees it relative to the anchor, the CPU in world
-// coordinates), a ray origin whose components are 10^[-8, 8] from it (pbrt's
-// pExp, with random signs) towards a random point of its bounding box.
+// coordinates), a ray origin outside it whose components are 10^[-8, 8]
+// from it (pbrt's pExp, with random signs), at most 2^22 radii away,
+// towards a random point of its bounding box.
 struct SphereCase {
     Scene scene;
     dvec3 origin, dir;
@@ -101,8 +102,15 @@ SphereCase sphereCase(int k, int rays) {
     c.scene.spheres = {sphere(centre, r, m)};
     c.scene.camera.position = centre;  // the probe's anchor (probe_runner.cpp): the sphere's centre, as sceneAnchor()
     c.scene.camera.target = centre + dvec3(0, 0, -1);
-    dvec3 offset;
-    for (int i = 0; i < 3; ++i) offset[i] = (g.uniform() < 0.5 ? -1 : 1) * g.exp10(-8, 8);
+    dvec3 offset(0.0);
+    // Outside the sphere (drawn again until it is): from inside, the side the
+    // normal faces is the sphere's inside, where meeting the far wall is right.
+    // And at most 2^22 radii away: farther, float32 rounds the hit point
+    // o + t d by more than a quarter of the radius, the hit's normal is
+    // noise, and the loader refuses a scene whose camera sees such a sphere
+    // wider than a pixel (floatRangeProblem(), core/float_range.h).
+    while (glm::length(offset) <= 1.001 * r || glm::length(offset) > 4194304.0 * r)
+        for (int i = 0; i < 3; ++i) offset[i] = (g.uniform() < 0.5 ? -1 : 1) * g.exp10(-8, 8);
     c.origin = centre + offset;
     dvec3 target = centre + r * dvec3(2 * g.uniform() - 1, 2 * g.uniform() - 1, 2 * g.uniform() - 1);
     c.dir = glm::normalize(target - c.origin);
