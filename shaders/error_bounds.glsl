@@ -59,6 +59,61 @@ float refineRoot(vec3 o, vec3 d, vec4 sphere, float C, float t) {
     return abs(step) < 0.5 * abs(t) ? t - step : t;
 }
 
+// ---- The side of a sphere a ray starts on (issue #23) ----------------------------------------
+//
+// The exercise's c = |o - c|^2 - r^2 (02) is made of float32 numbers: o - c
+// carries u (|o| + |c|) per component (each rounded from double), and the
+// dot product u |o - c|^2 more. Near a huge sphere that exceeds the true
+// value 2 r h (h the origin's height above the surface): a camera 1e-3
+// above a ground of radius 1e5 has c = 200, float32 keeps ulp(1e10) = 1024
+// of it, and the exercise sees the camera inside the ground (every ground
+// pixel shaded from inside: docs/numerics.md, "Issue #23"). Where that
+// happens and a better C is at hand, the framework takes the root from it.
+
+// What the exercise's float32 |o - c|^2 - r^2 can be off by, four times over:
+// 2 |f|.|rounding of f| plus the dot products' own rounding (f = o - c).
+float exerciseCError(vec3 o, vec3 c, float r, vec3 f) {
+    return 4.0 * UNIT_ROUNDOFF * (2.0 * dot(abs(f), abs(o) + abs(c)) + 4.0 * (dot(f, f) + r * r));
+}
+
+// The root of |o + t d - c|^2 = r^2 that a ray from o meets first (d unit),
+// or NO_HIT, from C = |o - c|^2 - r^2 computed better than float32's
+// |o - c|^2 - r^2: the sign of C is the side o is on, and the near root is
+// C / q (no cancellation). b^2 - C is the discriminant with the smaller
+// rounding near a huge sphere (b^2 ~ C there; r^2 - |f - b d|^2 would lose
+// ulp(r^2)).
+float rootFromC(vec3 o, vec3 d, vec3 c, float C) {
+    float b = dot(o - c, d);
+    float discriminant = b * b - C;
+    if (discriminant < 0.0) return NO_HIT;
+    float q = -b - (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
+    if (q == 0.0) return NO_HIT;
+    float t0 = min(C / q, q), t1 = max(C / q, q);
+    return t0 > 0.0 ? t0 : t1 > 0.0 ? t1 : NO_HIT;
+}
+
+// Camera rays: |camera - centre|^2 - r^2 of sphere i, computed by the host in
+// double for the camera of this frame (SceneUniformBlock::upload, every frame
+// of the live view), and whether the exercise's float32 cannot tell the
+// camera's side of it (then closestHit() takes the camera ray's root from it).
+float cameraC(int i) { return u_sphereFromCamera[i].x; }
+bool cameraSideFromHost(int i) { return u_sphereFromCamera[i].y != 0.0; }
+
+// Secondary rays near a huge sphere (refinesRoot): C from the anchor form
+// C_a - 2 o.c + |o|^2, which rounds by u (|C_a| + 2 |o|.|c| + |o|^2), small
+// where o is near the anchor (a point on a small sphere resting on the
+// ground). `decided`: true when the exercise's float32 cannot tell o's side
+// and this C can (its rounding, 8 times over, is below |C|); then the
+// result is the root from it.
+float anchorSideRoot(vec3 o, vec3 d, vec4 sphere, float anchorC, out bool decided) {
+    vec3 c = sphere.xyz;
+    vec3 f = o - c;
+    float C = anchorC - 2.0 * dot(o, c) + dot(o, o);
+    float errorA = 8.0 * roundingGamma(6.0) * (abs(anchorC) + 2.0 * dot(abs(o), abs(c)) + dot(o, o));
+    decided = abs(C) > errorA && abs(C) < exerciseCError(o, c, sphere.w, f);
+    return decided ? rootFromC(o, d, c, C) : NO_HIT;
+}
+
 // The sphere a secondary ray leaves (its origin lies on it, pushed off by
 // offsetRayOrigin): a sphere is convex, so a ray leaving its outside
 // ((o - c).d >= 0) cannot hit it again, and one leaving its inside hits it
@@ -116,16 +171,30 @@ Hit makeHit(vec3 o, vec3 d, float t, int i, vec4 geometry, float anchorC, bool r
     vec3 c = geometry.xyz;
     float r = geometry.w;
     vec3 p = o + t * d;
-    vec3 n = normalize(p - c);
+    // Where float32 cannot place p apart from the centre (a sphere smaller
+    // than the rounding of o + t d: radius 1 seen from 1e10, or hit at t ~
+    // 1e15 inside a huge sphere), p - c rounds to 0 and normalize() would be
+    // 0/0, NaN in every term after it (issue #23). Then the hit faces the ray.
+    vec3 fromCentre = p - c;
+    vec3 n = dot(fromCentre, fromCentre) > 0.0 ? normalize(fromCentre) : -d;
     vec3 an = abs(n);
     hit.p = c + r * n;
     hit.error = GAMMA_12 * (abs(hit.p) + r * an);
     if (residualCandidate) {
         float pp = dot(p, p);
         float halfInverseRadius = 0.5 / r;
-        float residualError = GAMMA_10 * (abs(anchorC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius;
+        float step = (anchorC - 2.0 * dot(p, c) + pp) * halfInverseRadius;
+        // The step is (|p - c| - r)(1 + (|p - c| - r) / 2r): first order in p's
+        // distance from the sphere. Its second-order part, step^2 / 2r, is
+        // negligible where the root was refined (p on the sphere to float32),
+        // not where p carries the rounding of a far origin (t ~ 1e5 r: p off
+        // by 1e-2 r, the residual form 1e-4 r inside the sphere, which
+        // pbrt's re-intersection test caught, tests/metamorphic/test_reintersect.cpp):
+        // step^2 / r bounds it twice over.
+        float residualError = GAMMA_10 * (abs(anchorC) + 2.0 * dot(abs(p), abs(c)) + pp) * halfInverseRadius +
+                              step * step * 2.0 * halfInverseRadius;
         if (residualError < GAMMA_12 * (maxAbs(c) + 2.0 * r)) {  // |p'| + r <= |c| + 2r
-            hit.p = p - n * ((anchorC - 2.0 * dot(p, c) + pp) * halfInverseRadius);
+            hit.p = p - n * step;
             hit.error = residualError * an + GAMMA_2 * abs(hit.p);
         }
     }

@@ -53,7 +53,7 @@ bool mayHitSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
 const vec4 SHADOW_CONE_AXIS[] = RL_SHADOW_CONE_AXIS;         // xyz: axis, w: the least cosine
 const float SHADOW_CONE_NEAREST[] = RL_SHADOW_CONE_NEAREST;  // the least tMax
 #endif
-int g_shadowLight = 0;  // the light of the shadow ray in flight (directLight sets it)
+int g_shadowLight = -1;  // the light of the shadow ray in flight (directLight sets it; -1: a probe's own light)
 
 bool mayShadow(vec3 origin, vec3 dir, float tMax, int i) {
 #ifdef RL_SHADOW_CONES
@@ -72,6 +72,21 @@ int nextCandidate(inout int candidates) {
     return (floatBitsToInt(float(bit)) >> 23) - 127;
 }
 
+// The exercise's root t on sphere i, or where its float32 cannot tell which
+// side of the sphere the ray starts on (a camera or a point a float32 step
+// above a huge sphere, issue #23), the root from a better C: the host's for a
+// camera ray, the anchor form's for a secondary ray near a huge sphere. Only
+// there does the framework overrule the exercise; elsewhere a huge sphere's
+// root is refined (refineRoot) and a student's mistakes show as they are.
+float sideCheckedRoot(vec3 origin, vec3 dir, vec4 sphere, int i, float t, bool fromCamera) {
+    if (fromCamera && cameraSideFromHost(i)) return rootFromC(origin, dir, sphere.xyz, cameraC(i));
+    if (!refinesRoot(i)) return t;
+    bool decided;
+    float better = anchorSideRoot(origin, dir, sphere, sphereAnchorC(i), decided);
+    if (decided) return better;
+    return t > 0.0 ? refineRoot(origin, dir, sphere, sphereAnchorC(i), t) : t;
+}
+
 // Nearest hit along `dir`; hit.t = NO_HIT when nothing is hit. `dir` is
 // renormalised first: a reflected direction is unit length only to ~1e-7,
 // and intersectSphere() assumes |dir| = 1 (over a chord of 8 that is 8e-6).
@@ -83,6 +98,8 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     hit.t = NO_HIT;
     hit.sphere = NO_SPHERE;
     float nearest = 3.4e38;  // FLT_MAX: any real hit is nearer
+    // A camera ray: the host knows the camera's side of every sphere (issue #23).
+    bool fromCamera = leaving == NO_SPHERE && origin == cameraFromAnchor();
     int sphere = NO_SPHERE;
     vec4 geometry = vec4(0.0), leavingGeometry = vec4(0.0);  // centre and radius of the nearest, of `leaving`
     float anchorC = 0.0, leavingC = 0.0;            // sphereAnchorC() of the nearest, of `leaving`
@@ -99,7 +116,7 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
         }
 #endif
         float t = intersectSphere(origin, dir, sphereI.xyz, sphereI.w);
-        if (refinesRoot(i) && t > 0.0) t = refineRoot(origin, dir, sphereI, sphereAnchorC(i), t);  // unused for `leaving`
+        t = sideCheckedRoot(origin, dir, sphereI, i, t, fromCamera);  // unused for `leaving`
         // Kept if nearer, by selects: llvmpipe runs the body of an if for
         // every pixel anyway, and the selects measured 2% to 4% faster than
         // an if around these assignments (docs/performance.md).
@@ -166,9 +183,43 @@ bool segmentCrossesSphere(vec3 o, vec3 d, float tMax, vec4 sphere) {
     return dot(nearest, nearest) <= rr && (dot(f, f) > rr || dot(end, end) > rr);
 }
 
+// Whether sphere i hides light k from o (direction d towards it) when the
+// light lies on sphere i's surface or closer to it than float32 can resolve
+// (lightSurfaceSphere). The model's rule (docs/model.md, "A light on a
+// surface"): the sphere hides the light only where the segment crosses its
+// inside before the light; a light on the surface is hidden by neither side
+// of that surface. With the light's side from the host (double):
+//   o inside the sphere: hidden when the light is outside it;
+//   o outside: hidden when the light is inside, or when the segment passes
+//   through the sphere and arrives at the light moving outward.
+// No root near tMax is asked for, which float32 would round either way pixel
+// by pixel (the speckle of issue #23).
+bool lightNearSurfaceBlocks(vec3 o, vec3 d, vec4 sphere, int k) {
+    float side = lightSurfaceSide(k);
+    vec3 f = o - sphere.xyz;
+    float rr = sphere.w * sphere.w;
+    if (dot(f, f) < rr) return side > 0.0;
+    if (side < 0.0) return true;
+    float b = dot(f, d);
+    vec3 perpendicular = f - b * d;
+    return b < 0.0 && dot(perpendicular, perpendicular) < rr && dot(d, lightPosition(k) - sphere.xyz) > 0.0;
+}
+
 // The shadow test of sphere i on a segment: the exercise's intersectSphere(),
 // or in a program for one picture with the course's 02, the test above.
-bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
+// Near a huge sphere whose side the exercise's float32 cannot tell (a point
+// on a small sphere resting on a ground of radius 1e4), the root from the
+// anchor form decides (anchorSideRoot, issue #23). A light lying on or within
+// float32's resolution of sphere i's surface is judged by the host's side of
+// it (lightNearSurfaceBlocks, docs/model.md).
+bool blocksSegment(vec3 o, vec3 d, float tMax, int i) {
+    vec4 sphere = u_sphereGeometry[i];
+    if (lightSurfaceSphere(g_shadowLight) == i) return lightNearSurfaceBlocks(o, d, sphere, g_shadowLight);
+    if (refinesRoot(i)) {
+        bool decided;
+        float t = anchorSideRoot(o, d, sphere, sphereAnchorC(i), decided);
+        if (decided) return t > 0.0 && t < tMax;
+    }
 #ifdef RL_SEGMENT_TEST
     return segmentCrossesSphere(o, d, tMax, sphere);
 #else
@@ -182,7 +233,7 @@ bool blocksSegment(vec3 o, vec3 d, float tMax, vec4 sphere) {
 bool anyCandidateBlocks(int candidates, int first, vec3 origin, vec3 dir, float tMax) {
     while (candidates != 0) {
         int i = first + nextCandidate(candidates);
-        if (blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
+        if (blocksSegment(origin, dir, tMax, i)) return true;
     }
     return false;
 }
@@ -226,7 +277,7 @@ bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
     return anyCandidateBlocks(candidates, 0, origin, dir, tMax);
 #else
     for (int i = 0; i < sphereCount(); ++i)
-        if (i != leaving && blocksSegment(origin, dir, tMax, u_sphereGeometry[i])) return true;
+        if (i != leaving && blocksSegment(origin, dir, tMax, i)) return true;
     return false;
 #endif
 }

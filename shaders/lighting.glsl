@@ -26,7 +26,11 @@ float shadowVisibility(Hit hit, vec3 lightPosition) {
     float radius = hit.sphereGeometry.w;
     vec3 toLight = lightPosition - centre;
     bool inside = dot(hit.p - centre, hit.n) < 0.0;
-    if (inside && dot(toLight, toLight) > radius * radius) return 0.0;
+    // A light on the surface, or closer to it than float32 resolves: its side
+    // from the host (docs/model.md, "A light on a surface": not hidden).
+    bool lightOutside = lightSurfaceSphere(g_shadowLight) == hit.sphere ? lightSurfaceSide(g_shadowLight) > 0.0
+                                                                       : dot(toLight, toLight) > radius * radius;
+    if (inside && lightOutside) return 0.0;
 #endif
 #ifdef RL_SINGLE_SPHERE
     return 1.0;  // specialised to a scene of one sphere: no shadow ray at all
@@ -64,6 +68,7 @@ vec3 directLight(Hit hit, vec3 v, Material m) {
     // A light at p makes l NaN: the select drops it.
     for (int i = 0; i < lightCount(); ++i) {
         vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
+        g_shadowLight = i;
         float visible = shadowVisibility(hit, lightPosition(i));
         vec3 f = hitBRDF(hit, v, normalize(lightPosition(i) - hit.p), m);
         bool adds = E != vec3(0.0) && visible != 0.0;

@@ -31,8 +31,26 @@ const int PROBE_TRACE = 17;
 const int PROBE_TONEMAP = 18;
 const int PROBE_GAMMA = 19;
 const int PROBE_DISPLAY = 20;
+const int PROBE_REINTERSECT = 21;  // the re-intersection yardstick (tests/metamorphic/test_reintersect.cpp), not a check
 
 const float PROBE_WRONG_ORIGIN = -2.0;  // traceRay: a bounce that does not start on the normal (probe_cases.cpp)
+
+// pbrt-v4's re-intersection test (shapes_test.cpp, FullSphere.Reintersect)
+// on the framework's hits: a ray from o along d meets the scene's sphere
+// 0; from that hit a ray leaves along w, and must not meet the same surface
+// again. `mode`: 0 the offset alone (offsetRayOrigin, exercise 04; the ray
+// asks every sphere, its own included), 1 the offset and the framework's
+// handling of the sphere a ray leaves (closestHit's `leaving`), 2 the bounce
+// of 09: the same along reflect(d, n). Returns x 1 when the first ray hit,
+// y the sphere the second ray meets (-1: none), z its t, w dot(w, n).
+vec4 reintersect(vec3 o, vec3 d, vec3 w, int mode) {
+    Hit first = closestHit(o, d, NO_SPHERE);
+    if (first.t == NO_HIT) return vec4(0.0, -1.0, 0.0, 0.0);
+    if (mode == 2) w = normalize(reflect(d, first.n));
+    vec3 origin = offsetRayOrigin(first.p, first.n, first.error);
+    Hit second = closestHit(origin, w, mode == 0 ? NO_SPHERE : first.sphere);
+    return vec4(1.0, float(second.sphere), second.t, dot(w, first.n));
+}
 
 vec4 evaluateProbe() {
     ivec2 cell = ivec2(gl_FragCoord.xy);
@@ -61,6 +79,7 @@ vec4 evaluateProbe() {
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 4
     if (f == PROBE_OFFSET_ORIGIN) r.xyz = offsetRayOrigin(a.xyz, b.xyz, c.xyz);
     if (f == PROBE_VISIBILITY) r.x = lightVisibility(hit, c.xyz);
+    if (f == PROBE_REINTERSECT) r = reintersect(a.xyz, b.xyz, c.xyz, int(c.w));
 #endif
 #if !defined(RL_PROBE_EXERCISE) || RL_PROBE_EXERCISE == 5
     if (f == PROBE_D_GGX) r.x = D_GGX(a.xyz, b.xyz, c.x);

@@ -23,6 +23,8 @@ layout(std140) uniform SceneBlock {
     vec4 u_lightPosition[RL_MAX_LIGHTS];    // xyz position relative to the anchor (scene units)
     vec4 u_lightIntensity[RL_MAX_LIGHTS];   // rgb colour * intensity (linear)
     vec4 u_cameraFromAnchor;                // xyz the camera's position relative to the anchor
+    vec4 u_sphereFromCamera[RL_MAX_SPHERES]; // x |camera - centre|^2 - r^2 (from double, per frame), y 1: camera rays take their root from it
+    vec4 u_lightSurface[RL_MAX_LIGHTS];      // x the sphere whose surface the light lies within float32's reach of (-1: none), y its side from double: -1 inside, 0 on, 1 outside
 };
 
 uniform int u_sphereCount;   // number of valid entries in the sphere arrays
@@ -81,3 +83,9 @@ Material sphereMaterial(int i) {
 
 vec3 lightPosition(int i) { return u_lightPosition[i].xyz; }
 vec3 lightIntensity(int i) { return u_lightIntensity[i].rgb; }
+
+// A light on, or closer to a sphere's surface than float32 can tell apart
+// (docs/model.md, "A light on a surface"): that sphere's index, or -1; and
+// which side of it the host found in double (-1 inside, 0 on, 1 outside).
+int lightSurfaceSphere(int k) { return k >= 0 ? int(u_lightSurface[k].x) : -1; }
+float lightSurfaceSide(int k) { return u_lightSurface[k].y; }

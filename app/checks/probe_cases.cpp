@@ -379,6 +379,24 @@ std::vector<ProbeSpec> intersectProbes() {
              return value(R::intersectSphere(o, d, ce, r));
          }},
     };
+    // A t-min epsilon (t0 > 1e-4): the usual habit against self-hits, which
+    // the framework's offset (exercise 04) and its exact handling of the
+    // sphere a ray leaves make unnecessary. Its symptom is not noise: roots
+    // nearer than the epsilon are dropped, so a ray from just off a surface
+    // passes through it and spheres nearer than it vanish.
+    // (1e-5 and below change no probe case: such an epsilon passes.)
+    for (double epsilon : {1e-2, 1e-3, 1e-4}) {
+        auto threshold = [=](const ProbeCase& c) {
+            double t0, t1;
+            if (!roots(c, t0, t1)) return value(R::kNoHit);
+            return value(t0 > epsilon ? t0 : t1 > epsilon ? t1 : R::kNoHit);
+        };
+        p.mistakes.push_back({"roots nearer than " + fmt(epsilon) + " are dropped (a t-min epsilon): a ray from just "
+                              "off a surface passes through it, and spheres nearer than that vanish",
+                              "only t > 0 counts, with no epsilon: the framework keeps secondary rays off their "
+                              "surface (exercise 04's offset, the sphere a ray leaves handled exactly)",
+                              threshold});
+    }
     p.groupHints = {
         {"origin at the centre", "from the centre b = 0, and GLSL's sign(0.0) is 0, so q = 0: use b >= 0 ? 1 : -1"},
         {"far sphere (distance 1e3 to 1e4)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
@@ -388,8 +406,9 @@ std::vector<ProbeSpec> intersectProbes() {
         {"nearly tangent ray", "a negative discriminant is a miss; zero or positive is a hit"},
         {"exactly tangent ray (discriminant 0)", "a negative discriminant is a miss; zero or positive is a hit"},
         {"origin on or just inside the surface",
-         "one root is at or near t = 0 here: only t > 0 counts, and that root must come from c / q with "
-         "q = -b - sign(b) sqrt(discriminant); -b +/- sqrt(discriminant) cancels to noise"},
+         "one root is at or near t = 0 here and must be returned whenever it is > 0, however small (no t-min "
+         "epsilon); that root must come from c / q with q = -b - sign(b) sqrt(discriminant), where -b +/- "
+         "sqrt(discriminant) would cancel"},
     };
     return {p};
 }
@@ -624,6 +643,28 @@ std::vector<ProbeSpec> shadowProbes() {
             o.cases.push_back(c);
         }
     }
+    // Small spheres far from the origin (|p| >> r, issue #23): pError follows
+    // |p| component by component, not the radius, and is far from parallel
+    // to n. The centre lies along one axis at 1e2 to 1e6 and n mostly across
+    // it: the extent along n is about gamma_12 r, while |pError| and its
+    // largest component are gamma_12 |p|, 1e2 to 1e9 times more.
+    Random farRng(4040);  // its own draws: the cases after these stay as they were
+    for (int k = 0; k < 12; ++k) {
+        ProbeCase c;
+        int axis = k % 3;
+        double radius = std::pow(10.0, farRng.range(-3, 0)), distance = std::pow(10.0, farRng.range(2, 6));
+        dvec3 centre(0.0);
+        centre[axis] = (k % 2 ? -1 : 1) * distance;
+        dvec3 n = dvec3(farRng.unitVector());
+        n[axis] *= 1e-3;  // across the axis: p's large component is not n's
+        n = glm::normalize(n);
+        vec3 p = vec3(centre + radius * n);
+        put(c, 0, p);
+        put(c, 4, vec3(n));
+        put(c, 8, hitError(p, vec3(n), radius));
+        c.group = "small sphere far from the origin";
+        o.cases.push_back(c);
+    }
     o.expected = [](const ProbeCase& c) { return value(offsetOrigin(get(c, 0), get(c, 4), get(c, 8))); };
     // The offset d = dot(|n|, e) >= gamma_12 r > 12 u max|p| (r >= |p| above);
     // p_i + d n_i rounds by at most u |p_i| more. A quarter of d plus 2 u max|p|
@@ -647,13 +688,27 @@ std::vector<ProbeSpec> shadowProbes() {
         {"the origin is pushed into the surface", "n faces the side the ray leaves to: add the offset, " + formula,
          [](const ProbeCase& c) { return value(get(c, 0) - glm::dot(glm::abs(get(c, 4)), get(c, 8)) * get(c, 4)); }},
     };
+    o.mistakes.push_back({"the offset's length is |pError|, not its extent along n: on a small sphere far from the "
+                          "origin pError follows |p|, and rays start far off the surface (light leaks, lost contact "
+                          "shadows)",
+                          "the length is the bound's extent along n, dot(abs(n), pError): " + formula,
+                          [](const ProbeCase& c) { return value(get(c, 0) + glm::length(get(c, 8)) * get(c, 4)); }});
+    o.mistakes.push_back({"the offset's length is the largest component of pError, not its extent along n: on a small "
+                          "sphere far from the origin that is |p|'s rounding, not the radius's",
+                          "the length is the bound's extent along n, dot(abs(n), pError): " + formula,
+                          [](const ProbeCase& c) {
+                              dvec3 e = get(c, 8);
+                              return value(get(c, 0) + std::max(e.x, std::max(e.y, e.z)) * get(c, 4));
+                          }});
     for (double epsilon : {1e-2, 1e-3, 1e-4, 1e-5})  // the usual fixed epsilons
         o.mistakes.push_back({"a fixed offset of " + fmt(epsilon) + ": too large for a tiny scene (light leaks), too small "
                               "for a huge one (acne)",
                               "the offset follows the hit point's error bound, not a constant: " + formula,
                               [epsilon](const ProbeCase& c) { return value(get(c, 0) + epsilon * get(c, 4)); }});
     o.groupHints = {{"tiny scene (1e-3)", "a fixed epsilon is too large for a tiny scene: use the error bound pError"},
-                    {"huge scene (1e5)", "a fixed epsilon is too small for a huge scene: use the error bound pError"}};
+                    {"huge scene (1e5)", "a fixed epsilon is too small for a huge scene: use the error bound pError"},
+                    {"small sphere far from the origin",
+                     "pError follows |p| here, not the radius: the offset is its extent along n, dot(abs(n), pError)"}};
 
     ProbeSpec v{ProbeFunction::Visibility, "lightVisibility", "lightVisibility(hit, lightPosition)", 1};
     v.needsScene = true;

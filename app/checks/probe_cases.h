@@ -16,7 +16,8 @@ namespace rl {
 // The same list as the PROBE_ constants of shaders/probe.glsl.
 enum class ProbeFunction : int {
     SampleOffset = 0, CameraRay, Intersect, Lambert, Irradiance, OffsetOrigin, Visibility, DGgx, G1, G,
-    FSchlick, Alpha, F0, Specular, Diffuse, Brdf, FRoughness, Trace, ToneMap, Gamma, Display
+    FSchlick, Alpha, F0, Specular, Diffuse, Brdf, FRoughness, Trace, ToneMap, Gamma, Display,
+    Reintersect  // the re-intersection yardstick of the metamorphic suite, not a check
 };
 
 constexpr int kProbeInputFloats = 24;  // six RGBA texels per case

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 namespace rl {
 
@@ -101,6 +102,12 @@ void runRender(const RenderOptions& o) {
         frame.viewBounce = bounce;
         result = renderOnce(picture, scene, frame);
     }
+    // No NaN or Inf leaves the renderer (issue #23): a scene the shader cannot
+    // carry is refused before rendering (core/float_range.h); a non-finite
+    // value here is raylab's bug, reported as an internal error (exit 3, which
+    // the fuzzer fails on) before any output is written.
+    if (std::string problem = nonFiniteProblem(result.radiance); !problem.empty())
+        throw std::logic_error(o.scene + ": " + problem + "; nothing was written (a bug in raylab: please report it with the scene)");
     writeRenderOutputs(o.png, o.pfm, result);
     std::cout << std::filesystem::absolute(o.png).lexically_normal().string() << "\n";
     if (!o.pfm.empty()) std::cout << std::filesystem::absolute(o.pfm).lexically_normal().string() << "\n";

@@ -90,6 +90,35 @@ std::string floatRangeProblem(const Scene& scene) {
                    ", too small for float32" + unitNote + ": its square is below float32's smallest normal value " +
                    number(kFloat32MinNormal);
     }
+    // Points the camera sees that float32 cannot place (issue #23): relative
+    // to the anchor a position rounds by u = 2^-24 of its distance, and the
+    // shader stops telling points apart where that exceeds the scene's
+    // smallest features. kSeeingLimit = 2^22: float32 then still places a
+    // point to a quarter of them.
+    constexpr double kSeeingLimit = 4194304.0;
+    double smallest = INFINITY;
+    std::size_t smallestIndex = 0;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].radius < smallest) smallest = scene.spheres[smallestIndex = i].radius;
+    const glm::dvec3 eye = scene.camera.position;
+    const double pixelAngle = 2.0 * t / std::max(1, scene.render.height);  // the angle of a pixel near the centre
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        double distance = glm::length(eye - s.center);
+        std::string field = "spheres[" + std::to_string(i) + "]";
+        // The camera inside: its far wall lies up to 2r away, rounded by u 2r.
+        if (distance < s.radius && 2.0 * s.radius > kSeeingLimit * smallest)
+            return field + ".radius is " + number(s.radius) + " with the camera inside it: float32 rounds its far wall, " +
+                   number(2.0 * s.radius) + " away, by more than a quarter of spheres[" + std::to_string(smallestIndex) +
+                   "].radius " + number(smallest) + " (at most 4.19e+06 times it, 2^22)";
+        // Seen from outside, more than a pixel wide, from more than 2^22 radii:
+        // float32 rounds the points on it by more than a quarter of its radius.
+        double gap = distance - s.radius;
+        if (gap > kSeeingLimit * s.radius && s.radius > gap * pixelAngle)
+            return field + ".center is " + number(gap) + " from the camera, " + number(gap / s.radius) +
+                   " times its radius " + number(s.radius) + ", and the field of view shows it more than a pixel wide: " +
+                   "float32 cannot place points on it (at most 4.19e+06 times, 2^22)";
+    }
     return "";
 }
 

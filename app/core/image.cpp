@@ -146,6 +146,17 @@ void writePfm(const std::string& path, const RadianceImage& image) {
     writeFile(path, "PFM", out);
 }
 
+std::string nonFiniteProblem(const RadianceImage& image) {
+    long bad = 0;
+    std::size_t first = 0;
+    for (std::size_t k = 0; k < image.rgb.size(); ++k)
+        if (!std::isfinite(image.rgb[k]) && bad++ == 0) first = k / 3;
+    if (bad == 0) return "";
+    std::size_t width = std::size_t(std::max(image.width, 1));
+    return "the picture holds " + std::to_string(bad) + " NaN or Inf values, the first at pixel (" +
+           std::to_string(first % width) + ", " + std::to_string(first / width) + ")";
+}
+
 RadianceImage readPfm(const std::string& path) {
     Bytes file = readFile(path, "PFM");
     auto fail = [&](const std::string& reason) { return Error(path + ": cannot read PFM (" + reason + ")"); };

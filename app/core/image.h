@@ -36,6 +36,10 @@ struct Rendering {  // what every renderer (GL or CPU) produces
 // byte orders and greyscale "Pf" files are read.
 void writePng(const std::string& path, const DisplayImage& image);
 void writePfm(const std::string& path, const RadianceImage& image);
+
+// "" when every value of `image` is finite; otherwise "the picture holds N
+// NaN or Inf values, the first at pixel (x, y)" (x from the left, y from the top).
+std::string nonFiniteProblem(const RadianceImage& image);
 DisplayImage readPng(const std::string& path);
 RadianceImage readPfm(const std::string& path);
 

@@ -3,6 +3,7 @@
 #include "reference/cpu_reference.h"
 
 #include "core/error.h"
+#include "core/light_surface.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -206,7 +207,11 @@ bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
     // The sphere of the hit (and any identical one): only from inside, where
     // the ray crosses it at its exit distance (beyond the light when the light
     // is inside it too).
-    if (hit.inside) {
+    // A light on a sphere's surface is hidden by neither side of that surface
+    // (docs/model.md, "A light on a surface"): its side, not a root at the
+    // light's distance that rounds either way, decides.
+    const Sphere& own = scene.spheres[size_t(hit.sphere)];
+    if (hit.inside && lightSurfaceSide(lightPosition, own) != 0) {
         dvec3 toLight = lightPosition - hit.p;
         double distance = glm::length(toLight);
         if (distance == 0.0) return true;  // the light on p: nothing in between
@@ -222,6 +227,12 @@ bool lightReachable(const Scene& scene, const Hit& hit, dvec3 lightPosition) {
         const Sphere& s = scene.spheres[size_t(i)];
         double t0, t1;
         if (!sphereRoots(origin, dir, s.center, s.radius, t0, t1)) continue;
+        if (lightSurfaceSide(lightPosition, s) == 0) {
+            // On its surface: hidden only by a segment that enters the sphere
+            // before the light, and so arrives at it moving outward.
+            if (t0 > 0.0 && glm::dot(dir, lightPosition - s.center) > 0.0) return false;
+            continue;
+        }
         // Occluded when the ray enters or leaves the sphere before the light.
         if ((t0 > 0.0 && t0 < distance) || (t1 > 0.0 && t1 < distance)) return false;
     }

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
+#include "core/light_surface.h"
 #include "core/message.h"
 #include "render/bounce_cutoff.h"
 
@@ -26,7 +27,7 @@ glm::dmat4 cameraToWorld(const Camera& c) {
 }
 
 namespace {
-// std140 layout of SceneBlock in shaders/scene.glsl: six vec4 arrays and the camera.
+// std140 layout of SceneBlock in shaders/scene.glsl: six vec4 arrays, the camera, two more arrays.
 struct SceneBlockData {
     glm::vec4 sphereGeometry[kMaxSpheres];
     glm::vec4 sphereSurface[kMaxSpheres];
@@ -35,6 +36,8 @@ struct SceneBlockData {
     glm::vec4 lightPosition[kMaxLights];
     glm::vec4 lightIntensity[kMaxLights];
     glm::vec4 cameraFromAnchor;
+    glm::vec4 sphereFromCamera[kMaxSpheres];
+    glm::vec4 lightSurface[kMaxLights];
 };
 constexpr GLuint kSceneBlockBinding = 0;
 }  // namespace
@@ -47,6 +50,46 @@ SceneUniformBlock::SceneUniformBlock() {
 
 SceneUniformBlock::~SceneUniformBlock() {
     if (buffer_) gl::DeleteBuffers(1, &buffer_);
+}
+
+CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor, const glm::dvec3& anchor, double unit) {
+    constexpr double u = 5.9604644775390625e-8;  // float32's unit roundoff, 2^-24
+    const glm::dvec3 c = (sphere.center - anchor) / unit, f = eyeFromAnchor - c;
+    const double r = sphere.radius / unit, distance = glm::length(f);
+    CameraSphere out;
+    out.C = (distance - r) * (distance + r);
+    // exerciseCError() of error_bounds.glsl: 4 u (2 |f|.(|e| + |c|) + 4 (|f|^2 + r^2)).
+    glm::dvec3 af = glm::abs(f), spread = glm::abs(eyeFromAnchor) + glm::abs(c);
+    double exerciseError = 4.0 * u * (2.0 * glm::dot(af, spread) + 4.0 * (distance * distance + r * r));
+    // Beyond float32's range C is no use to the shader: a camera that far is
+    // clearly outside (or inside) and the exercise tells it.
+    out.hostDecides = std::abs(out.C) < exerciseError && std::abs(out.C) < 1e37;
+    return out;
+}
+
+LightOnSurface lightOnSurface(const Scene& scene, std::size_t k, const glm::dvec3& anchor, double unit) {
+    constexpr double u = 5.9604644775390625e-8;
+    const glm::dvec3 light = scene.lights.at(k).position;
+    LightOnSurface out;
+    double nearest = INFINITY;
+    for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
+        const Sphere& s = scene.spheres[i];
+        // float32 holds the light and the centre relative to the anchor, each
+        // to u of its size, and the shader's |o - c|^2 - r^2 near the light
+        // rounds by about 3 u (|o - c|^2 + r^2), about 6 u r^2: in height,
+        // 3 u r. 4 u of the sizes covers both; more would take lights that
+        // float32 does place (0.08 above a ground of radius 1e5, whose
+        // surface it resolves to 0.02 there) from the exercise's shadow test.
+        glm::dvec3 l = (light - anchor) / unit, c = (s.center - anchor) / unit;
+        double reach = 4.0 * u * (glm::length(l) + glm::length(c) + s.radius / unit);
+        double distance = std::abs(surfaceDistance(light, s)) / unit;
+        if (distance <= reach && distance < nearest) {
+            nearest = distance;
+            out.sphere = int(i);
+            out.side = lightSurfaceSide(light, s);
+        }
+    }
+    return out;
 }
 
 void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor) {
@@ -77,6 +120,21 @@ void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const 
         data.lightIntensity[i] = glm::vec4(glm::vec3(intensity), 0.0f);
     }
     data.cameraFromAnchor = glm::vec4(shaderPosition(eye, anchor, unit), 0.0f);
+    // The camera's relation to every sphere, for this camera (the live view
+    // uploads the block again whenever its camera moves): C = |e - c|^2 - r^2
+    // in double, and whether the exercise's float32 can tell its sign
+    // (error_bounds.glsl, exerciseCError, with the same margins).
+    const glm::dvec3 eyeFromAnchor = (eye - anchor) / unit;
+    for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
+        CameraSphere relation = cameraSphere(scene.spheres[i], eyeFromAnchor, anchor, unit);
+        data.sphereFromCamera[i] = glm::vec4(float(relation.C), relation.hostDecides ? 1.0f : 0.0f, 0.0f, 0.0f);
+    }
+    // Each light's nearness to a sphere's surface, within what float32 can
+    // resolve around it, and its side from double (docs/model.md).
+    for (std::size_t k = 0; k < scene.lights.size() && k < std::size_t(kMaxLights); ++k) {
+        LightOnSurface near = lightOnSurface(scene, k, anchor, unit);
+        data.lightSurface[k] = glm::vec4(float(near.sphere), float(near.side), 0.0f, 0.0f);
+    }
     gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
     gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
 }

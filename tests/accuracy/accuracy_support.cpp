@@ -63,6 +63,27 @@ Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specia
     return renderOnce(it->second, scene, frameFromScene(scene));
 }
 
+Rendering renderGlslLive(const Scene& scene, const Implementation& impl) {
+    ensureContext();
+    ShaderDefines defines = liveViewDefines(scene, scene.model, View::Final, traceStarted(impl), fileDefines(impl));
+    auto& cache = programCache();
+    std::string key = programKey("live", impl, defines);
+    auto it = cache.find(key);
+    if (it == cache.end()) it = cache.emplace(key, PictureProgram{buildRayTracer(impl, defines), std::nullopt}).first;
+    return renderOnce(it->second, scene, frameFromScene(scene));
+}
+
+const ShaderProgram& probeProgram(int exercise, const Implementation& impl) {
+    ensureContext();
+    ShaderDefines defines{{"RL_PROBE_EXERCISE", std::to_string(exercise)}};
+    auto& cache = programCache();
+    std::string key = programKey("probe", impl, defines);
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second.program;
+    ShaderProgram program(assembleShader("fullscreen.vert", impl, {}), assembleShader("probe.frag", impl, defines));
+    return cache.emplace(key, PictureProgram{std::move(program), std::nullopt}).first->second.program;
+}
+
 // ---- the double-precision oracle ----------------------------------------------------------
 
 namespace {

@@ -28,6 +28,15 @@ Implementation solutionsWith(const std::map<std::string, std::filesystem::path>&
 // (Purpose::Picture: structure, picture, positions; render/define_table.h).
 Rendering renderGlsl(const Scene& scene, const Implementation& impl = solutionsWith(), bool specialise = false);
 
+// What the live view (`raylab view`) draws of the scene's camera: its
+// picture program (liveViewDefines(), every value a uniform, the scene block
+// uploaded for the camera as each frame does).
+Rendering renderGlslLive(const Scene& scene, const Implementation& impl = solutionsWith());
+
+// The probe program of `raylab check` for one exercise (probe.frag with
+// RL_PROBE_EXERCISE), for runProbe() (checks/probe_runner.h).
+const ShaderProgram& probeProgram(int exercise, const Implementation& impl = solutionsWith());
+
 // The CPU reference's picture (double precision, the same model and the same
 // display step) with secondary rays offset by relativeOffset * hit magnitude
 // instead of kRayOffsetRelative = 2^-19. With a tiny offset (2^-40) it is

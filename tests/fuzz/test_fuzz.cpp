@@ -124,7 +124,7 @@ struct Mutation {
 Mutation mutateScene(const std::string& original, Rng& rng) {
     std::string t = original;
     auto at = [&](std::size_t n) { return n == 0 ? std::size_t(0) : rng.below(n); };
-    switch (rng.below(14)) {
+    switch (rng.below(15)) {
         case 0: {  // flip bits in a few bytes
             int n = 1 + int(rng.below(4));
             for (int k = 0; k < n && !t.empty(); ++k) t[at(t.size())] ^= char(1u << rng.below(8));
@@ -197,6 +197,25 @@ Mutation mutateScene(const std::string& original, Rng& rng) {
             if (rng.below(2)) t.erase(a, n);
             else t.insert(a, t.substr(a, n));
             return {"splice", t};
+        }
+        case 13: {  // a valid scene far from the origin or huge (issue #23: NaN from 1e10 and 2^64)
+            // The first "center", "position" or "target" set to (X, -X, -X),
+            // or the first radius to X, X from 1e10 to 1e24 (a radius of 1e18
+            // to 2^64 holds the camera inside): the picture must be finite or
+            // the scene refused with one line.
+            const char* far[] = {"1e10", "1e15", "3e17", "1e18", "1e19", "18446744073709551616", "1e24"};
+            std::string big = far[rng.below(std::size(far))];
+            bool radius = rng.below(2) == 0;
+            std::string key = radius ? "\"radius\"" : rng.pick<std::string>({"\"center\"", "\"position\"", "\"target\""});
+            std::size_t at0 = t.find(key);
+            if (at0 == std::string::npos) break;
+            std::size_t open = t.find_first_of(radius ? ":" : "[", at0 + key.size());
+            if (open == std::string::npos) break;
+            std::size_t close = t.find_first_of(radius ? ",}" : "]", open);
+            if (close == std::string::npos) break;
+            std::string value = radius ? ": " + big : "[" + big + ", -" + big + ", -" + big;
+            t = t.substr(0, open) + value + t.substr(close);
+            return {"far or huge " + key + " " + big, t};
         }
         case 12:  // random bytes
             for (std::size_t k = 0, n = rng.below(200); k < n; ++k) t.insert(at(t.size()), 1, char(rng.below(256)));

@@ -1,5 +1,6 @@
 #include "metamorphic/exact_oracle.h"
 
+#include "core/light_surface.h"
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
 
@@ -99,19 +100,28 @@ public:
         return true;
     }
 
-    bool lightReachable(const OracleHit& hit, V light) const {
+    // A light on a sphere's surface (lightSurfaceSide() == 0, the model's
+    // rule: docs/model.md, "A light on a surface") is hidden by that sphere
+    // only where the segment enters it before the light.
+    bool lightReachable(const OracleHit& hit, const dvec3& lightPosition) const {
+        V light = widen(lightPosition);
         V toLight = light - hit.p;
         Real distance = std::sqrt(dot(toLight, toLight));
         if (distance == 0) return true;
         V d = (1 / distance) * toLight;
         for (int i = 0; i < int(scene_.spheres.size()); ++i) {
             const Sphere& s = scene_.spheres[size_t(i)];
+            bool onSurface = lightSurfaceSide(lightPosition, s) == 0;
             if (sameSurface(i, hit.sphere)) {
-                if (hit.inside && -2 * dot(hit.p - widen(s.center), d) < distance) return false;
+                if (hit.inside && !onSurface && -2 * dot(hit.p - widen(s.center), d) < distance) return false;
                 continue;
             }
             Real t0, t1;
             if (!roots(hit.p, d, s, t0, t1)) continue;
+            if (onSurface) {
+                if (t0 > 0 && dot(d, light - widen(s.center)) > 0) return false;
+                continue;
+            }
             if ((t0 > 0 && t0 < distance) || (t1 > 0 && t1 < distance)) return false;
         }
         return true;
@@ -123,7 +133,7 @@ public:
         dvec3 radiance(0.0);
         for (const Light& light : scene_.lights) {
             dvec3 E = ref::pointLightIrradiance(p, n, light.position, light.color * light.intensity);
-            if (E == dvec3(0.0) || !lightReachable(hit, widen(light.position))) continue;
+            if (E == dvec3(0.0) || !lightReachable(hit, light.position)) continue;
             dvec3 l = narrow(normalized(widen(light.position) - hit.p));
             radiance += ref::cookTorranceBRDF(n, v, l, m, scene_.model) * E;
         }

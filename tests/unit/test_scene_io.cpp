@@ -139,6 +139,29 @@ TEST(SceneIo, ValuesBeyondFloat32AreRejectedWithTheLimit) {
               "scenes/x.json: camera.fov_y is 1e-14 degrees, below 1.15e-13, where the pixel directions underflow float32");
 }
 
+// Issue #23: points the camera sees that float32 cannot place. Before, the
+// first rendered 1137 NaN values; with makeHit()'s guard and without this
+// check it renders finite but 15% off the true picture.
+TEST(SceneIo, ScenesFloat32CannotPlaceAreRejectedWithTheLimit) {
+    EXPECT_EQ(errorOf(R"({"camera": {"position": [0, 0.2, 0], "target": [0, 0, -5]},
+                          "spheres": [{"center": [0, 0, 0], "radius": 1e18}, {"center": [0, 0, -5], "radius": 1}]})"),
+              "scenes/x.json: spheres[0].radius is 1e+18 with the camera inside it: float32 rounds its far wall, 2e+18 "
+              "away, by more than a quarter of spheres[1].radius 1 (at most 4.19e+06 times it, 2^22)");
+    EXPECT_EQ(errorOf(R"({"camera": {"position": [0, 0, 0], "target": [1e10, -1e10, -1e10], "fov_y": 1e-8},
+                          "spheres": [{"center": [1e10, -1e10, -1e10], "radius": 1}]})"),
+              "scenes/x.json: spheres[0].center is 1.73205e+10 from the camera, 1.73205e+10 times its radius 1, and the "
+              "field of view shows it more than a pixel wide: float32 cannot place points on it (at most 4.19e+06 "
+              "times, 2^22)");
+    // The same sphere through a field of view where it is less than a pixel,
+    // and the camera inside a sphere 2e6 times the smallest (scenes/hard/inside-1e5): kept.
+    EXPECT_EQ(errorOf(R"({"camera": {"position": [0, 0, 0], "target": [1e10, -1e10, -1e10], "fov_y": 45},
+                          "spheres": [{"center": [1e10, -1e10, -1e10], "radius": 1}]})"),
+              "(no error)");
+    EXPECT_EQ(errorOf(R"({"camera": {"position": [0, -99999, 3.2], "target": [0, -99999.6, 0]},
+                          "spheres": [{"center": [0, 0, 0], "radius": 1e5}, {"center": [0, -99999.9, 0.8], "radius": 0.1}]})"),
+              "(no error)");
+}
+
 TEST(SceneIo, ExtremeButRenderableScenesLoad) {
     // A fov whose float32 half angle would round past 90 degrees (the camera
     // folds tan, computed in double, into its basis), and a scene scaled by
