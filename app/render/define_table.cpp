@@ -241,7 +241,9 @@ const std::vector<const char*>& nonSpecialisationNames() {
         "RL_PROBE_EXERCISE",    // probe.frag: the exercise the checker probes (checks/checker.cpp)
         "RL_MAX_SPHERES",       // scene.glsl: the uniform block's size, its own default
         "RL_MAX_LIGHTS",        // scene.glsl: the same for the lights
-        "RL_LOOP_LIMIT",        // loop_guard.glsl: a constant of the runaway-loop guard
+        "RL_LOOP_LIMIT",        // loop_guard.glsl: a constant of the runaway-loop guard (per run of a loop)
+        "RL_LOOP_TOTAL_LIMIT",  // loop_guard.glsl: its total per invocation
+        "RL_LOOP_TOTAL_FLAG",   // loop_guard.glsl: the mark that the total, not one loop, was met
         "RL_ADD_LIGHT",         // lighting.glsl: the X of RL_FOR_EACH_LIGHT
         "RL_SHADOW_CANDIDATE",  // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE
         "RL_UNFINISHED",        // unfinished.glsl: a fact of the generated exercises.glsl (shader/readiness.h),

@@ -65,7 +65,8 @@ Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specia
 
 Rendering renderGlslLive(const Scene& scene, const Implementation& impl) {
     ensureContext();
-    ShaderDefines defines = liveViewDefines(scene, scene.model, View::Final, traceStarted(impl), fileDefines(impl));
+    // What the live view compiles for its final picture (app/view/view_app.cpp).
+    ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::LiveView);
     auto& cache = programCache();
     std::string key = programKey("live", impl, defines);
     auto it = cache.find(key);
