@@ -54,6 +54,7 @@ leave_out=(
     tests/walkthrough tests/window tests/browser tests/edition
     tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp  # its scenes stay: unit tests read them
     tests/unit/test_shipped_stubs.cpp tests/unit/test_loop_guard.cpp
+    tests/unit/test_define_table.cpp tests/unit/defines.golden  # its implementations are the solutions and mutants
     docs/exercises/images/make-images.sh scripts/judge-kinds.py
     scripts/student-edition.sh scripts/answer-leaks.py
 )

@@ -483,7 +483,7 @@ TEST(GradeRun, ARunKilledOutrightResumesToTheSameBytes) {
 
     // Killed once the first student's record is written (at most 60 s of waiting).
     CommandResult kill = runShell("cd " + root.string() + " && (" + std::string(RAYLAB_BINARY) + " " +
-                                  gradeArgs(sub, killed, "--jobs 1") +
+                                  gradeArgs(sub, killed) +
                                   " >/dev/null 2>&1 & pid=$!; for i in $(seq 600); do "
                                   "ls " + killed.string() + "/*/grade.json >/dev/null 2>&1 && break; sleep 0.1; done; "
                                   "kill -9 $pid; wait $pid; echo killed $?)");

@@ -23,6 +23,13 @@
 
 namespace rl::meta {
 
+// The budgets of every comparison with the true picture, in one place:
+// pixels whose 8-bit display value is off by more than 1/255, and the mean
+// difference in 8-bit steps.
+constexpr double kReferenceOffBudget = 0.0005;  // the CPU reference: 0.05% of pixels
+constexpr double kGlslOffBudget = 0.0025;       // the GLSL (float32): 0.25% of pixels
+constexpr double kGlslMeanBudget = 0.1;         // and a mean under 0.1/255
+
 // The kinds of scene the generator mixes, one per seed in turn (seed % 6).
 enum class SceneKind {
     Cluster,         // free, touching and overlapping spheres, lights anywhere outside them

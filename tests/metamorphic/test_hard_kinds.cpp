@@ -27,9 +27,9 @@ namespace {
 
 using glm::dvec3;
 
-constexpr double kGlslOffBudget = 0.0025;
-constexpr double kGlslMeanBudget = 0.1;
-constexpr double kReferenceOffBudget = 0.0005;
+using rl::meta::kGlslMeanBudget;
+using rl::meta::kGlslOffBudget;
+using rl::meta::kReferenceOffBudget;
 
 Material surface(dvec3 albedo, double roughness, double metallic = 0.0) {
     Material m;

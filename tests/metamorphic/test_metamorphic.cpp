@@ -40,9 +40,9 @@ namespace {
 constexpr int kRandomScenes = 210;
 
 // The budgets.
-constexpr double kReferenceOffBudget = 0.0005;  // reference vs offset-free: 0.05% of pixels off by > 1/255
-constexpr double kGlslOffBudget = 0.0025;       // GLSL vs reference: 0.25%
-constexpr double kGlslMeanBudget = 0.1;         // and the mean difference under 0.1/255
+using rl::meta::kGlslMeanBudget;
+using rl::meta::kGlslOffBudget;
+using rl::meta::kReferenceOffBudget;
 
 // Any single picture: at most 2% of its pixels (35 of 1728) off. Far above
 // what one correct picture shows (float32 silhouettes and contact lines in
