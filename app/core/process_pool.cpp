@@ -22,10 +22,23 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 namespace rl {
 
 namespace {
+
+// A worker whose parent is killed outright (SIGKILL: no handler runs) ends
+// too, instead of grading on as an orphan that holds OUT's lock (Linux; the
+// check of getppid() covers a parent that died before the prctl).
+void dieWithParent(pid_t parent) {
+#ifdef __linux__
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
+    if (getppid() != parent) _exit(127);
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -159,6 +172,7 @@ bool runInPool(std::size_t count, const std::function<std::string(std::size_t)>&
             int fds[2];
             if (pipe(fds) != 0) throw Error("cannot start " + limits.childName + ": " + std::strerror(errno));
             std::fflush(nullptr);  // nothing buffered is written twice
+            const pid_t parent = getpid();
             pid_t pid = fork();
             if (pid < 0) {
                 int err = errno;
@@ -167,6 +181,7 @@ bool runInPool(std::size_t count, const std::function<std::string(std::size_t)>&
                 throw Error("cannot start " + limits.childName + ": " + std::strerror(err));
             }
             if (pid == 0) {
+                dieWithParent(parent);
                 close(fds[0]);
                 for (auto& [other, r] : running)
                     if (r.fd >= 0) close(r.fd);
