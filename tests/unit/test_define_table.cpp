@@ -172,7 +172,12 @@ std::string shortValue(const std::string& value) {
 
 std::string line(const std::string& scene, const std::string& what, const std::string& impl, const ShaderDefines& d) {
     std::string out = scene + " " + what + " " + impl + ":";
-    for (const auto& [name, value] : d) out += " " + name + "=" + shortValue(value);
+    // The shadow cones' arrays are floats computed in double, whose last digit
+    // follows the compiler's floating-point contraction (the sanitizer build
+    // prints others): recorded by name only; tests/unit/test_shadow_cones.cpp
+    // checks their values against the segment test.
+    for (const auto& [name, value] : d)
+        out += " " + name + "=" + (name.rfind("RL_SHADOW_CONE_", 0) == 0 ? std::string("<computed>") : shortValue(value));
     return out + "\n";
 }
 
