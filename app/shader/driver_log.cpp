@@ -269,6 +269,10 @@ std::vector<DriverMessage> parseDriverLog(const std::string& log) {
     }
     if (candidates > kMaxCandidates && !messages.empty())
         messages.back().text += "; and " + std::to_string(candidates - kMaxCandidates) + " more";
+    const std::string prefix = kUnfinishedPrefix;
+    for (DriverMessage& m : messages)
+        for (std::size_t at = m.text.find(prefix); at != std::string::npos; at = m.text.find(prefix, at))
+            m.text.erase(at, prefix.size());
     return messages;
 }
 

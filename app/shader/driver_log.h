@@ -34,4 +34,10 @@ struct DriverMessage {
 // glGetShaderInfoLog writes into a buffer of GL_INFO_LOG_LENGTH bytes.
 std::vector<DriverMessage> parseDriverLog(const std::string& log);
 
+// The name the host gives an unfinished function's own definition while it
+// compiles the neutral value in its place (shader/readiness.h). Driver
+// messages quote the function by its author's name: parseDriverLog() drops
+// the prefix.
+inline constexpr const char* kUnfinishedPrefix = "rl_unfinished_";
+
 }  // namespace rl

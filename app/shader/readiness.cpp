@@ -2,6 +2,7 @@
 
 #include "core/paths.h"
 #include "course/exercise_registry.h"
+#include "shader/driver_log.h"
 #include "shader/glsl_scan.h"
 #include "shader/source_assembler.h"
 
@@ -109,7 +110,7 @@ std::string exercisesGlsl(const Readiness& readiness) {
         std::vector<const ExerciseFunction*> waiting;
         for (const ExerciseFunction& f : e.functions)
             if (!readiness.isReady(f.name)) waiting.push_back(&f);
-        for (const ExerciseFunction* f : waiting) text += "#define " + f->name + " rl_unfinished_" + f->name + "\n";
+        for (const ExerciseFunction* f : waiting) text += "#define " + f->name + " " + kUnfinishedPrefix + f->name + "\n";
         text += "#include \"exercise/" + e.file() + "\"\n";
         for (const ExerciseFunction* f : waiting) {
             auto d = declared.find(f->name);

@@ -32,6 +32,14 @@ TEST(DriverLog, MesaCompileLog) {
     expectMessage(m[2], 9, 3, "warning", "`unused' used uninitialized");
 }
 
+// An unfinished function's own definition is renamed while the host compiles
+// its neutral value (shader/readiness.h): the student reads the name they wrote.
+TEST(DriverLog, AnUnfinishedFunctionIsQuotedByItsOwnName) {
+    auto m = parseDriverLog("0:7(1): error: function `float rl_unfinished_G1_SchlickGGX(float, float)' has static recursion\n");
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(m[0].text, "function `float G1_SchlickGGX(float, float)' has static recursion");
+}
+
 TEST(DriverLog, MesaPreprocessorErrorIsAnError) {
     auto m = parseDriverLog("0:14(1): preprocessor error: Unterminated comment\n");
     ASSERT_EQ(m.size(), 1u);
