@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
     rl::addCheckCommand(app);
     rl::addGradeCommand(app);
     rl::addBenchCommand(app);
+    rl::addCourseCommand(app);
 #ifdef RAYLAB_WITH_GLFW
     rl::addViewCommand(app);
     rl::addRecordCommand(app);

@@ -1,4 +1,4 @@
-// Exercise 01: camera rays.            Handout: docs/exercises/01-camera.md
+// Exercise 01: camera rays.            Handout: course/01-camera/handout.md
 //
 // Until you write these, the framework looks straight ahead from every pixel
 // and paints grey/magenta stripes (NOT STARTED). Check with:

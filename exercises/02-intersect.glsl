@@ -1,4 +1,4 @@
-// Exercise 02: ray/sphere intersection. Handout: docs/exercises/02-intersect.md
+// Exercise 02: ray/sphere intersection. Handout: course/02-intersect/handout.md
 //
 // Until you write this, no sphere is ever hit (background and stripes).
 

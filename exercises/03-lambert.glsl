@@ -1,4 +1,4 @@
-// Exercise 03: Lambert diffuse under a point light. Handout: docs/exercises/03-lambert.md
+// Exercise 03: Lambert diffuse under a point light. Handout: course/03-lambert/handout.md
 //
 // Until you write these, surfaces receive no direct light (ambient only).
 

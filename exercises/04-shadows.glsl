@@ -1,4 +1,4 @@
-// Exercise 04: shadow rays.            Handout: docs/exercises/04-shadows.md
+// Exercise 04: shadow rays.            Handout: course/04-shadows/handout.md
 //
 // Until you write these, every light is visible from everywhere (no shadows).
 

@@ -1,4 +1,4 @@
-// Exercise 05: the GGX normal distribution. Handout: docs/exercises/05-ggx.md
+// Exercise 05: the GGX normal distribution. Handout: course/05-ggx/handout.md
 //
 // Until you write this, there are no specular highlights.
 

@@ -1,4 +1,4 @@
-// Exercise 06: the Smith / Schlick-GGX geometry term. Handout: docs/exercises/06-geometry.md
+// Exercise 06: the Smith / Schlick-GGX geometry term. Handout: course/06-geometry/handout.md
 //
 // Until you write these, there are no specular highlights.
 

@@ -1,4 +1,4 @@
-// Exercise 07: Schlick's Fresnel.       Handout: docs/exercises/07-fresnel.md
+// Exercise 07: Schlick's Fresnel.       Handout: course/07-fresnel/handout.md
 //
 // Until you write this, there are no specular highlights.
 

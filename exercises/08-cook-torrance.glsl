@@ -1,5 +1,5 @@
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow.
-// Handout: docs/exercises/08-cook-torrance.md
+// Handout: course/08-cook-torrance/handout.md
 //
 // Until you write these, surfaces are lit with Lambert alone (exercise 03).
 // n, v, l are unit vectors: normal, towards the viewer, towards the light.

@@ -1,4 +1,4 @@
-// Exercise 09: Fresnel-attenuated mirror bounces. Handout: docs/exercises/09-reflections.md
+// Exercise 09: Fresnel-attenuated mirror bounces. Handout: course/09-reflections/handout.md
 //
 // Until you write these, the framework shades the first hit only.
 

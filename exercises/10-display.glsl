@@ -1,4 +1,4 @@
-// Exercise 10: exposure, tone mapping and gamma. Handout: docs/exercises/10-display.md
+// Exercise 10: exposure, tone mapping and gamma. Handout: course/10-display/handout.md
 //
 // Until you write these, the picture is linear radiance clamped to [0, 1].
 

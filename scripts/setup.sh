@@ -16,7 +16,11 @@ packages=(
   libglfw3-dev libimgui-dev
   libzip-dev
   python3-jsonschema
+  ccache
 )
+# ccache: the build uses it where it is installed (CMakeLists.txt): a second
+# copy of the repository (a student edition's clone, a course with one more
+# exercise, the tests that build them) compiles only what differs.
 # ffmpeg: `raylab record`'s MP4 and GIF (51 MB of packages without recommends).
 window_packages=(xvfb xauth xdotool chromium fonts-dejavu-core imagemagick ffmpeg)
 slurm_packages=(slurmctld slurmd slurm-client munge)

@@ -5,14 +5,16 @@
 # commit (HEAD; uncommitted changes are not in it) without any answer, as a
 # fresh git repository with one commit in OUT_DIR, ready to push
 # (docs/instructor.md, "A student edition"). Left out:
-#   * the answers: solutions/, tests/mutants/, tests/alternatives/ (correct
-#     solutions written differently), tests/portability/ (solutions with one
+#   * the answers: each exercise unit's solution.glsl, mutants/ and
+#     alternatives/ (correct solutions written differently), for the units
+#     course/manifest.txt lists (a unit it leaves out is framework code, and
+#     keeps its solution), and tests/portability/ (solutions with one
 #     portability slip each);
 #   * every test that reads them (tests/CMakeLists.txt builds only the unit
 #     suite where they are absent) and the instructor's scripts that need them
 #     (docs/exercises/images/make-images.sh, scripts/judge-kinds.py);
 # and the edition's README.md says what it is. Before the commit, every
-# function body of solutions/ is searched for in the edition's text files
+# function body of the exercises' solutions is searched for in the edition's text files
 # (scripts/answer-leaks.py); one found stops the export.
 #
 # OUT_DIR must not exist or be an empty folder: anything else is refused
@@ -38,18 +40,24 @@ parent="$(dirname "$out")"
 [ -d "$parent" ] || fail "$parent: no such folder"
 [ -w "$parent" ] || fail "$parent: not writable"
 git -C "$here" rev-parse --verify -q HEAD >/dev/null || fail "$here: no commit to export (git HEAD)"
-[ -d "$here/solutions" ] || fail "$here: has no solutions/: this is already a student edition"
+exercises=$(sed -e 's/#.*//' -e 's/[[:space:]]//g' "$here/course/manifest.txt" | grep -v '^$')
+answers="$(mktemp -d)"
+trap 'rm -rf -- "$answers"' EXIT
+for id in $exercises; do
+    [ -f "$here/course/$id/solution.glsl" ] || fail "$here: course/$id has no solution.glsl: this is already a student edition"
+    cp "$here/course/$id/solution.glsl" "$answers/$id.glsl"
+done
 
 stage="$(mktemp -d "$parent/.student-edition-XXXXXX")"
 done_ok=0
-cleanup() { if [ "$done_ok" -eq 0 ]; then rm -rf -- "$stage"; fi; }
+cleanup() { rm -rf -- "$answers"; if [ "$done_ok" -eq 0 ]; then rm -rf -- "$stage"; fi; }
 trap cleanup EXIT
 
 git -C "$here" archive --format=tar HEAD | tar -x -C "$stage"
 
 # The answers, and what cannot work or would only mislead without them.
 leave_out=(
-    solutions tests/mutants tests/alternatives tests/portability
+    tests/portability
     tests/exercises tests/grading tests/gpu tests/accuracy tests/metamorphic tests/fuzz
     tests/walkthrough tests/window tests/browser tests/edition
     tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp  # its scenes stay: unit tests read them
@@ -58,6 +66,9 @@ leave_out=(
     docs/exercises/images/make-images.sh scripts/judge-kinds.py
     scripts/student-edition.sh scripts/answer-leaks.py
 )
+for id in $exercises; do
+    leave_out+=("course/$id/solution.glsl" "course/$id/mutants" "course/$id/alternatives")
+done
 for path in "${leave_out[@]}"; do rm -rf -- "${stage:?}/$path"; done
 
 # The README says what this copy is (after its first paragraph, the title).
@@ -65,14 +76,14 @@ python3 - "$stage/README.md" <<'EOF'
 import sys
 path = sys.argv[1]
 text = open(path, encoding='utf-8').read()
-note = """> **Student edition.** This copy of raylab has no answers: no `solutions/`,
-> no `tests/mutants/`, `tests/alternatives/` or `tests/portability/`, and
-> only the `unit` tests. `./raylab render`, `view`, `record` and `bench` run
+note = """> **Student edition.** This copy of raylab has no answers: no exercise's
+> `solution.glsl`, `mutants/` or `alternatives/` in `course/`, no `solutions/`,
+> and only the `unit` tests. `./raylab render`, `view`, `record` and `bench` run
 > your files in `exercises/` (in `view`, a file missing from an `--impl`
 > folder is the shipped stub), and `./raylab check` checks each exercise with your own
 > files for the others: its image step waits until every exercise passes its
 > probes ([docs/exercises/README.md](docs/exercises/README.md)). Documents
-> that mention `solutions/` or the mutants describe the instructor's
+> that mention `solutions/`, the solutions or the mutants describe the instructor's
 > repository, where grading runs.
 
 """
@@ -80,7 +91,7 @@ title_end = text.index('\n\n') + 2
 open(path, 'w', encoding='utf-8').write(text[:title_end] + note + text[title_end:])
 EOF
 
-if ! python3 "$here/scripts/answer-leaks.py" "$here/solutions" "$stage" >&2; then
+if ! python3 "$here/scripts/answer-leaks.py" "$answers" "$stage" >&2; then
     fail "the files above hold an answer; nothing was written to $out"
 fi
 

@@ -99,11 +99,17 @@ bool keepThisBounce() {
     return keep;
 }
 
-// Direct light plus the ambient term, once per hit (lit or not).
+// Direct light plus the ambient term, once per hit (lit or not), plus the
+// further light terms of the course's units (the extension point: a unit's
+// "light" in course/*/unit.json; exercises.glsl defines unitLight()).
 vec3 shadeHit(Hit hit, vec3 v) {
     if (!keepThisBounce()) return vec3(0.0);
     Material m = sphereMaterial(hit.sphere);
-    return directLight(hit, v, m) + u_ambient * m.albedo * m.ao;
+    vec3 radiance = directLight(hit, v, m) + u_ambient * m.albedo * m.ao;
+#ifdef RL_UNIT_LIGHT
+    radiance += unitLight(hit, v, m);
+#endif
+    return radiance;
 }
 
 // The radiance of a ray that leaves the scene.

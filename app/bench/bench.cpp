@@ -49,9 +49,9 @@ struct Strategy {
     const char* path;  // relative to the source root
 };
 const Strategy kStrategies[] = {
-    {"strategy:textbook-intersect", "02-intersect.glsl", "tests/mutants/02-intersect--textbook-quadratic.glsl"},
-    {"strategy:naive-D", "05-ggx.glsl", "tests/mutants/05-ggx--textbook-denominator.glsl"},
-    {"strategy:fixed-offset", "04-shadows.glsl", "tests/mutants/04-shadows--fixed-offset.glsl"},
+    {"strategy:textbook-intersect", "02-intersect.glsl", "course/02-intersect/mutants/textbook-quadratic.glsl"},
+    {"strategy:naive-D", "05-ggx.glsl", "course/05-ggx/mutants/textbook-denominator.glsl"},
+    {"strategy:fixed-offset", "04-shadows.glsl", "course/04-shadows/mutants/fixed-offset.glsl"},
 };
 
 struct ModelVariant {

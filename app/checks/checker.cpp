@@ -508,7 +508,7 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
     if (!fs::exists(file, ec)) {
         report.status = CheckStatus::NotStarted;
         report.message = file.string() + " is missing";
-        report.hint = "copy the stub from exercises/" + exercise.file() + " and start with " + exercise.handout();
+        report.hint = "copy the stub " + exercise.stubFile() + " to " + file.string() + " and start with " + exercise.handout();
         return report;
     }
     if (isUnchangedStub(file, exercise)) {

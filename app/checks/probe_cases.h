@@ -1,24 +1,19 @@
 // Probe cases: for each exercise, the functions it implements, a grid of
 // inputs (random ones and hard ones), the value the double-precision CPU
 // reference expects, the float32 tolerance (justified at each use) and the
-// typical mistakes the checker recognises by their numbers.
+// typical mistakes the checker recognises by their numbers. Each unit writes
+// its own in course/NN-name/probes.cpp (with checks/probe_toolkit.h).
 #pragma once
 
 #include "core/scene.h"
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace rl {
-
-// The same list as the PROBE_ constants of shaders/probe.glsl.
-enum class ProbeFunction : int {
-    SampleOffset = 0, CameraRay, Intersect, Lambert, Irradiance, OffsetOrigin, Visibility, DGgx, G1, G,
-    FSchlick, Alpha, F0, Specular, Diffuse, Brdf, FRoughness, Trace, ToneMap, Gamma, Display,
-    Reintersect  // the re-intersection yardstick of the metamorphic suite, not a check
-};
 
 constexpr int kProbeInputFloats = 24;  // six RGBA texels per case
 
@@ -42,10 +37,12 @@ struct KnownMistake {
 };
 
 struct ProbeSpec {
-    ProbeSpec(ProbeFunction f, std::string n, std::string sig, int outs)
-        : function(f), name(std::move(n)), signature(std::move(sig)), outputs(outs) {}
-    ProbeFunction function;
-    std::string name;          // "F_Schlick"
+    ProbeSpec(std::string n, std::string sig, int outs)
+        : name(std::move(n)), signature(std::move(sig)), outputs(outs) {}
+    std::string name;          // "F_Schlick": the function (its probe id: probeFunctionId), or "reintersect"
+    // u_probeFunction for a probe program of a test's own (not probe.glsl);
+    // unset: chosen by `name`.
+    std::optional<int> programFunction;
     std::string signature;     // "F_Schlick(F0, VoH)": the columns of the failure table
     int outputs = 1;           // 1, 2 or 3 components compared
     std::vector<ProbeCase> cases;
@@ -58,8 +55,14 @@ struct ProbeSpec {
     bool needsScene = false;   // evaluated with probeScene() uploaded
 };
 
-// The probes of exercise `number` (1..10), in the order they are checked.
+// The probes of the unit `id` ("05-ggx"), from its course/05-ggx/probes.cpp,
+// in the order they are checked (the generated course_probes.cpp).
+std::vector<ProbeSpec> unitProbes(const std::string& id);
+// The same by the exercise's number (5), for the course's exercises.
 std::vector<ProbeSpec> probesForExercise(int number);
+
+// u_probeFunction of the framework's own probe (shaders/probe.glsl, PROBE_REINTERSECT).
+constexpr int kReintersectProbe = -2;
 
 // The scene uploaded for probes that trace rays (visibility, traceRay).
 Scene probeScene();

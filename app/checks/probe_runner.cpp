@@ -1,5 +1,7 @@
 #include "checks/probe_runner.h"
 
+#include "course/exercise_registry.h"
+
 #include "core/error.h"
 #include "render/scene_uniforms.h"
 
@@ -53,7 +55,9 @@ std::vector<std::array<float, 4>> runProbe(const ShaderProgram& program, const P
     gl::ActiveTexture(GL_TEXTURE0);
     gl::BindTexture(GL_TEXTURE_2D, input);
     gl::Uniform1i(program.uniform("u_probeInputs"), 0);
-    gl::Uniform1i(program.uniform("u_probeFunction"), int(spec.function));
+    gl::Uniform1i(program.uniform("u_probeFunction"),
+                  spec.programFunction ? *spec.programFunction
+                  : spec.name == "reintersect" ? kReintersectProbe : probeFunctionId(spec.name));
     gl::Viewport(0, 0, width, height);
     gl::GenVertexArrays(1, &vertexArray);
     gl::BindVertexArray(vertexArray);

@@ -16,6 +16,11 @@ void addGradeCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addRecordCommand(CLI::App& app);
+void addCourseCommand(CLI::App& app);
+
+// The course's table as the documents show it (raylab course --markdown),
+// handout links relative to the repository folder `from` ("" = the root).
+std::string courseMarkdownTable(const std::string& from);
 
 // Shared option parsing (app/commands/options.cpp).
 struct Size {

@@ -14,6 +14,7 @@ std::filesystem::path sourceRoot() {
 std::filesystem::path shadersDir() { return sourceRoot() / "shaders"; }
 std::filesystem::path solutionsDir() { return sourceRoot() / "solutions"; }
 std::filesystem::path exercisesDir() { return sourceRoot() / "exercises"; }
+std::filesystem::path courseDir() { return sourceRoot() / "course"; }
 std::filesystem::path scenesDir() { return sourceRoot() / "scenes"; }
 
 bool hasSolutions() {

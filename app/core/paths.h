@@ -10,6 +10,7 @@ std::filesystem::path sourceRoot();     // $RAYLAB_ROOT, else the configured sou
 std::filesystem::path shadersDir();     // <root>/shaders: the framework
 std::filesystem::path solutionsDir();   // <root>/solutions
 std::filesystem::path exercisesDir();   // <root>/exercises: the stubs as shipped
+std::filesystem::path courseDir();       // <root>/course: the units (course/README.md)
 std::filesystem::path scenesDir();      // <root>/scenes
 
 // Whether <root>/solutions is a folder: the instructor's repository has it, a

@@ -2,65 +2,122 @@
 
 #include "core/error.h"
 #include "core/message.h"
+#include "course/unit_sources.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace rl {
 
-const std::vector<ExerciseInfo>& allExercises() {
-    // The neutral values are what the picture showed before each exercise
-    // existed: straight-ahead rays through pixel centres, nothing hit, no
-    // direct light, no shadow, Lambert alone, the first hit only, a clamp for
-    // the display step. The D, G and F views show black while their term is
-    // not ready (every neutral term is 0).
-    static const std::vector<ExerciseInfo> list = {
-        {1, "01-camera", "camera rays through pixel centres and sub-samples",
-         {{"sampleOffset", "return vec2(0.5);", {}},
-          {"cameraRayDirection", "return normalize(forward);", {}, true}}},
-        {2, "02-intersect", "ray/sphere intersection, numerically stable",
-         {{"intersectSphere", "return NO_HIT;", {}, true}}},
-        {3, "03-lambert", "Lambert diffuse under a point light",
-         {{"Fd_Lambert", "return vec3(0.0);", {}},
-          {"pointLightIrradiance", "return vec3(0.0);", {}}}},
-        {4, "04-shadows", "shadow rays with a scale-aware offset",
-         {{"offsetRayOrigin", "return p;", {}},
-          {"lightVisibility", "return 1.0;", {"offsetRayOrigin"}}}},
-        {5, "05-ggx", "the GGX normal distribution D", {{"D_GGX", "return 0.0;", {}}}},
-        {6, "06-geometry", "the Smith / Schlick-GGX geometry term G",
-         {{"G1_SchlickGGX", "return 0.0;", {}},
-          {"G_SchlickGGX", "return 0.0;", {"G1_SchlickGGX"}}}},
-        {7, "07-fresnel", "Schlick's Fresnel F", {{"F_Schlick", "return vec3(0.0);", {}}}},
-        {8, "08-cook-torrance", "Cook-Torrance assembly, metallic workflow",
-         {{"ggxAlpha", "return 1.0;", {}},  // the D view of a finished 05 shows the roughest lobe until then
-          {"baseReflectance", "return vec3(0.04);", {}},
-          {"specularBRDF", "return vec3(0.0);",
-           {"D_GGX", "G1_SchlickGGX", "G_SchlickGGX", "F_Schlick", "ggxAlpha", "baseReflectance"}},
-          {"diffuseBRDF", "return vec3(0.0);", {"Fd_Lambert", "F_Schlick", "baseReflectance"}},
-          // Lambert alone (no light at all while 03 is not ready either).
-          {"cookTorranceBRDF", "return Fd_Lambert(m.albedo);",
-           {"Fd_Lambert", "D_GGX", "G1_SchlickGGX", "G_SchlickGGX", "F_Schlick", "ggxAlpha", "baseReflectance"}}}},
-        {9, "09-reflections", "Fresnel-attenuated reflection bounces",
-         {{"F_SchlickRoughness", "return vec3(0.0);", {}},
-          // The first hit only: no reflections.
-          {"traceRay",
-           "Hit hit = closestHit(origin, dir, NO_SPHERE); "
-           "return hit.t == NO_HIT ? backgroundRadiance() : shadeHit(hit, -dir);",
-           {"F_SchlickRoughness", "baseReflectance", "offsetRayOrigin"}}}},
-        {10, "10-display", "exposure, tone mapping and gamma",
-         {{"toneMap", "return c;", {}},
-          {"encodeGamma", "return c;", {}},
-          {"displayEncode", "return radiance;", {"toneMap", "encodeGamma"}}}},  // a clamp alone (display.glsl)
-    };
-    return list;
+namespace {
+
+using nlohmann::json;
+
+std::string textOf(const json& j, const std::string& where) {
+    if (j.is_string()) return j.get<std::string>();
+    if (j.is_array()) {  // lines
+        std::string out;
+        for (const json& line : j) {
+            if (!line.is_string()) throw Error(where + ": every line must be a string");
+            out += line.get<std::string>() + "\n";
+        }
+        return out;
+    }
+    throw Error(where + ": must be a string or an array of lines");
+}
+
+// One unit's unit.json (course/README.md describes every field). The build
+// compiled it in; a unit with a mistake stops the program at its first use
+// with the file and the field.
+ExerciseInfo parseUnit(const UnitSource& source) {
+    const std::string where = "course/" + std::string(source.id) + "/unit.json";
+    json j;
+    try {
+        j = json::parse(source.json);
+    } catch (const json::exception& e) {
+        throw Error(where + ": not valid JSON (" + e.what() + ")");
+    }
+    ExerciseInfo e;
+    e.id = source.id;
+    e.number = std::stoi(e.id.substr(0, 2));
+    e.inCourse = source.position >= 0;
+    if (!j.is_object() || !j.contains("title") || !j["title"].is_string())
+        throw Error(where + ": needs \"title\" (a string)");
+    e.title = j["title"].get<std::string>();
+    if (j.contains("weight")) {
+        if (!j["weight"].is_number() || j["weight"].get<double>() < 0) throw Error(where + ": \"weight\" must be a number >= 0");
+        e.weight = j["weight"].get<int>();
+    }
+    if (j.contains("light")) e.light = textOf(j["light"], where + ": \"light\"");
+    if (!j.contains("functions") || !j["functions"].is_array() || j["functions"].empty())
+        throw Error(where + ": needs \"functions\" (an array of at least one)");
+    for (const json& f : j["functions"]) {
+        ExerciseFunction fn;
+        for (const char* key : {"name", "signature", "neutral", "probe"})
+            if (!f.is_object() || !f.contains(key))
+                throw Error(where + ": every function needs \"" + std::string(key) + "\"");
+        fn.name = textOf(f["name"], where + ": \"name\"");
+        fn.signature = textOf(f["signature"], where + ": \"" + fn.name + "\" signature");
+        fn.neutralBody = textOf(f["neutral"], where + ": \"" + fn.name + "\" neutral");
+        fn.probeCall = textOf(f["probe"], where + ": \"" + fn.name + "\" probe");
+        if (f.contains("needs"))
+            for (const json& n : f["needs"]) fn.needs.push_back(textOf(n, where + ": \"" + fn.name + "\" needs"));
+        fn.geometry = f.value("geometry", false);
+        e.functions.push_back(std::move(fn));
+    }
+    return e;
+}
+
+struct Course {
+    std::vector<ExerciseInfo> exercises;  // the manifest's, in order
+    std::vector<ExerciseInfo> framework;  // the others
+};
+
+const Course& course() {
+    static const Course c = [] {
+        Course out;
+        for (const UnitSource& u : unitSources()) (u.position >= 0 ? out.exercises : out.framework).push_back(parseUnit(u));
+        return out;
+    }();
+    return c;
+}
+
+}  // namespace
+
+const std::vector<ExerciseInfo>& allExercises() { return course().exercises; }
+const std::vector<ExerciseInfo>& frameworkUnits() { return course().framework; }
+
+const std::string* shippedStub(const std::string& fileName) {
+    static const std::map<std::string, std::string> stubs = [] {
+        std::map<std::string, std::string> out;
+        for (const UnitSource& u : unitSources()) out[std::string(u.id) + ".glsl"] = u.stub;
+        return out;
+    }();
+    auto it = stubs.find(fileName);
+    return it == stubs.end() ? nullptr : &it->second;
 }
 
 const ExerciseInfo* exerciseOfFunction(const std::string& function) {
-    for (const ExerciseInfo& e : allExercises())
-        for (const ExerciseFunction& f : e.functions)
-            if (f.name == function) return &e;
+    for (const auto* units : {&allExercises(), &frameworkUnits()})
+        for (const ExerciseInfo& e : *units)
+            for (const ExerciseFunction& f : e.functions)
+                if (f.name == function) return &e;
     return nullptr;
+}
+
+int probeFunctionId(const std::string& function) {
+    int id = 0;
+    for (const auto* units : {&allExercises(), &frameworkUnits()})
+        for (const ExerciseInfo& e : *units)
+            for (const ExerciseFunction& f : e.functions) {
+                if (f.name == function) return id;
+                ++id;
+            }
+    return -1;
 }
 
 const ExerciseInfo& findExercise(const std::string& key) {

@@ -1,8 +1,15 @@
 // The course: its exercises in teaching order, and for every function an
-// exercise implements what the framework needs to know about it: the
-// exercises it builds on, and the framework's neutral value while it is not
-// ready (shader/readiness.h compiles that in place of an unfinished function,
-// so the physics GLSL never asks whether an exercise is started).
+// exercise implements what the framework needs to know about it: its
+// declaration, the functions it builds on, the framework's neutral value while
+// it is not ready (shader/readiness.h compiles that in place of an unfinished
+// function, so the physics GLSL never asks whether an exercise is started) and
+// how the checker's probe program calls it.
+//
+// Each exercise is one unit, a folder of course/ (course/README.md): its
+// unit.json is compiled in by the build (cmake/course.cmake) and read here;
+// course/manifest.txt gives the order and the selection. A unit that the
+// manifest does not list is no exercise: its solution.glsl is then part of the
+// framework (frameworkUnits()).
 //
 // This is data, the layer below shader/ and render/: the registry reads no
 // file and knows no OpenGL.
@@ -16,7 +23,12 @@ namespace rl {
 
 // One function an exercise implements, declared in shaders/declarations.glsl.
 struct ExerciseFunction {
-    std::string name;  // "D_GGX"
+    std::string name;       // "D_GGX"
+    std::string signature;  // "float D_GGX(vec3 n, vec3 h, float alpha)": declared for the framework
+    // The probe program's call (shaders/probe.glsl, evaluateProbe): GLSL
+    // statements over the inputs a..e, the material m, the hit `hit`, that
+    // write the result into r.
+    std::string probeCall;
     // The body the framework compiles in place of the function while it is
     // not ready, with the declaration's parameter names: a value that shows
     // "not there yet" (no light, no shadow, first hit only, ...), never the
@@ -32,32 +44,47 @@ struct ExerciseFunction {
 };
 
 struct ExerciseInfo {
-    int number;          // 1..10, its place in the course
-    std::string id;      // "05-ggx": file stem in exercises/ and solutions/
+    int number;          // the two digits of its id: 5 for 05-ggx
+    std::string id;      // "05-ggx": its unit folder course/05-ggx/, its file in exercises/ and solutions/
     std::string title;   // "the GGX normal distribution D"
-    std::vector<ExerciseFunction> functions;  // in the order of declarations.glsl
+    std::vector<ExerciseFunction> functions;  // in the order the unit lists them
+    int weight = 10;     // its points in the default rubric (grading/default-rubric.json may override)
+    // A further light term the unit adds at every hit (the framework's
+    // extension point, lighting.glsl shadeHit): a GLSL expression over
+    // `hit`, `v` and the material `m`, giving linear radiance; empty for none.
+    std::string light;
+    bool inCourse = true;  // listed in course/manifest.txt
     std::string file() const { return id + ".glsl"; }
-    std::string handout() const { return "docs/exercises/" + id + ".md"; }
+    std::string unitDir() const { return "course/" + id; }  // relative to the repository's root
+    std::string handout() const { return unitDir() + "/handout.md"; }
+    std::string stubFile() const { return unitDir() + "/stub.glsl"; }
+    std::string solutionFile() const { return unitDir() + "/solution.glsl"; }
 };
 
+// The course's exercises, in the manifest's order.
 const std::vector<ExerciseInfo>& allExercises();
+// The units the manifest does not list: their solutions are framework code.
+const std::vector<ExerciseInfo>& frameworkUnits();
 // By number (1..10) or id ("05-ggx"); throws rl::Error listing the valid ones.
 const ExerciseInfo& findExercise(const std::string& numberOrId);
-// The exercise that implements `function`, or nullptr.
+// The id by which the probe program (u_probeFunction) selects `function`: its
+// place among every unit's functions, or -1 for a name no unit implements.
+int probeFunctionId(const std::string& function);
+
+// The unit (course exercise or framework unit) that implements `function`, or nullptr.
 const ExerciseInfo* exerciseOfFunction(const std::string& function);
 
 // True when `file` is the stub shipped for this exercise (what `raylab check`
 // reports as NOT STARTED): the same text once white space (CR included) and a
-// UTF-8 byte-order mark are dropped. "Shipped" is exercises/ as it was when the
-// program was built (compiled in, see cmake/shipped_stubs.cmake), never the
-// live folder, which is the student's own work.
+// UTF-8 byte-order mark are dropped. "Shipped" is the unit's stub.glsl as it
+// was when the program was built (compiled in, see cmake/course.cmake), never
+// exercises/, which is the student's own work.
 bool isUnchangedStub(const std::filesystem::path& file, const ExerciseInfo& exercise);
 
 // The comparison form of GLSL text: no white space, no BOM.
 std::string normalisedGlsl(const std::string& text);
 
 // The shipped stub `fileName` ("05-ggx.glsl") as compiled in, or nullptr.
-// Defined in the generated shipped_stubs.cpp.
 const std::string* shippedStub(const std::string& fileName);
 
 }  // namespace rl

@@ -98,9 +98,23 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
         r.gradescope.leaderboard = gs["leaderboard"].get<bool>();
     }
 
-    if (!j.contains("exercises") || !j["exercises"].is_array() || j["exercises"].empty())
-        throw Error(shown + ": \"exercises\" must be a non-empty array of {\"id\", \"weight\"}");
     std::set<std::string> seen, columns{r.idColumn, r.totalColumn};
+    if (!j.contains("exercises")) {
+        // No list: every exercise of the course (course/manifest.txt), each
+        // with its unit's weight (unit.json), in the course's order.
+        for (const ExerciseInfo& e : allExercises()) {
+            RubricExercise x;
+            x.id = e.id;
+            x.weight = e.weight;
+            x.column = e.id;
+            if (!columns.insert(x.column).second) throw Error(shown + ": column \"" + x.column + "\" is used twice");
+            r.exercises.push_back(x);
+        }
+        if (r.maxHundredths() <= 0) throw Error(shown + ": the units' weights add up to 0");
+        return r;
+    }
+    if (!j["exercises"].is_array() || j["exercises"].empty())
+        throw Error(shown + ": \"exercises\" must be a non-empty array of {\"id\", \"weight\"} (or left out: the units' weights)");
     for (std::size_t k = 0; k < j["exercises"].size(); ++k) {
         const json& e = j["exercises"][k];
         const std::string at = shown + ": exercises[" + std::to_string(k) + "]";

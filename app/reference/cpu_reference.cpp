@@ -2,6 +2,8 @@
 // bottom: visibility, shading, bounces, the picture, then the energy integral.
 #include "reference/cpu_reference.h"
 
+#include "reference/unit_light.h"
+
 #include "core/error.h"
 #include "core/light_surface.h"
 
@@ -256,7 +258,10 @@ dvec3 directLight(const Scene& scene, const Hit& hit, dvec3 v) {
 
 dvec3 shadeHit(const Scene& scene, const Hit& hit, dvec3 v) {
     const Material& m = scene.spheres[hit.sphere].material;
-    return directLight(scene, hit, v) + scene.render.ambient * m.albedo * m.ao;
+    dvec3 radiance = directLight(scene, hit, v) + scene.render.ambient * m.albedo * m.ao;
+    // The course's units' further light terms (reference/unit_light.h).
+    for (const UnitLightTerm& term : unitLightTerms()) radiance += term.radiance({hit.p, hit.n, v, m, &scene});
+    return radiance;
 }
 
 dvec3 traceRadiance(const Scene& scene, dvec3 origin, dvec3 dir) {

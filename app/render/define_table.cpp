@@ -248,6 +248,7 @@ const std::vector<const char*>& nonSpecialisationNames() {
         "RL_SHADOW_CANDIDATE",  // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE
         "RL_UNFINISHED",        // unfinished.glsl: a fact of the generated exercises.glsl (shader/readiness.h),
                                 // like RL_READY_<function>, not a specialisation
+        "RL_UNIT_LIGHT",        // lighting.glsl, trace.glsl: the same, when a unit adds a light term
     };
     return names;
 }

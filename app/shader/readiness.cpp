@@ -64,6 +64,8 @@ Readiness readinessOf(const Implementation& impl, int probeExercise) {
             out.functions.push_back({f.name, e.number, started, started});
         }
     }
+    for (const ExerciseInfo& e : frameworkUnits())  // framework code: always ready
+        for (const ExerciseFunction& f : e.functions) out.functions.push_back({f.name, e.number, true, true});
     // ready = started and every need ready. The registry lists needs of
     // earlier or the same exercises, but the fixed point below does not rely
     // on it: at most one pass per function, no recursion.
@@ -86,25 +88,25 @@ Readiness readinessOf(const Implementation& impl, int probeExercise) {
     return out;
 }
 
-namespace {
-
-// "float D_GGX(vec3 n, vec3 h, float alpha)" from shaders/declarations.glsl.
-std::map<std::string, std::string> declarations() {
-    std::map<std::string, std::string> out;
-    for (const GlslFunction& f : scanGlsl(readSourceFile(shadersDir() / "declarations.glsl")).functions)
-        if (!f.hasBody) out.emplace(f.name, f.declaration());
-    return out;
+std::string exerciseDeclarationsGlsl() {
+    std::string text =
+        "// exercise_declarations.glsl, written by the host (app/shader/readiness.cpp) from the\n"
+        "// course's units (course/*/unit.json): every function an exercise implements.\n";
+    for (const auto* units : {&allExercises(), &frameworkUnits()})
+        for (const ExerciseInfo& e : *units) {
+            text += "// " + e.id + "\n";
+            for (const ExerciseFunction& f : e.functions) text += f.signature + ";\n";
+        }
+    return text;
 }
 
-}  // namespace
-
 std::string exercisesGlsl(const Readiness& readiness) {
-    static const std::map<std::string, std::string> declared = declarations();
     std::string text =
-        "// exercises.glsl, written by the host (app/shader/readiness.cpp) from the course registry\n"
-        "// (app/course/exercise_registry.cpp) and the files of this implementation: the exercise\n"
-        "// files in the course's order; a function that is not ready yet is renamed away and the\n"
-        "// framework's neutral value compiled in its place.\n";
+        "// exercises.glsl, written by the host (app/shader/readiness.cpp) from the course's units\n"
+        "// (course/manifest.txt, course/*/unit.json) and the files of this implementation: the\n"
+        "// exercise files in the course's order; a function that is not ready yet is renamed away\n"
+        "// and the framework's neutral value compiled in its place. Then the units that are no\n"
+        "// exercise of this course, whose solutions are framework code.\n";
     bool unfinished = false;
     for (const ExerciseInfo& e : allExercises()) {
         std::vector<const ExerciseFunction*> waiting;
@@ -113,15 +115,46 @@ std::string exercisesGlsl(const Readiness& readiness) {
         for (const ExerciseFunction* f : waiting) text += "#define " + f->name + " " + kUnfinishedPrefix + f->name + "\n";
         text += "#include \"exercise/" + e.file() + "\"\n";
         for (const ExerciseFunction* f : waiting) {
-            auto d = declared.find(f->name);
             text += "#undef " + f->name + "\n";
-            text += (d != declared.end() ? d->second : f->name + "()") + " { " + f->neutralBody + " }\n";
+            text += f->signature + " { " + f->neutralBody + " }\n";
             unfinished = true;
         }
         for (const ExerciseFunction& f : e.functions)
             if (readiness.isReady(f.name)) text += "#define RL_READY_" + f.name + "\n";
     }
+    for (const ExerciseInfo& e : frameworkUnits()) {
+        text += "#include \"unit/" + e.id + "/solution.glsl\"\n";
+        for (const ExerciseFunction& f : e.functions) text += "#define RL_READY_" + f.name + "\n";
+    }
+    // The extension point (lighting.glsl, shadeHit): the further light terms
+    // of the units whose functions are all ready.
+    std::string terms;
+    for (const auto* units : {&allExercises(), &frameworkUnits()})
+        for (const ExerciseInfo& e : *units) {
+            if (e.light.empty()) continue;
+            bool ready = true;
+            for (const ExerciseFunction& f : e.functions) ready = ready && (!e.inCourse || readiness.isReady(f.name));
+            if (ready) terms += "    radiance += " + e.light + ";  // " + e.id + "\n";
+        }
+    if (!terms.empty())
+        text += "#define RL_UNIT_LIGHT\nvec3 unitLight(Hit hit, vec3 v, Material m) {\n    vec3 radiance = vec3(0.0);\n" +
+                terms + "    return radiance;\n}\n";
     if (unfinished) text += "#define RL_UNFINISHED\n";
+    return text;
+}
+
+std::string probeDispatchGlsl(int probeExercise) {
+    std::string text =
+        "// probe_dispatch.glsl, written by the host (app/shader/readiness.cpp) from the course's\n"
+        "// units: the call of each function the probe program can evaluate (course/*/unit.json,\n"
+        "// \"probe\"), selected by u_probeFunction.\n";
+    for (const auto* units : {&allExercises(), &frameworkUnits()})
+        for (const ExerciseInfo& e : *units) {
+            if (probeExercise != 0 && e.number != probeExercise) continue;
+            for (const ExerciseFunction& f : e.functions)
+                text += "if (f == " + std::to_string(probeFunctionId(f.name)) + ") {  // " + f.name + "\n" + f.probeCall +
+                        (f.probeCall.empty() || f.probeCall.back() == '\n' ? "" : "\n") + "}\n";
+        }
     return text;
 }
 

@@ -43,8 +43,18 @@ struct Readiness {
 // assembler then reports it with its file and line).
 Readiness readinessOf(const Implementation& impl, int probeExercise = 0);
 
-// The text of the generated exercises.glsl for `readiness`.
+// The text of the generated exercises.glsl for `readiness`: the exercise
+// files, unfinished functions replaced; the framework units' solutions; the
+// units' further light terms (unitLight, RL_UNIT_LIGHT) once they are ready.
 std::string exercisesGlsl(const Readiness& readiness);
+
+// exercise_declarations.glsl: the signature of every unit's function
+// (shaders/declarations.glsl includes it).
+std::string exerciseDeclarationsGlsl();
+
+// probe_dispatch.glsl: each function's probe call (shaders/probe.glsl), for
+// the exercise `probeExercise` only, or every unit's when it is 0.
+std::string probeDispatchGlsl(int probeExercise);
 
 // The exercise a probe program evaluates: RL_PROBE_EXERCISE of `defines`, or 0.
 int probeExerciseOf(const ShaderDefines& defines);

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "course/exercise_registry.h"
 #include "shader/readiness.h"
 
 namespace fs = std::filesystem;
@@ -13,11 +14,21 @@ fs::path Implementation::fileFor(const std::string& exerciseFile) const {
     return it != overrides.end() ? it->second : dir / exerciseFile;
 }
 
+bool isFrameworkFile(const fs::path& file) {
+    if (isInside(file, shadersDir())) return true;
+    for (const ExerciseInfo& e : frameworkUnits())
+        if (isInside(file, courseDir() / e.id)) return true;
+    return false;
+}
+
 IncludeResolver makeIncludeResolver(const Implementation& impl) {
     return [impl](const std::string& name, const fs::path& fromFile) -> fs::path {
         const std::string prefix = "exercise/";
         const bool fromFramework = isInside(fromFile, shadersDir());
         if (name.rfind(prefix, 0) == 0 && fromFramework) return impl.fileFor(name.substr(prefix.size()));
+        // A unit that is no exercise of this course: its solution is framework code.
+        const std::string unitPrefix = "unit/";
+        if (name.rfind(unitPrefix, 0) == 0 && fromFramework) return courseDir() / name.substr(unitPrefix.size());
         fs::path relative(name);
         if (relative.is_absolute()) throw Error("absolute include paths are not allowed");
         const fs::path folder = fromFile.parent_path();
@@ -41,9 +52,12 @@ AssembledSource assembleShader(const std::string& entry, const Implementation& i
     // Every file outside shaders/ is an exercise file: its errors are the author's.
     // exercises.glsl is written per implementation: the exercise files, with
     // what is not ready yet replaced by the framework's neutral value.
-    GeneratedFiles generated{{"exercises.glsl", exercisesGlsl(readinessOf(impl, probeExerciseOf(defines)))}};
-    SourceAssembler assembler(makeIncludeResolver(impl), [](const fs::path& file) { return isInside(file, shadersDir()); },
-                              std::move(generated));
+    // exercise_declarations.glsl and probe_dispatch.glsl come from the units.
+    const int probed = probeExerciseOf(defines);
+    GeneratedFiles generated{{"exercises.glsl", exercisesGlsl(readinessOf(impl, probed))},
+                             {"exercise_declarations.glsl", exerciseDeclarationsGlsl()},
+                             {"probe_dispatch.glsl", probeDispatchGlsl(probed)}};
+    SourceAssembler assembler(makeIncludeResolver(impl), isFrameworkFile, std::move(generated));
     return assembler.assemble(shaderPrelude(defines, dialect), shadersDir() / entry);
 }
 

@@ -31,6 +31,11 @@ using ShaderDefines = std::map<std::string, std::string>;
 // folder for exercise files), so a student's file cannot read anything else.
 IncludeResolver makeIncludeResolver(const Implementation& impl);
 
+// True for the framework's files: shaders/, and the solutions of the units
+// that are no exercise of this course (course/manifest.txt). Errors in any
+// other file are the author's.
+bool isFrameworkFile(const std::filesystem::path& file);
+
 // Which GLSL a program is compiled as: desktop GLSL 3.30 core (the native
 // build), or GLSL ES 3.00 (WebGL2's language, and the strict rules of
 // stricter drivers), whose prelude also sets highp precision.

@@ -298,7 +298,8 @@ std::vector<glm::vec3> runBrdfProbe(BrdfProbe probe, const std::vector<BrdfCase>
     // texture small (96 bytes per case).
     constexpr std::size_t kBatch = 65536;
     for (std::size_t first = 0; first < cases.size(); first += kBatch) {
-        ProbeSpec spec(ProbeFunction(int(probe)), "brdf_probe", "brdf_probe(n, v, l, material)", 3);
+        ProbeSpec spec("brdf_probe", "brdf_probe(n, v, l, material)", 3);
+        spec.programFunction = int(probe);
         for (std::size_t k = first; k < std::min(cases.size(), first + kBatch); ++k) {
             const BrdfCase& c = cases[k];
             ProbeCase pc;

@@ -19,7 +19,7 @@
 namespace rl::acc {
 
 // The solutions, with single exercise files replaced: {"02-intersect.glsl",
-// "tests/mutants/02-intersect--textbook-quadratic.glsl"}.
+// "course/02-intersect/mutants/textbook-quadratic.glsl"}.
 Implementation solutionsWith(const std::map<std::string, std::filesystem::path>& overrides = {});
 
 // Renders with OpenGL: one headless context per process, programs cached by

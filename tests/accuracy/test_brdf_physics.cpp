@@ -111,7 +111,7 @@ TEST(GgxPeak, Float32WithinOnePercentOfDouble) {
 TEST(GgxPeak, TextbookDenominatorMissesIt) {
     // (n.h)^2 (alpha^2 - 1) + 1 cancels near n.h = 1: float32 keeps 1 - (n.h)^2
     // to 6e-8 where alpha^2 is 4e-6, a few % of the denominator.
-    double worst = worstPeakError(acc::BrdfProbe::D, ShadingModel{}, withNaive("tests/mutants/05-ggx--textbook-denominator.glsl"));
+    double worst = worstPeakError(acc::BrdfProbe::D, ShadingModel{}, withNaive("course/05-ggx/mutants/textbook-denominator.glsl"));
     std::cout << "[ measured ] textbook denominator at the peak: worst relative error " << worst << "\n";
     EXPECT_GT(worst, 0.01);
 }
@@ -265,7 +265,7 @@ INSTANTIATE_TEST_SUITE_P(Models, EnergyTest, ::testing::ValuesIn(acc::referenceA
 
 TEST(Energy, MissingPiInDBreaksTheBound) {
     std::vector<AlbedoPoint> points = {{1.0, 0.3, dvec3(1.0), false}, {0.6, 0.6, dvec3(1.0), false}};
-    std::vector<dvec3> got = glslAlbedo(points, ShadingModel{}, withNaive("tests/mutants/05-ggx--missing-pi.glsl"));
+    std::vector<dvec3> got = glslAlbedo(points, ShadingModel{}, withNaive("course/05-ggx/mutants/missing-pi.glsl"));
     EXPECT_GT(got[0].x, 1.0 + kQuadratureError);
     EXPECT_GT(got[1].x, 1.0 + kQuadratureError);
 }
@@ -326,7 +326,7 @@ INSTANTIATE_TEST_SUITE_P(Models, ReciprocityTest, ::testing::ValuesIn(acc::refer
 
 TEST(Reciprocity, FresnelOfTheViewBreaksIt) {
     // The roughness-aware Fresnel of NoV in the direct light depends on v alone.
-    double worst = worstAsymmetry(ShadingModel{}, withNaive("tests/mutants/08-cook-torrance--roughness-fresnel-direct.glsl"));
+    double worst = worstAsymmetry(ShadingModel{}, withNaive("course/08-cook-torrance/mutants/roughness-fresnel-direct.glsl"));
     EXPECT_GT(worst, 1e-2);
 }
 
@@ -381,7 +381,7 @@ TEST(Fresnel, F0AtNormalIncidenceAndOneAtGrazing) {
 
 TEST(Fresnel, OnePlusF0TypoIsNotOneAtGrazing) {
     auto [normalError, grazingError] =
-        fresnelEndpointErrors(ShadingModel{}, withNaive("tests/mutants/07-fresnel--one-plus-f0.glsl"));
+        fresnelEndpointErrors(ShadingModel{}, withNaive("course/07-fresnel/mutants/one-plus-f0.glsl"));
     EXPECT_GT(grazingError, 0.1);
 }
 

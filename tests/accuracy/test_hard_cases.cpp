@@ -141,82 +141,80 @@ std::string noNewFireflies(const Scene& scene, const Rendering& gl) {
 
 // ---- the suite -------------------------------------------------------------------------------
 
-const std::string kMutants = "tests/mutants/";
-const std::string kNaive = "tests/mutants/";  // the naive versions are mutants too
 
 std::vector<HardCase> hardCases() {
     std::vector<HardCase> cases;
     auto add = [&](HardCase c) { cases.push_back(std::move(c)); };
-    const std::string fixedOffset = kMutants + "04-shadows--fixed-offset.glsl";
+    const std::string fixedOffset = "course/04-shadows/mutants/fixed-offset.glsl";
     for (const char* d : {"1e3", "3e3", "1e4"})
         add({std::string("far_sphere_") + d, std::string("far-sphere-") + d + ".json", kAim, kAim,
-             {kMutants + "02-intersect--textbook-quadratic.glsl"}, farSphereCoverage});
+             {"course/02-intersect/mutants/textbook-quadratic.glsl"}, farSphereCoverage});
     // offsetBudget: the CPU reference's own offset of 2^-19 of 2R (0.04 and
     // 0.38) loses the contact shadows of the small spheres (measured 5.3% and
     // 19.8% against a 2^-40 offset): the CPU reference's business (issue #10).
-    add({"ground_1e4", "ground-1e4.json", kAim, 0.06, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
-    add({"ground_1e5", "ground-1e5.json", kAim, 0.21, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+    add({"ground_1e4", "ground-1e4.json", kAim, 0.06, {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
+    add({"ground_1e5", "ground-1e5.json", kAim, 0.21, {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
     add({"ground_1e5_grazing_light", "ground-1e5-grazing-light.json", kAim, 0.25,
-         {kMutants + "04-shadows--occluders-beyond-light.glsl", kMutants + "06-geometry--ibl-k.glsl"}, noNewFireflies});
-    add({"distant_camera", "distant-camera.json", kAim, 0.25, {kMutants + "02-intersect--textbook-quadratic.glsl"},
+         {"course/04-shadows/mutants/occluders-beyond-light.glsl", "course/06-geometry/mutants/ibl-k.glsl"}, noNewFireflies});
+    add({"distant_camera", "distant-camera.json", kAim, 0.25, {"course/02-intersect/mutants/textbook-quadratic.glsl"},
          nullptr});
     add({"touching_spheres", "touching-spheres.json", kAim, 0.25,
-         {kMutants + "08-cook-torrance--metals-diffuse.glsl", kMutants + "05-ggx--missing-pi.glsl"}, nullptr});
-    add({"inside_1e5", "inside-1e5.json", kAim, 0.25, {kMutants + "02-intersect--near-root-inside.glsl"},
+         {"course/08-cook-torrance/mutants/metals-diffuse.glsl", "course/05-ggx/mutants/missing-pi.glsl"}, nullptr});
+    add({"inside_1e5", "inside-1e5.json", kAim, 0.25, {"course/02-intersect/mutants/near-root-inside.glsl"},
          noBackground});
-    add({"fov_near_180", "fov-near-180.json", kAim, 0.25, {kMutants + "01-camera--aspect-on-y.glsl"}, nullptr});
-    add({"contact", "contact.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+    add({"fov_near_180", "fov-near-180.json", kAim, 0.25, {"course/01-camera/mutants/aspect-on-y.glsl"}, nullptr});
+    add({"contact", "contact.json", kAim, kAim, {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
     add({"contact_scaled_1em3", "contact-scaled-1e-3.json", kAim, kAim,
          {fixedOffset}, nullptr, "contact.json"});
-    add({"contact_scaled_1e3", "contact-scaled-1e3.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"},
+    add({"contact_scaled_1e3", "contact-scaled-1e3.json", kAim, kAim, {"course/09-reflections/mutants/full-strength-bounces.glsl"},
          nullptr, "contact.json"});
     // The CPU reference's offset 2^-19 of 1e4 = 0.02 world units moves contact
     // shadows (measured 1.0% against a 2^-40 offset).
     add({"contact_translated_1e4", "contact-translated-1e4.json", kAim, 0.015,
-         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr, "contact.json"});
+         {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr, "contact.json"});
     add({"contact_translated_1e10", "contact-translated-1e10.json", kAim, 1.0,
-         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr, "contact.json"});
-    add({"contact_scaled_1e20", "contact-scaled-1e20.json", kAim, 1.0, {kMutants + "09-reflections--full-strength-bounces.glsl"},
+         {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr, "contact.json"});
+    add({"contact_scaled_1e20", "contact-scaled-1e20.json", kAim, 1.0, {"course/09-reflections/mutants/full-strength-bounces.glsl"},
          nullptr, "contact.json"});
     // Scaled by 1e-20 every light is within 1e-12 of every point: per the
     // model (d2 <= 1e-12) no light adds anything; ambient and background remain.
-    add({"contact_scaled_1em20", "contact-scaled-1e-20.json", kAim, 1.0, {kMutants + "10-display--pow-gamma.glsl"},
+    add({"contact_scaled_1em20", "contact-scaled-1e-20.json", kAim, 1.0, {"course/10-display/mutants/pow-gamma.glsl"},
          nullptr});
-    add({"camera_inside", "camera-inside.json", kAim, kAim, {kMutants + "02-intersect--near-root-inside.glsl"},
+    add({"camera_inside", "camera-inside.json", kAim, kAim, {"course/02-intersect/mutants/near-root-inside.glsl"},
          noBackground});
     // From the centre of a sphere b = f.d = 0 for every camera ray: sign(b) must not be 0.
-    add({"camera_at_centre", "camera-at-centre.json", kAim, kAim, {kNaive + "02-intersect--glsl-sign.glsl"},
+    add({"camera_at_centre", "camera-at-centre.json", kAim, kAim, {"course/02-intersect/mutants/glsl-sign.glsl"},
          noBackground});
-    add({"tangent_rays", "tangent-rays.json", kAim, kAim, {kNaive + "08-cook-torrance--no-nov-clamp.glsl"},
+    add({"tangent_rays", "tangent-rays.json", kAim, kAim, {"course/08-cook-torrance/mutants/no-nov-clamp.glsl"},
          nullptr});
-    add({"behind_camera", "behind-camera.json", kAim, 0.005, {kNaive + "02-intersect--sign-of-b.glsl"}, nullptr});
-    add({"behind_camera_only", "behind-camera-only.json", kAim, kAim, {kNaive + "02-intersect--sign-of-b.glsl"},
+    add({"behind_camera", "behind-camera.json", kAim, 0.005, {"course/02-intersect/mutants/sign-of-b.glsl"}, nullptr});
+    add({"behind_camera_only", "behind-camera-only.json", kAim, kAim, {"course/02-intersect/mutants/sign-of-b.glsl"},
          onlyBackground});
-    add({"overlapping", "overlapping.json", kAim, kAim, {kNaive + "02-intersect--far-root-first.glsl"}, nullptr});
-    add({"no_spheres", "no-spheres.json", kAim, kAim, {kMutants + "10-display--pow-gamma.glsl"}, onlyBackground});
-    add({"no_lights", "no-lights.json", kAim, kAim, {kMutants + "09-reflections--full-strength-bounces.glsl"},
+    add({"overlapping", "overlapping.json", kAim, kAim, {"course/02-intersect/mutants/far-root-first.glsl"}, nullptr});
+    add({"no_spheres", "no-spheres.json", kAim, kAim, {"course/10-display/mutants/pow-gamma.glsl"}, onlyBackground});
+    add({"no_lights", "no-lights.json", kAim, kAim, {"course/09-reflections/mutants/full-strength-bounces.glsl"},
          nullptr});
-    add({"roughness_0", "roughness-0.json", kAim, kAim, {kNaive + "08-cook-torrance--no-roughness-clamp.glsl"},
+    add({"roughness_0", "roughness-0.json", kAim, kAim, {"course/08-cook-torrance/mutants/no-roughness-clamp.glsl"},
          roughnessZeroIsClamped});
-    add({"roughness_1", "roughness-1.json", kAim, kAim, {kMutants + "05-ggx--missing-pi.glsl"}, nullptr});
+    add({"roughness_1", "roughness-1.json", kAim, kAim, {"course/05-ggx/mutants/missing-pi.glsl"}, nullptr});
     add({"metallic_0_and_1", "metallic-0-and-1.json", kAim, kAim,
-         {kMutants + "08-cook-torrance--metals-diffuse.glsl"}, nullptr});
-    add({"f0_one", "f0-one.json", kAim, kAim, {kMutants + "08-cook-torrance--roughness-fresnel-direct.glsl"},
+         {"course/08-cook-torrance/mutants/metals-diffuse.glsl"}, nullptr});
+    add({"f0_one", "f0-one.json", kAim, kAim, {"course/08-cook-torrance/mutants/roughness-fresnel-direct.glsl"},
          nullptr});
     // The CPU reference's offset (2^-19 of 2000 = 0.004) moves the reflections
     // of the spheres' lower edges a little (measured 1.0%).
     add({"grazing_view", "grazing-view.json", kAim, 0.015,
-         {kMutants + "07-fresnel--one-plus-f0.glsl", kMutants + "06-geometry--ibl-k.glsl"}, noNewFireflies});
-    add({"grazing_light", "grazing-light.json", kAim, 0.005, {kMutants + "06-geometry--ibl-k.glsl"},
+         {"course/07-fresnel/mutants/one-plus-f0.glsl", "course/06-geometry/mutants/ibl-k.glsl"}, noNewFireflies});
+    add({"grazing_light", "grazing-light.json", kAim, 0.005, {"course/06-geometry/mutants/ibl-k.glsl"},
          noNewFireflies});
     add({"light_on_surface", "light-on-surface.json", kAim, kAim,
-         {kMutants + "04-shadows--occluders-beyond-light.glsl"}, nullptr});
+         {"course/04-shadows/mutants/occluders-beyond-light.glsl"}, nullptr});
     add({"light_between", "light-between.json", kAim, kAim,
-         {kMutants + "04-shadows--occluders-beyond-light.glsl"}, nullptr});
+         {"course/04-shadows/mutants/occluders-beyond-light.glsl"}, nullptr});
     add({"facing_mirrors", "facing-mirrors.json", kAim, kAim,
-         {kMutants + "09-reflections--full-strength-bounces.glsl"}, nullptr});
+         {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
     add({"ggx_peak", "ggx-peak.json", kAim, kAim,
-         {kNaive + "05-ggx--textbook-denominator.glsl", kNaive + "08-cook-torrance--no-roughness-clamp.glsl"}, nullptr});
+         {"course/05-ggx/mutants/textbook-denominator.glsl", "course/08-cook-torrance/mutants/no-roughness-clamp.glsl"}, nullptr});
     return cases;
 }
 

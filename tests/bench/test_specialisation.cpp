@@ -358,7 +358,7 @@ TEST(PictureValues, SkyTilesOnlyWithTheCoursesCameraAndIntersection) {
     for (const char* own : {"01-camera--aspect-on-y.glsl", "02-intersect--sign-of-b.glsl"}) {
         std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
         const ShaderDefines student =
-            pictureDefines(lecture, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
+            pictureDefines(lecture, Implementation{solutionsDir(), {{file, test::unitFilePath("mutants", own)}}});
         EXPECT_EQ(student.count(kSkyTilesDefine), 0u) << own;
         EXPECT_FALSE(skyProgramDefines(student).has_value()) << own;
     }
@@ -475,7 +475,7 @@ TEST(PictureValues, OutsideCameraAndConesOnlyWhereNoRayStartsInside) {
                             "09-reflections--full-strength-bounces.glsl"}) {
         std::string file = std::string(own).substr(0, std::string(own).find("--")) + ".glsl";
         const ShaderDefines student = pictureDefines(
-            random30, Implementation{solutionsDir(), {{file, sourceRoot() / "tests" / "mutants" / own}}});
+            random30, Implementation{solutionsDir(), {{file, test::unitFilePath("mutants", own)}}});
         EXPECT_EQ(student.count("RL_CAMERA_OUTSIDE"), 0u) << own;
         EXPECT_EQ(student.count("RL_SHADOW_CONES"), file == "09-reflections.glsl" ? 1u : 0u) << own;
     }

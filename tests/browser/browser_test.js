@@ -31,16 +31,22 @@ const firstLine = (text) => String(text || '').split('\n')[0];
 // entry can go.
 const KNOWN_SWIFTSHADER_FAILURES = [];
 
-// One mutant per exercise (tests/mutants/): a typical mistake each. Their
+// One mutant per exercise (course/*/mutants/): a typical mistake each. Their
 // first hint lines must equal the native ones; every other file of
-// tests/mutants/ (case `mutants`, too) must get the native verdict.
+// course/*/mutants/ (case `mutants`, too) must get the native verdict.
 const HINTED_MUTANTS = [
   '01-camera--aspect-on-y', '02-intersect--far-root-first', '03-lambert--pi-as-3.14', '04-shadows--no-offset',
   '05-ggx--alpha-not-squared', '06-geometry--ibl-k', '07-fresnel--power-on-voh', '08-cook-torrance--missing-four',
   '09-reflections--full-strength-bounces', '10-display--gamma-before-tonemap',
 ];
-const MUTANTS = fs.readdirSync(path.join(root, 'tests/mutants')).filter((f) => f.endsWith('.glsl'))
-    .map((f) => f.slice(0, -'.glsl'.length)).sort();
+// Every unit's mutants (course/<unit>/mutants/<name>.glsl), named <unit>--<name>.
+const MUTANTS = fs.readdirSync(path.join(root, 'course')).filter((u) => /^\d\d-/.test(u))
+    .flatMap((u) => {
+      const dir = path.join(root, 'course', u, 'mutants');
+      return fs.existsSync(dir) ? fs.readdirSync(dir).filter((f) => f.endsWith('.glsl'))
+          .map((f) => u + '--' + f.slice(0, -'.glsl'.length)) : [];
+    }).sort();
+const mutantPath = (m) => path.join(root, 'course', m.split('--')[0], 'mutants', m.split('--')[1] + '.glsl');
 
 function chromiumArgs(profile) {
   const args = ['--headless=new', '--no-sandbox', '--disable-background-networking', '--disable-component-update',
@@ -125,11 +131,11 @@ const cases = {
     expect(native.status === 'NOT STARTED' && native.hint === reports[4].hint && native.message === reports[4].message,
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
-  // Mutants: every file of tests/mutants/ gets the native checker's verdict;
+  // Mutants: every unit's mutant gets the native checker's verdict;
   // the hinted ones also its first hint line.
   async mutants(page) {
     for (const mutant of MUTANTS) {
-      const file = path.join(root, 'tests/mutants', mutant + '.glsl');
+      const file = mutantPath(mutant);
       const number = Number(mutant.slice(0, 2));
       const name = mutant.split('--')[0] + '.glsl';
       await setFiles(page, {[name]: fs.readFileSync(file, 'utf8')});

@@ -169,6 +169,22 @@ TEST(Documents, NoFileNamesTheFoldersBesideTheRepository) {
     }
 }
 
+// The course's table in docs/exercises/README.md is the registry's, as
+// `./raylab course --markdown --from docs/exercises` prints it: between the
+// two marker comments, nobody writes it by hand.
+TEST(Documents, TheCourseTableIsTheRegistrys) {
+    const std::string page = readText(rl::sourceRoot() / "docs" / "exercises" / "README.md");
+    const std::string begin = "<!-- the course: ./raylab course --markdown --from docs/exercises -->\n";
+    const std::string end = "<!-- end of the course -->";
+    const std::size_t a = page.find(begin), b = page.find(end);
+    ASSERT_NE(a, std::string::npos) << "docs/exercises/README.md lost the marker " << begin;
+    ASSERT_NE(b, std::string::npos);
+    rl::test::CommandResult r = rl::test::runRaylab("course --markdown --from docs/exercises");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(page.substr(a + begin.size(), b - a - begin.size()), r.output)
+        << "run ./raylab course --markdown --from docs/exercises and put its output between the markers";
+}
+
 TEST(Documents, TheModelPageHasEverySectionOfTheContract) {
     std::string model = readText(rl::sourceRoot() / "docs/model.md");
     std::set<std::string> anchors = headingAnchors(model);

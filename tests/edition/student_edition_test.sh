@@ -12,8 +12,9 @@
 # exercise passes on its probes with its images waiting, 08 alone fails with
 # a hint naming 03 (which it calls), and all ten copied in pass every check,
 # images included, with exit status 0.
-# SCRATCH lies under the build folder so that ccache (base_dir) finds the
-# instructor's objects for the clone's build; RAYLAB is the instructor's binary.
+# SCRATCH lies under the build folder, so that the clone's build folder is as
+# deep below its source as the instructor's and ccache (CMakeLists.txt) finds
+# the instructor's objects; RAYLAB is the instructor's binary.
 set -euo pipefail
 src="$1"; raylab="$2"; scratch="$3"
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -37,8 +38,14 @@ if out=$("$src/scripts/student-edition.sh" "$scratch/a-file" 2>&1); then fail "a
 [ -z "$(ls -A "$scratch" | grep '^\.student-edition-' || true)" ] || fail "a half-made folder was left beside OUT_DIR"
 
 step "no answers"
-for answers in solutions tests/mutants tests/alternatives tests/portability; do
+for answers in solutions tests/portability; do
     [ ! -e "$edition/$answers" ] || fail "$answers/ is in the edition"
+done
+for id in $(sed -e 's/#.*//' -e 's/[[:space:]]//g' "$src/course/manifest.txt" | grep -v '^$'); do
+    for answers in solution.glsl mutants alternatives; do
+        [ ! -e "$edition/course/$id/$answers" ] || fail "course/$id/$answers is in the edition"
+    done
+    [ -f "$edition/course/$id/stub.glsl" ] && [ -f "$edition/course/$id/handout.md" ] || fail "course/$id lost its stub or handout"
 done
 # (the test files; a comment of tests/CMakeLists.txt names the folders, and
 # tests/support/ keeps the GL helper of the suites left out, which no unit test calls)
@@ -49,7 +56,7 @@ python3 "$src/scripts/answer-leaks.py" "$src/solutions" "$edition" || fail "an a
 # The search can fail: one solution's D_GGX quoted in a copy of its handout.
 planted="$scratch/planted"
 mkdir -p "$planted"
-{ cat "$src/docs/exercises/05-ggx.md"; printf '\n```glsl\n'; cat "$src/solutions/05-ggx.glsl"; printf '```\n'; } \
+{ cat "$src/course/05-ggx/handout.md"; printf '\n```glsl\n'; cat "$src/solutions/05-ggx.glsl"; printf '```\n'; } \
     >"$planted/05-ggx.md"
 if python3 "$src/scripts/answer-leaks.py" "$src/solutions" "$planted" >"$scratch/planted.log"; then
     fail "answer-leaks.py did not find a solution pasted into a handout"
@@ -59,10 +66,8 @@ grep -q "05-ggx.md: the body of D_GGX" "$scratch/planted.log" || fail "planted: 
 step "a fresh clone, built as its README says (scripts/build.sh)"
 clone="$scratch/clone"
 git clone -q "$edition" "$clone"
-if command -v ccache >/dev/null; then
-    export CMAKE_CXX_COMPILER_LAUNCHER="${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}"
-    export CMAKE_C_COMPILER_LAUNCHER="${CMAKE_C_COMPILER_LAUNCHER:-ccache}"
-fi
+# The clone's build goes through ccache as every build does where it is
+# installed (CMakeLists.txt, RAYLAB_CCACHE): it hits the instructor's objects.
 start=$(date +%s)
 (cd "$clone" && scripts/build.sh) >"$scratch/build.log" 2>&1 || { tail -30 "$scratch/build.log"; fail "scripts/build.sh"; }
 echo "build of the clone: $(( $(date +%s) - start )) s"

@@ -1,7 +1,7 @@
 // The checker can fail: solutions pass, stubs are NOT STARTED, every mutant
-// in tests/mutants/ is caught by its exercise with a message that names the
+// of the units (course/*/mutants/) is caught by its exercise with a message that names the
 // mistake's symptom (and never a cause its header rules out), every correct
-// alternative in tests/alternatives/ passes, compile errors name the
+// alternative (course/*/alternatives/) passes, compile errors name the
 // student's file and line, and a shader that never ends costs its exercise,
 // not the run.
 #include "core/paths.h"
@@ -23,13 +23,7 @@ fs::path copyOf(const fs::path& from, const std::string& name) {
     return dir;
 }
 
-std::vector<std::string> mutantFiles() {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "mutants"))
-        if (e.path().extension() == ".glsl") files.push_back(e.path().filename().string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+std::vector<std::string> mutantFiles() { return test::unitFileNames("mutants"); }
 
 int countOf(const std::string& text, const std::string& what) {
     int n = 0;
@@ -69,7 +63,7 @@ TEST(Checker, EditedStubsThatStillReturnTheSentinelAreNotStarted) {
 class Mutants : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Mutants, AreCaughtWithTheirSymptom) {
-    fs::path file = sourceRoot() / "tests" / "mutants" / GetParam();
+    fs::path file = test::unitFilePath("mutants", GetParam());
     std::string text = test::readText(file);
     std::smatch exercise, expect;
     ASSERT_TRUE(std::regex_search(text, exercise, std::regex(R"(// mutant of: (\d\d)-)"))) << "header missing";
@@ -95,20 +89,14 @@ INSTANTIATE_TEST_SUITE_P(TestsMutants, Mutants, ::testing::ValuesIn(mutantFiles(
                              return name;
                          });
 
-// Correct solutions written differently (tests/alternatives/): the checker
+// Correct solutions written differently (course/*/alternatives/): the checker
 // must not reject a right answer for its form.
-std::vector<std::string> alternativeFiles() {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "alternatives"))
-        if (e.path().extension() == ".glsl") files.push_back(e.path().filename().string());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+std::vector<std::string> alternativeFiles() { return test::unitFileNames("alternatives"); }
 
 class Alternatives : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Alternatives, Pass) {
-    fs::path file = sourceRoot() / "tests" / "alternatives" / GetParam();
+    fs::path file = test::unitFilePath("alternatives", GetParam());
     std::smatch exercise;
     std::string text = test::readText(file);
     ASSERT_TRUE(std::regex_search(text, exercise, std::regex(R"(// alternative of: (\d\d)-)"))) << "header missing";

@@ -9,9 +9,10 @@
 //     the failures and fails far more often than the other inputs;
 //   - failures spread over every kind of input are said to be so;
 //   - every mistake a handout lists is known to the checker by name and has
-//     a mutant in tests/mutants/.
+//     a mutant in course/*/mutants/.
 #include "checks/checker.h"
 #include "checks/probe_cases.h"
+#include "course/exercise_registry.h"
 #include "core/paths.h"
 #include "support/test_support.h"
 
@@ -158,19 +159,17 @@ TEST(Hints, EveryMistakeAHandoutListsIsKnownByNameAndHasAMutant) {
     // The mutants' "caught by" texts, per exercise.
     std::map<std::string, std::vector<std::string>> caughtBy;
     const std::regex header(R"re(// mutant of: (\d\d)-[\s\S]*?// caught by: .* contains "(.*)")re");
-    for (const auto& e : fs::directory_iterator(sourceRoot() / "tests" / "mutants")) {
-        std::string text = test::readText(e.path());
+    for (const std::string& mutant : test::unitFileNames("mutants")) {
+        std::string text = test::readText(test::unitFilePath("mutants", mutant));
         std::smatch m;
         if (std::regex_search(text, m, header)) caughtBy[m[1]].push_back(m[2]);
     }
     int rows = 0;
-    for (const auto& e : fs::directory_iterator(sourceRoot() / "docs" / "exercises")) {
-        std::string name = e.path().filename().string();
-        if (e.path().extension() != ".md" || !std::isdigit(static_cast<unsigned char>(name[0]))) continue;
-        int exercise = std::stoi(name.substr(0, 2));
-        std::vector<ProbeSpec> specs = probesForExercise(exercise);
+    for (const ExerciseInfo& e : allExercises()) {
+        const std::string name = e.handout();
+        std::vector<ProbeSpec> specs = unitProbes(e.id);
         // The first table of "Mistakes the checker recognises": | what you see | the checker's hint |
-        std::istringstream lines(test::readText(e.path()));
+        std::istringstream lines(test::readText(sourceRoot() / e.handout()));
         std::string line;
         bool inSection = false, inTable = false;
         while (std::getline(lines, line)) {
@@ -196,9 +195,9 @@ TEST(Hints, EveryMistakeAHandoutListsIsKnownByNameAndHasAMutant) {
                 for (const KnownMistake& m : spec.mistakes) known = known || m.symptom == symptom || m.hint == hint;
             EXPECT_TRUE(known) << name << ": the checker does not know \"" << symptom << "\"";
             bool mutant = false;
-            for (const std::string& text : caughtBy[name.substr(0, 2)])
+            for (const std::string& text : caughtBy[e.id.substr(0, 2)])
                 mutant = mutant || contains(symptom + " " + hint, text);
-            EXPECT_TRUE(mutant) << name << ": no mutant in tests/mutants/ is caught as \"" << symptom << "\"";
+            EXPECT_TRUE(mutant) << name << ": no mutant in course/*/mutants/ is caught as \"" << symptom << "\"";
         }
     }
     EXPECT_GE(rows, 40);

@@ -54,7 +54,7 @@ void writeFolder(const fs::path& dir, const std::map<std::string, std::string>& 
 }
 
 std::string mutantText(const std::string& name) {
-    return readText(sourceRoot() / "tests" / "mutants" / (name + ".glsl"));
+    return readText(test::unitFilePath("mutants", name));
 }
 
 std::string mutantCaughtBy(const std::string& name) {

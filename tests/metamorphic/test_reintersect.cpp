@@ -133,7 +133,7 @@ Counts glslCounts(const Implementation& impl, int mode) {
     for (int k = 0; k < size.spheres; ++k) {
         SphereCase c = sphereCase(k, size.rays);
         const dvec3 centre = c.scene.spheres[0].center;
-        ProbeSpec spec(ProbeFunction::Reintersect, "reintersect", "reintersect(o, d, w, mode)", 3);
+        ProbeSpec spec("reintersect", "reintersect(o, d, w, mode)", 3);
         spec.needsScene = true;
         for (const dvec3& w : c.outgoing) {
             ProbeCase p;
@@ -181,10 +181,10 @@ TEST(Reintersect, GlslWithTheLeavingSphereAndTheBounce) {
 
 TEST(Reintersect, SeenFailingWithAFixedEpsilonOffset) {
     // The yardstick can fail: exercise 04 with a fixed offset of 1e-3
-    // (tests/mutants/04-shadows--fixed-offset.glsl) leaves rays on huge
+    // (course/04-shadows/mutants/fixed-offset.glsl) leaves rays on huge
     // spheres inside the rounding of their hit point, and pushes them off
     // tiny ones by many radii.
-    Implementation fixed = acc::solutionsWith({{"04-shadows.glsl", sourceRoot() / "tests" / "mutants" / "04-shadows--fixed-offset.glsl"}});
+    Implementation fixed = acc::solutionsWith({{"04-shadows.glsl", sourceRoot() / "course" / "04-shadows" / "mutants" / "fixed-offset.glsl"}});
     Counts counts = glslCounts(fixed, 0);
     std::printf("[ measured ] GLSL, a fixed 1e-3 offset: %s\n", counts.summary().c_str());
     EXPECT_GT(counts.selfHits + counts.passThroughs, 0) << counts.summary();

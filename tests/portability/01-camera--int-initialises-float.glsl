@@ -1,7 +1,7 @@
 // portability slip in: 01-camera
 // slip: float fn = n;  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
 // reported as: "an int initialises a float: write `float fn = float(n);`"
-// Exercise 01: camera rays. Handout: docs/exercises/01-camera.md
+// Exercise 01: camera rays. Handout: course/01-camera/handout.md
 
 // Offset of sample s inside its pixel, for n*n samples per pixel: the centre
 // of cell (a, b) of an n x n grid, a = s % n along x, b = s / n along y.

@@ -1,7 +1,7 @@
 // portability slip in: 03-lambert
 // slip: return albedo / PI * 1;  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
 // reported as: "an int in float arithmetic: write `return albedo / PI * 1.0;`"
-// Exercise 03: Lambert diffuse under a point light. Handout: docs/exercises/03-lambert.md
+// Exercise 03: Lambert diffuse under a point light. Handout: course/03-lambert/handout.md
 
 // Lambertian BRDF: a perfectly matte surface reflects albedo / pi (linear).
 vec3 Fd_Lambert(vec3 albedo) {

@@ -1,7 +1,7 @@
 // portability slip in: 08-cook-torrance
 // slip: if (NoL == 0) return vec3(0.0);  (Mesa's desktop GLSL accepts it, GLSL ES 3.00 does not)
 // reported as: "`==` between a float and an int: write `if (NoL == 0.0) return vec3(0.0);`"
-// Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: docs/exercises/08-cook-torrance.md
+// Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: course/08-cook-torrance/handout.md
 
 // GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
 // alpha = r^2. The lower clamp keeps D finite for mirror-like surfaces.

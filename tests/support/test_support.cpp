@@ -1,5 +1,7 @@
 #include "support/test_support.h"
 
+#include "course/exercise_registry.h"
+
 #include "gl/context.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
@@ -68,6 +70,24 @@ std::string describe(const ImageDiff& d) {
     std::snprintf(text, sizeof text, "off %.3f%% mean %.3f p99 %.1f max %d pfmMedianRel %.2g nonFinite %ld",
                   100 * d.offFraction, d.meanLsb, d.p99Lsb, d.maxLsb, d.pfmMedianRel, d.nonFinite);
     return text;
+}
+
+std::vector<std::string> unitFileNames(const std::string& kind) {
+    std::vector<std::string> names;
+    for (const ExerciseInfo& e : allExercises()) {
+        std::error_code ec;
+        for (const auto& f : std::filesystem::directory_iterator(sourceRoot() / e.unitDir() / kind, ec))
+            if (f.path().extension() == ".glsl") names.push_back(e.id + "--" + f.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::filesystem::path unitFilePath(const std::string& kind, const std::string& name) {
+    std::size_t cut = name.find("--");
+    std::string stem = name.substr(cut + 2);
+    if (stem.size() < 5 || stem.substr(stem.size() - 5) != ".glsl") stem += ".glsl";
+    return sourceRoot() / "course" / name.substr(0, cut) / kind / stem;
 }
 
 }  // namespace rl::test

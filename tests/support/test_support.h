@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace rl::test {
 
@@ -27,6 +28,13 @@ std::filesystem::path freshTempDir(const std::string& name);
 
 void writeText(const std::filesystem::path& path, const std::string& text);
 std::string readText(const std::filesystem::path& path);
+
+// The files of kind "mutants" or "alternatives" of every exercise of the
+// course (course/<unit>/<kind>/*.glsl), named "<unit>--<stem>.glsl" as test
+// parameters, sorted.
+std::vector<std::string> unitFileNames(const std::string& kind);
+// The file such a name stands for: course/<unit>/<kind>/<stem>.glsl.
+std::filesystem::path unitFilePath(const std::string& kind, const std::string& name);
 
 // Renders with OpenGL (solutions/, a headless context made once per process).
 Rendering renderGl(const Scene& scene, const std::string& backend = "auto");

@@ -196,5 +196,18 @@ TEST(Architecture, EveryIncludeRunsDownTheLayers) {
             report += f + "\n";
     }
     EXPECT_GT(files, 100);
+    // The units' C++ (course/NN-name/): probes.cpp is compiled into the checks
+    // layer, reference.{h,cpp} into the reference layer (cmake/course.cmake).
+    int units = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(rl::sourceRoot() / "course")) {
+        const std::string name = entry.path().filename().string();
+        const std::string layer = name == "probes.cpp" ? "checks" : name.rfind("reference.", 0) == 0 ? "reference" : "";
+        if (!entry.is_regular_file() || layer.empty()) continue;
+        ++units;
+        for (const std::string& f : layerFindings(fs::relative(entry.path(), rl::sourceRoot()).string(), layer,
+                                                  rl::test::readText(entry.path())))
+            report += f + "\n";
+    }
+    EXPECT_GE(units, 10);
     EXPECT_EQ(report, "") << "an include against the layers (tests/unit/test_architecture.cpp, kLayerRank)";
 }

@@ -146,16 +146,16 @@ struct Case {
     Implementation impl;
 };
 std::vector<Case> implementations() {
-    const fs::path mutants = sourceRoot() / "tests" / "mutants";
+    const fs::path course = sourceRoot() / "course";
     return {
         {"solutions", {solutionsDir(), {}}},
         {"stubs", {exercisesDir(), {}}},
         {"stubs+course-09", {exercisesDir(), {{"09-reflections.glsl", solutionsDir() / "09-reflections.glsl"}}}},
-        {"student-01", {solutionsDir(), {{"01-camera.glsl", mutants / "01-camera--aspect-on-y.glsl"}}}},
-        {"student-02", {solutionsDir(), {{"02-intersect.glsl", mutants / "02-intersect--far-root-first.glsl"}}}},
-        {"student-04", {solutionsDir(), {{"04-shadows.glsl", mutants / "04-shadows--offset-into-surface.glsl"}}}},
+        {"student-01", {solutionsDir(), {{"01-camera.glsl", course / "01-camera" / "mutants" / "aspect-on-y.glsl"}}}},
+        {"student-02", {solutionsDir(), {{"02-intersect.glsl", course / "02-intersect" / "mutants" / "far-root-first.glsl"}}}},
+        {"student-04", {solutionsDir(), {{"04-shadows.glsl", course / "04-shadows" / "mutants" / "offset-into-surface.glsl"}}}},
         {"stub-05", {solutionsDir(), {{"05-ggx.glsl", exercisesDir() / "05-ggx.glsl"}}}},
-        {"student-09", {solutionsDir(), {{"09-reflections.glsl", mutants / "09-reflections--full-strength-bounces.glsl"}}}},
+        {"student-09", {solutionsDir(), {{"09-reflections.glsl", course / "09-reflections" / "mutants" / "full-strength-bounces.glsl"}}}},
     };
 }
 

@@ -93,41 +93,61 @@ TEST(ShippedStubs, TheLiveExercisesFolderIsNeverConsulted) {
     }
 }
 
-// cmake/shipped_stubs.cmake, run as the build runs it: a student who edited
-// exercises/ and rebuilds keeps the real stub; an edited file at the first
-// build gives no stub at all (the probes decide), never the student's work.
-TEST(ShippedStubs, ARebuildAfterEditingKeepsTheShippedStub) {
-    fs::path dir = test::freshTempDir("stub_rebuild");
-    fs::create_directories(dir / "exercises");
-    // The stubs as shipped (compiled in), never the live exercises/: this
-    // test must pass in a clone whose student has edited exercises/ in place.
-    for (const ExerciseInfo& e : allExercises()) {
-        if (!shippedStub(e.file())) GTEST_SKIP() << "this build has no shipped stub for " << e.file();
-        test::writeText(dir / "exercises" / e.file(), stubText(e));
-    }
-    const ExerciseInfo& ggx = *std::find_if(allExercises().begin(), allExercises().end(),
-                                            [](const ExerciseInfo& e) { return e.file() == "05-ggx.glsl"; });
-    auto generate = [&](const std::string& snapshot) {
-        std::string command = std::string(RAYLAB_CMAKE) + " -DEXERCISES_DIR=" + (dir / "exercises").string() +
-                              " -DSNAPSHOT_DIR=" + (dir / snapshot).string() + " -DOUTPUT=" + (dir / "stubs.cpp").string() +
-                              " -P " + (sourceRoot() / "cmake" / "shipped_stubs.cmake").string() + " > /dev/null 2>&1";
-        EXPECT_EQ(std::system(command.c_str()), 0) << command;
-        return test::readText(dir / "stubs.cpp");
+// cmake/course.cmake, run as scripts/build-web.sh runs it, on a copy of the
+// units: the shipped stubs are the units' stub.glsl, whatever exercises/
+// holds (a student edits that folder in place and rebuilds); the manifest's
+// mistakes stop it with the manifest's file and line.
+namespace {
+
+struct CourseRun {
+    int status;
+    std::string output;
+};
+
+CourseRun runCourseCmake(const fs::path& root, const fs::path& generated) {
+    std::string command = std::string(RAYLAB_CMAKE) + " -DRAYLAB_ROOT_DIR=" + root.string() +
+                          " -DRAYLAB_GENERATED_DIR=" + generated.string() + " -P " +
+                          (sourceRoot() / "cmake" / "course.cmake").string() + " 2>&1";
+    test::CommandResult r = test::runShell(command);
+    return {r.status, r.output};
+}
+
+}  // namespace
+
+TEST(ShippedStubs, TheUnitsStubsNeverTheExercisesFolder) {
+    fs::path root = test::freshTempDir("course_cmake");
+    fs::copy(sourceRoot() / "course", root / "course", fs::copy_options::recursive);
+    fs::create_directories(root / "exercises");
+    // The student solved 05 in place.
+    fs::copy_file(root / "course" / "05-ggx" / "solution.glsl", root / "exercises" / "05-ggx.glsl");
+    CourseRun run = runCourseCmake(root, root / "generated");
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(test::readText(root / "generated" / "shipped-stubs" / "05-ggx.glsl"),
+              test::readText(root / "course" / "05-ggx" / "stub.glsl"));
+    const std::string units = test::readText(root / "generated" / "course_units.cpp");
+    EXPECT_NE(units.find("{\"05-ggx\", 4,"), std::string::npos);
+    EXPECT_NE(units.find(test::readText(root / "course" / "05-ggx" / "stub.glsl")), std::string::npos);
+    // solutions/ is written from the units.
+    EXPECT_EQ(test::readText(root / "solutions" / "05-ggx.glsl"), test::readText(root / "course" / "05-ggx" / "solution.glsl"));
+
+    // The manifest's mistakes: one line each, naming course/manifest.txt and its line.
+    auto manifestError = [&](const std::string& manifest) {
+        test::writeText(root / "course" / "manifest.txt", manifest);
+        CourseRun r = runCourseCmake(root, root / "generated2");
+        EXPECT_NE(r.status, 0) << manifest;
+        return r.output;
     };
-    std::string first = generate("snapshot");
-    EXPECT_NE(first.find("\"05-ggx.glsl\""), std::string::npos);
-    // The student solves 05 in place and rebuilds: the same stubs as before.
-    fs::copy_file(solutionsDir() / "05-ggx.glsl", dir / "exercises" / "05-ggx.glsl", fs::copy_options::overwrite_existing);
-    EXPECT_EQ(generate("snapshot"), first);
-    EXPECT_EQ(test::readText(dir / "snapshot" / "05-ggx.glsl"), stubText(ggx));
-    // A first build after editing: no stub for 05 rather than the solution.
-    std::string fresh = generate("fresh-snapshot");
-    EXPECT_EQ(fresh.find("\"05-ggx.glsl\""), std::string::npos);
-    EXPECT_NE(fresh.find("\"07-fresnel.glsl\""), std::string::npos);
-    // An instructor's new stub (still all NOT_STARTED) replaces the old one.
-    test::writeText(dir / "exercises" / "07-fresnel.glsl", "// new\nvec3 F_Schlick(vec3 F0, float VoH) {\n    return vec3(NOT_STARTED);\n}\n");
-    generate("snapshot");
-    EXPECT_EQ(test::readText(dir / "snapshot" / "07-fresnel.glsl"), test::readText(dir / "exercises" / "07-fresnel.glsl"));
+    EXPECT_NE(manifestError("# the course\n01-camera\n04-shadow\n").find("course/manifest.txt:3: no unit 04-shadow"),
+              std::string::npos);
+    EXPECT_NE(manifestError("01-camera\nCamera Rays\n").find("course/manifest.txt:2: \"Camera Rays\" is no unit name"),
+              std::string::npos);
+    EXPECT_NE(manifestError("01-camera\n01-camera\n").find("course/manifest.txt:2: 01-camera is listed twice"),
+              std::string::npos);
+    EXPECT_NE(manifestError("# nothing\n").find("course/manifest.txt lists no unit"), std::string::npos);
+    // A unit left out of the manifest is framework code: it needs its solution.
+    fs::remove(root / "course" / "06-geometry" / "solution.glsl");
+    std::string out = manifestError("01-camera\n");
+    EXPECT_NE(out.find("course/06-geometry is not in course/manifest.txt"), std::string::npos) << out;
 }
 
 // A picture program trusts traceRay() only once exercise 09 is written

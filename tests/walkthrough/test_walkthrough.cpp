@@ -59,6 +59,11 @@ fs::path scratchClone(const std::string& name) {
         fs::copy_file(from, copy / rel, fs::copy_options::overwrite_existing);
         fs::permissions(copy / rel, fs::status(from).permissions());
     }
+    // solutions/ is what the build writes from the units (cmake/course.cmake):
+    // a built instructor's repository has it.
+    std::error_code ec;
+    if (fs::is_directory(solutionsDir(), ec))
+        fs::copy(solutionsDir(), copy / "solutions", fs::copy_options::recursive | fs::copy_options::overwrite_existing);
     test::CommandResult init = shell("cd " + shellQuoted(copy.string()) + " && git init -q && git add -A");
     if (init.status != 0) throw std::runtime_error("git init in the scratch copy: " + init.output);
     return copy;
@@ -239,8 +244,8 @@ TEST(Walkthrough, EveryStudentDocumentAsWritten) {
         checkAll("the shipped stub", {"NOT STARTED"});
         // Wrong versions: every mutant of this exercise.
         std::vector<fs::path> mutants;
-        for (const auto& m : fs::directory_iterator(walk.root / "tests" / "mutants"))
-            if (m.path().filename().string().rfind(e.id + "--", 0) == 0) mutants.push_back(m.path());
+        for (const auto& m : fs::directory_iterator(walk.root / "course" / e.id / "mutants"))
+            mutants.push_back(m.path());
         std::sort(mutants.begin(), mutants.end());
         EXPECT_FALSE(mutants.empty()) << "no mutant of " << e.id;
         for (const fs::path& m : mutants) {

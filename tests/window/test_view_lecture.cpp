@@ -134,15 +134,15 @@ TEST(ViewCaption, NamesTheModelVariantInUse) {
     const ViewCaption ggx = viewCaption(View::D, 0, scene, ShadingModel{});
     EXPECT_NE(ggx.model.find("GGX"), std::string::npos) << ggx.model;
     EXPECT_EQ(ggx.formula, "D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2),  alpha = r^2")
-        << "the handout's notation (docs/exercises/05-ggx.md)";
+        << "the handout's notation (course/05-ggx/handout.md)";
     ShadingModel conductor;
     conductor.fresnel = FresnelModel::Conductor;
     EXPECT_NE(viewCaption(View::F, 0, scene, conductor).model.find("conductor"), std::string::npos);
     EXPECT_EQ(viewCaption(View::F, 0, scene, ShadingModel{}).formula, "F = F0 + (1 - F0) (1 - VoH)^5")
-        << "docs/exercises/07-fresnel.md";
+        << "course/07-fresnel/handout.md";
     EXPECT_EQ(viewCaption(View::FresnelNoV, 0, scene, ShadingModel{}).formula,
               "Fr = F0 + (max(1 - r, F0) - F0) (1 - NoV)^5")
-        << "docs/exercises/09-reflections.md";
+        << "course/09-reflections/handout.md";
 }
 
 TEST(ViewCaption, EveryViewHasATitleAFormulaAndAnOrderedScale) {

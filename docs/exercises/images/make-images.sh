@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Renders every picture of the exercise handouts (docs/exercises/*.md) into
-# docs/exercises/images/. Run it after a change to the model, the scenes or
+# Renders every picture of the exercise handouts (course/*/handout.md) into
+# each unit's images/ folder (course/NN-name/images/NN-*.png), and the
+# course's own pictures into docs/exercises/images/. Run it after a change to the model, the scenes or
 # the solutions, and look at the pictures before you commit them.
 #
 #     docs/exercises/images/make-images.sh [RAYLAB]      (default: build/bin/raylab)
 #
 # Every picture comes from `raylab render`: with solutions/, with solutions/
 # where one exercise is the shipped stub (what a student sees before starting
-# it), or with solutions/ where one exercise is a mutant from tests/mutants/
+# it), or with solutions/ where one exercise is a mutant from course/*/mutants/
 # (what a typical mistake looks like). ImageMagick's `convert` cuts the rows
 # of spheres out of their scenes (scripts/setup.sh --window installs it).
 set -euo pipefail
@@ -16,28 +17,26 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
 raylab=$(realpath "${1:-$root/build/bin/raylab}")
 scenes=$here/scenes
-out=$here
 work=$(mktemp -d)
+out=$work/out  # sorted into the units' images/ folders at the end
+mkdir -p "$out"
 trap 'rm -rf "$work"' EXIT
 
 command -v convert >/dev/null || { echo "make-images.sh: needs ImageMagick's convert" >&2; exit 2; }
 [ -x "$raylab" ] || { echo "make-images.sh: no raylab at $raylab (build it first)" >&2; exit 2; }
 
 # An implementation folder: solutions/ with one exercise file replaced.
-#   with_file NAME FILE   -> prints the folder; FILE's exercise is the part of
-#                            its name before "--" (mutants) or its whole name.
+#   with_file NAME FILE ID  -> prints the folder; FILE replaces exercise ID.
 with_file() {
-    local dir=$work/$1 file=$2
-    local id
-    id=$(basename "$file" .glsl)
-    id=${id%%--*}
+    local dir=$work/$1 file=$2 id=$3
     mkdir -p "$dir"
     cp "$root"/solutions/*.glsl "$dir"/
     cp "$file" "$dir/$id.glsl"
     echo "$dir"
 }
-stub() { with_file "stub-$1" "$(ls "$root"/exercises/"$1"-*.glsl)"; }
-mutant() { with_file "mutant-$1" "$root/tests/mutants/$1.glsl"; }
+unit_of() { basename "$(ls -d "$root"/course/"$1"-*/)"; }  # 05 -> 05-ggx
+stub() { local id; id=$(unit_of "$1"); with_file "stub-$1" "$root/course/$id/stub.glsl" "$id"; }
+mutant() { with_file "mutant-$1" "$root/course/${1%%--*}/mutants/${1#*--}.glsl" "${1%%--*}"; }
 
 render() { "$raylab" render "$@" >/dev/null; }
 lecture() { render "$root/scenes/lecture.json" --size 320x240 "$@"; }
@@ -136,3 +135,14 @@ lecture -o "$out/10-mistake-pow-gamma.png" --impl "$(mutant 10-display--pow-gamm
 lecture -o "$out/10-mistake-gamma-first.png" --impl "$(mutant 10-display--gamma-before-tonemap)"
 
 echo "make-images.sh: $(ls "$out"/*.png | wc -l) pictures in $out"
+
+# Each picture to its place: NN-*.png into its unit's images/, the rest here.
+for picture in "$out"/*.png; do
+    name=$(basename "$picture")
+    case "$name" in
+        [0-9][0-9]-*) dest="$root/course/$(unit_of "${name:0:2}")/images" ;;
+        *) dest="$here" ;;
+    esac
+    mkdir -p "$dest"
+    mv -f "$picture" "$dest/$name"
+done

@@ -1,0 +1,19 @@
+// alternative of: 06-geometry
+// written as: G as one fraction: NoV NoL / ((NoV (1 - k) + k)(NoL (1 - k) + k))
+// expected: PASS (a correct solution written differently)
+// Exercise 06: the Smith / Schlick-GGX geometry term. Handout: course/06-geometry/handout.md
+
+// Schlick-GGX masking for one direction x (Karis 2013, "Real Shading in
+// Unreal Engine 4"):  G1(x) = x / (x (1 - k) + k),  x = n.l or n.v.
+float G1_SchlickGGX(float NoX, float k) {
+    return NoX / (NoX * (1.0 - k) + k);
+}
+
+// Smith's separable form for direct light: G = G1(NoV) G1(NoL), with
+//     r = clamp(roughness, 0.045, 1),  k = (r + 1)^2 / 8
+// (k = alpha / 2 is the image-based-lighting remapping, not this one).
+float G_SchlickGGX(float NoV, float NoL, float roughness) {
+    float r = clamp(roughness, 0.045, 1.0);
+    float k = (r + 1.0) * (r + 1.0) / 8.0;
+    return NoV * NoL / ((NoV * (1.0 - k) + k) * (NoL * (1.0 - k) + k));
+}

@@ -1,0 +1,238 @@
+// The course as an instructor adapts it (issue 21), followed word for word in
+// a scratch copy of the repository that is then built as the documents say
+// (scripts/build.sh; ccache, which every build uses where it is installed,
+// makes that a rebuild of what differs):
+//
+//   Course.AddingAnExercise: docs/instructor.md, "Adding an exercise". Every
+//     file that section shows (a "#### `PATH`" heading and the code block
+//     under it) is written where it says, the manifest gets its line, and the
+//     section's commands run as they are written. The new exercise is NOT
+//     STARTED, its solution PASSes, its mutant FAILs with the unit's own
+//     hint, the picture with its stub shows the stripes, the default rubric
+//     grades it in a column of its own, and the browser page's build takes
+//     its unit.
+//   Course.ACourseOfNine: "The course manifest": one line taken out of
+//     course/manifest.txt, and the course of nine runs end to end: built, the
+//     solutions pass nine of nine, the stubs are nine times NOT STARTED, the
+//     grade has nine columns, and the picture is byte for byte the course of
+//     ten's (the unit's solution is framework code now).
+#include "core/image.h"
+#include "core/paths.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace rl;
+
+namespace {
+
+std::string quoted(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// A copy of the instructor's repository: what git tracks or would add, from
+// the working tree, and solutions/ (the build writes it). Under this build's
+// folder, so that its own build/ is as deep below it as this build is below
+// the source (ccache then finds this build's objects).
+fs::path repositoryCopy(const std::string& name) {
+    fs::path copy = fs::path(RAYLAB_BUILD_DIR) / "course-walk" / name;
+    std::error_code ec;
+    fs::remove_all(copy, ec);
+    fs::create_directories(copy);
+    test::CommandResult files = test::runShell("git -C " + quoted(sourceRoot().string()) +
+                                               " ls-files --cached --others --exclude-standard");
+    if (files.status != 0) throw std::runtime_error("git ls-files: " + files.output);
+    std::istringstream in(files.output);
+    for (std::string rel; std::getline(in, rel);) {
+        fs::path from = sourceRoot() / rel;
+        if (!fs::is_regular_file(from, ec)) continue;  // deleted in the working tree
+        fs::create_directories((copy / rel).parent_path());
+        fs::copy_file(from, copy / rel, fs::copy_options::overwrite_existing);
+        fs::permissions(copy / rel, fs::status(from).permissions());
+    }
+    return copy;
+}
+
+// The text of a section of a Markdown page: from its "## " heading to the next.
+std::string section(const std::string& page, const std::string& heading) {
+    std::size_t at = page.find("\n" + heading + "\n");
+    if (at == std::string::npos) return "";
+    std::size_t end = page.find("\n## ", at + heading.size() + 2);
+    return page.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
+}
+
+struct DocFile {
+    std::string path;
+    bool append = false;  // "(one line at the end)"
+    std::string text;
+};
+
+// Every "#### `PATH`" heading of the section and the fenced block under it.
+std::vector<DocFile> filesOf(const std::string& text) {
+    std::vector<DocFile> out;
+    std::istringstream in(text);
+    std::string line;
+    const std::regex heading(R"(^#### `([^`]+)`( \(one line at the end\))?$)");
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (!std::regex_match(line, m, heading)) continue;
+        DocFile f{m[1], m[2].matched, ""};
+        while (std::getline(in, line) && line.rfind("```", 0) != 0) {}
+        while (std::getline(in, line) && line != "```") f.text += line + "\n";
+        out.push_back(f);
+    }
+    return out;
+}
+
+// The command lines of the section's ```sh blocks, in order.
+std::vector<std::string> commandsOf(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    std::string line;
+    bool inside = false;
+    while (std::getline(in, line)) {
+        if (line == "```sh") inside = true;
+        else if (line == "```") inside = false;
+        else if (inside && !line.empty()) out.push_back(line);
+    }
+    return out;
+}
+
+test::CommandResult runIn(const fs::path& dir, const std::string& command) {
+    return test::runShell("cd " + quoted(dir.string()) + " && " + command);
+}
+
+// A class of one student whose folder is `impl`'s files: the grade's CSV header.
+std::string gradeColumns(const fs::path& repo, const fs::path& impl) {
+    fs::path cls = repo / "class";
+    fs::create_directories(cls / "alice");
+    for (const auto& e : fs::directory_iterator(impl)) fs::copy_file(e.path(), cls / "alice" / e.path().filename());
+    test::CommandResult r = runIn(repo, "./raylab grade class -o grades --jobs 2");
+    EXPECT_EQ(r.status, 0) << r.output;
+    std::ifstream csv(repo / "grades" / "grades.csv");
+    std::string header;
+    std::getline(csv, header);
+    return header;
+}
+
+int count(const std::string& text, const std::string& what) {
+    int n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(Course, AddingAnExercise) {
+    const std::string page = test::readText(sourceRoot() / "docs" / "instructor.md");
+    const std::string text = section(page, "## Adding an exercise");
+    ASSERT_FALSE(text.empty()) << "docs/instructor.md has no section \"## Adding an exercise\"";
+    std::vector<DocFile> files = filesOf(text);
+    ASSERT_GE(files.size(), 7u) << "the section shows the unit's files under \"#### `PATH`\" headings";
+
+    fs::path repo = repositoryCopy("adding");
+    for (const DocFile& f : files) {
+        EXPECT_TRUE(f.path.rfind("course/", 0) == 0) << f.path << ": the section edits a file outside course/";
+        EXPECT_TRUE(f.path.rfind("course/11-hemisphere/", 0) == 0 || f.path == "course/manifest.txt") << f.path;
+        fs::create_directories((repo / f.path).parent_path());
+        std::ofstream out(repo / f.path, f.append ? std::ios::app : std::ios::trunc);
+        out << f.text;
+    }
+
+    // The section's commands, as written; the first builds the copy.
+    std::vector<std::string> commands = commandsOf(text);
+    ASSERT_EQ(commands.size(), 7u) << "the commands of the section changed: follow them here too";
+    std::vector<test::CommandResult> results;
+    for (const std::string& c : commands) results.push_back(runIn(repo, c));
+    ASSERT_EQ(commands[0], "scripts/build.sh");
+    ASSERT_EQ(results[0].status, 0) << results[0].output;
+
+    EXPECT_EQ(commands[1], "./raylab check --exercise 11");
+    EXPECT_EQ(results[1].status, 1) << results[1].output;
+    EXPECT_TRUE(std::regex_search(results[1].output, std::regex("11-hemisphere +NOT STARTED"))) << results[1].output;
+    EXPECT_NE(results[1].output.find("course/11-hemisphere/stub.glsl"), std::string::npos) << results[1].output;
+
+    EXPECT_EQ(results[2].status, 0) << results[2].output;
+    EXPECT_TRUE(std::regex_search(results[2].output, std::regex("11-hemisphere +PASS"))) << results[2].output;
+
+    EXPECT_EQ(results[3].status, 1) << results[3].output;
+    EXPECT_TRUE(std::regex_search(results[3].output, std::regex("11-hemisphere +FAIL"))) << results[3].output;
+    EXPECT_NE(results[3].output.find("the blend weight is (1 + n.y) / 2, not n.y"), std::string::npos) << results[3].output;
+
+    // The stripes: the frame of the picture with the stub differs from the
+    // solutions' picture (a magenta tint in the stripes), its centre less so.
+    EXPECT_EQ(results[5].status, 0) << results[5].output;
+    EXPECT_EQ(results[6].status, 0) << results[6].output;
+    test::CommandResult full = runIn(repo, "./raylab render -o full.png");
+    ASSERT_EQ(full.status, 0) << full.output;
+    DisplayImage striped = readPng((repo / "stripes.png").string()), whole = readPng((repo / "full.png").string());
+    ASSERT_EQ(striped.width, whole.width);
+    int magenta = 0, frame = 0;
+    for (int y = 0; y < striped.height; ++y)
+        for (int x = 0; x < striped.width; ++x) {
+            bool edge = x < 6 || y < 6 || x >= striped.width - 6 || y >= striped.height - 6;
+            if (!edge) continue;
+            ++frame;
+            const std::uint8_t* s = striped.at(x, y);
+            const std::uint8_t* w = whole.at(x, y);
+            int dr = s[0] - w[0], dg = s[1] - w[1], db = s[2] - w[2];
+            magenta += dr > 12 && db > 12 && dg < dr;
+        }
+    EXPECT_GT(magenta, frame / 10) << "no stripes in the frame of the picture with 11's stub";
+
+    // A column of its own in the default rubric.
+    std::string header = gradeColumns(repo, repo / "solutions");
+    EXPECT_NE(header.find("11-hemisphere"), std::string::npos) << header;
+    // The browser page's build takes the unit (scripts/build-web.sh compiles
+    // what cmake/course.cmake lists; the page's tabs are the registry's).
+    test::CommandResult listed = runIn(repo, "cmake -DRAYLAB_ROOT_DIR=. -DRAYLAB_GENERATED_DIR=web-generated "
+                                              "-P cmake/course.cmake && cat web-generated/course_sources.txt");
+    EXPECT_EQ(listed.status, 0) << listed.output;
+    EXPECT_NE(listed.output.find("course/11-hemisphere/probes.cpp"), std::string::npos) << listed.output;
+}
+
+TEST(Course, ACourseOfNine) {
+    fs::path repo = repositoryCopy("nine");
+    const std::string page = test::readText(sourceRoot() / "docs" / "instructor.md");
+    ASSERT_NE(section(page, "## The course manifest: removing and reordering").find("**Remove**: delete the line"),
+              std::string::npos);
+    // The course of ten's picture, before the change.
+    test::CommandResult ten = test::runRaylab("render --size 96x72 -o " + (repo / "ten.png").string());
+    ASSERT_EQ(ten.status, 0) << ten.output;
+
+    std::string manifest = test::readText(repo / "course" / "manifest.txt");
+    std::size_t at = manifest.find("\n06-geometry\n");
+    ASSERT_NE(at, std::string::npos) << manifest;
+    manifest.erase(at + 1, std::string("06-geometry\n").size());
+    test::writeText(repo / "course" / "manifest.txt", manifest);
+
+    test::CommandResult build = runIn(repo, "scripts/build.sh");
+    ASSERT_EQ(build.status, 0) << build.output;
+    test::CommandResult solutions = runIn(repo, "./raylab check --impl solutions");
+    EXPECT_EQ(solutions.status, 0) << solutions.output;
+    EXPECT_NE(solutions.output.find("9 of 9 exercises pass"), std::string::npos) << solutions.output;
+    EXPECT_EQ(solutions.output.find("06-geometry"), std::string::npos) << solutions.output;
+    test::CommandResult stubs = runIn(repo, "./raylab check");
+    EXPECT_EQ(stubs.status, 1) << stubs.output;
+    EXPECT_EQ(count(stubs.output, "NOT STARTED"), 9) << stubs.output;
+
+    std::string header = gradeColumns(repo, repo / "solutions");
+    EXPECT_EQ(header.find("06-geometry"), std::string::npos) << header;
+    EXPECT_NE(header.find("05-ggx"), std::string::npos) << header;
+    EXPECT_NE(header.find("07-fresnel"), std::string::npos) << header;
+
+    test::CommandResult nine = runIn(repo, "./raylab render --size 96x72 -o nine.png");
+    ASSERT_EQ(nine.status, 0) << nine.output;
+    EXPECT_EQ(test::readText(repo / "ten.png"), test::readText(repo / "nine.png"))
+        << "the picture changed when 06 left the course (its solution is framework code now)";
+}
