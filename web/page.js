@@ -123,6 +123,32 @@ function showHandout(exercise) {
   $('handout').innerHTML = handout ? handout.html : '';
   $('handout').dataset.exercise = exercise.id;
   $('handout-pane').scrollTop = 0;
+  // The handout's command lines that the page has as buttons get one beside them.
+  for (const code of $('handout').querySelectorAll('code')) {
+    const text = code.textContent.trim();
+    const checkCommand = text.match(/^\.\/raylab check --exercise (\d+)$/);
+    const view = text.match(/^\.\/raylab render .*--view (\w+)/);
+    const option = view && [...$('view').options].find((o) => o.value === view[1]);
+    if (!checkCommand && !option) continue;
+    const button = document.createElement('button');
+    button.className = 'in-page';
+    if (checkCommand) {
+      button.textContent = 'Check this exercise';
+      button.title = 'In this page: what ' + text + ' does';
+      button.onclick = () => runCheckOf(Number(checkCommand[1]));
+    } else {
+      button.textContent = 'Show the ' + option.textContent + ' view';
+      button.title = 'In this page: the View menu beside the picture';
+      button.onclick = () => { $('view').value = option.value; drawLive(); };
+    }
+    const where = code.parentElement.tagName === 'PRE' ? code.parentElement : code;
+    where.insertAdjacentElement('afterend', button);
+  }
+}
+function runCheckOf(number) {
+  const exercise = state.exercises.find((e) => e.number === number);
+  if (exercise && exercise.file !== state.current) showFile(exercise.file);
+  return check([number]);
 }
 function wireHandout() {
   $('toggle-handout').onclick = () => document.body.classList.toggle('no-handout');
@@ -386,7 +412,7 @@ async function start() {
   });
   $('revert').onclick = () => { if (confirm('Replace ' + state.current + ' with the stub?')) state.editor.setValue(pageStub(state.current)); };
   $('check-all').onclick = () => check();
-  $('check-one').onclick = () => check([state.exercises.find((e) => e.file === state.current).number]);
+  $('check-one').onclick = () => runCheckOf(state.exercises.find((e) => e.file === state.current).number);
   $('download').onclick = download;
   $('scene').onchange = setScene;
   $('view').onchange = drawLive;

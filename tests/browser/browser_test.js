@@ -210,8 +210,8 @@ const cases = {
     page.on('dialog', (d) => d.accept());  // "Back to the stub" asks first
     const mark = (file) => page.$eval('#tabs button[data-file="' + file + '"]', (b) => [b.dataset.status, b.lastChild.textContent]);
     const setEditor = (text) => page.evaluate((t) => window.raylab.state.editor.setValue(t), text);
-    const checkHere = async () => {
-      await page.click('#check-one');
+    const checkHere = async (button = '#check-one') => {
+      await page.click(button);
       await page.waitForFunction(() => /exercises? pass/.test(document.getElementById('check-text').textContent),
                                  null, {timeout: 120000});
       return page.$eval('#check-text', (e) => e.textContent);
@@ -238,7 +238,11 @@ const cases = {
     const camera = await page.evaluate(() => window.raylab.state.files['01-camera.glsl']);
     expect(!/build\/bin\/raylab|\.\/raylab/.test(camera) && camera.includes('the "Check this exercise" button'),
            '01-camera stub in the page still names a command line');
-    let text = await checkHere();
+    // The handout's "./raylab check --exercise 5" has the page's button beside it.
+    const inPage = await page.$$eval('#handout button.in-page', (b) => b.map((x) => x.textContent));
+    expect(inPage.includes('Check this exercise') && inPage.some((t) => /^Show the D .* view$/.test(t)),
+           'the handout\'s commands as buttons: ' + inPage);
+    let text = await checkHere('#handout button.in-page >> text="Check this exercise"');
     expect(/05-ggx +NOT STARTED/.test(text) && text.includes('(the handout beside the editor)'), 'the stub: ' + text);
     expect((await mark('05-ggx.glsl'))[0] === 'NOT STARTED', 'mark of the stub: ' + await mark('05-ggx.glsl'));
     // Step 1, the formula of "What you write", as written.
