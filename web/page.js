@@ -86,7 +86,7 @@ function pageReportText(text) {
       .replace(/raylab render compiles the ten files/g, 'the picture beside the editor compiles the ten files')
       .replace(/^(\s+)expected +check-output\/\S+\n(?:\s+got +check-output\/\S+\n)?(?:\s+diff +check-output\/\S+\n)?/gm,
                '$1expected, got and difference: the pictures below\n')
-      .replace(/check-output\/\S+/g, 'the pictures below');
+      .replace(/check-output\/\S*/g, 'the pictures below');
 }
 
 function load(name) {
