@@ -820,6 +820,26 @@ TEST_F(LectureTest, RecordedGifHasAPaletteMadeFromTheClip) {
                 std::uintmax_t(nowBytes), now, std::uintmax_t(beforeBytes), before);
 }
 
+// A shorter clip into the folder of a longer one: the video has the new
+// clip's frames only (ffmpeg reads frame-%04d.png until a number is
+// missing, so the old clip's tail would run on).
+TEST_F(LectureTest, RecordIntoTheFolderOfALongerClipKeepsItsOwnFrames) {
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
+    for (const char* frames : {"4", "2"}) {
+        RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", frames,
+                                 "--no-captions"},
+                                env, dir.path());
+        ASSERT_EQ(r.status, 0) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "clip" / "frame-0002.png"));
+    RunResult probe = Process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                               "stream=nb_read_frames", "-of", "csv=p=0", (dir / "clip" / "record.mp4").string()},
+                              env, dir.path())
+                          .wait(std::chrono::seconds(60));
+    ASSERT_EQ(probe.status, 0) << probe.err;
+    EXPECT_EQ(probe.out.substr(0, probe.out.find('\n')), "2");
+}
+
 // Without ffmpeg: the frames, one line saying what to install, exit 1, and
 // an earlier record.gif is left as it was.
 TEST_F(LectureTest, RecordWithoutFfmpegSaysWhatToInstall) {
