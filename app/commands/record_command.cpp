@@ -96,11 +96,13 @@ std::string megabytes(double bytes) {
 }
 
 // One line, before the first frame is rendered.
-std::string sizeEstimate(const RecordOptions& o, int width, int height) {
+std::string sizeEstimate(const RecordOptions& o, int width, int height, bool haveFfmpeg) {
     const double pixels = double(width) * height;
-    return "raylab: recording " + std::to_string(o.frames) + " frames of " + std::to_string(width) + "x" +
-           std::to_string(height) + ": about " + megabytes(kPngBytesPerPixel * pixels * o.frames) +
-           " of PNG frames and a GIF of about " + megabytes(kGifBytesPerPixel * pixels * gifFrames(o)) + " (" +
+    const std::string frames = "raylab: recording " + std::to_string(o.frames) + " frames of " + std::to_string(width) +
+                               "x" + std::to_string(height) + ": about " +
+                               megabytes(kPngBytesPerPixel * pixels * o.frames) + " of PNG frames";
+    if (!haveFfmpeg) return frames + ", no video (ffmpeg is not installed)\n";
+    return frames + " and a GIF of about " + megabytes(kGifBytesPerPixel * pixels * gifFrames(o)) + " (" +
            std::to_string(gifFrames(o)) + " frames at " + std::to_string(std::min(o.gifFps, o.fps)) + " fps)\n";
 }
 
@@ -147,7 +149,7 @@ void runRecord(const RecordOptions& o) {
     Implementation impl{o.impl.empty() ? defaultImplementationDir() : fs::path(o.impl), {}};
     if (!fs::is_directory(impl.dir)) throw Error("--impl: " + impl.dir.string() + " is not a directory");
     fs::create_directories(o.out);
-    std::cout << sizeEstimate(o, scene.render.width, scene.render.height) << std::flush;
+    std::cout << sizeEstimate(o, scene.render.width, scene.render.height, onPath("ffmpeg")) << std::flush;
 
     auto context = createHeadlessContext(Backend::Auto);
     // The generic program: a sweep changes values that specialisation compiles in.
