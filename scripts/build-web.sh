@@ -20,6 +20,12 @@ OUT=${RAYLAB_WEB_BUILD:-$ROOT/build-web}
 # check takes as long with either (bound by the GPU's shader compiler).
 OPT=${RAYLAB_WEB_OPT:--O2}
 JOBS=${RAYLAB_WEB_JOBS:-2}
+# The handouts shown beside the editor, one per exercise: the first of these
+# patterns that matches any file gives the list (course/NN-name/handout.md
+# once the course units exist, docs/exercises/NN-name.md before). The one
+# place to change when handouts move; the list is written to
+# $OUT/generated/handouts.txt and web/make_page.js renders what it names.
+HANDOUT_PATTERNS=${RAYLAB_WEB_HANDOUTS:-"course/[0-9][0-9]-*/handout.md docs/exercises/[0-9][0-9]-*.md"}
 
 if ! command -v em++ >/dev/null 2>&1; then
     echo "scripts/build-web.sh: em++ not found; install it with: scripts/setup.sh --web" >&2
@@ -122,5 +128,20 @@ em++ $OPT -fexceptions --bind $OBJECTS -o "$OUT/raylab.js" \
     --embed-file scenes/metal-row-reflections.json@/raylab/scenes/metal-row-reflections.json \
     --embed-file scenes/lecture.json@/raylab/scenes/lecture.json
 
-node web/make_page.js "$OUT/raylab.js" "$OUT/raylab-web.html"
+HANDOUTS=""
+set -f  # the patterns split into words here, expanded one at a time below
+for pattern in $HANDOUT_PATTERNS; do
+    set +f
+    # shellcheck disable=SC2086
+    HANDOUTS=$(ls -1 $pattern 2>/dev/null || true)
+    set -f
+    if [ -n "$HANDOUTS" ]; then break; fi
+done
+set +f
+if [ -z "$HANDOUTS" ]; then
+    echo "scripts/build-web.sh: no handout found (looked for: $HANDOUT_PATTERNS)" >&2
+    exit 1
+fi
+printf '%s\n' "$HANDOUTS" > "$OUT/generated/handouts.txt"
+node web/make_page.js "$OUT/raylab.js" "$OUT/raylab-web.html" "$OUT/generated/handouts.txt"
 echo "$OUT/raylab-web.html"

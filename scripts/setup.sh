@@ -5,7 +5,7 @@
 #   scripts/setup.sh --window   also the window/report test tools (Xvfb, Chromium, ffmpeg)
 #   scripts/setup.sh --slurm    also Slurm and MUNGE, for the test of the Slurm recipe (test extra)
 #   scripts/setup.sh --web      also emscripten, Chromium and web/'s npm packages (CodeMirror,
-#                               playwright-core) for the browser edition (scripts/build-web.sh)
+#                               markdown-it, KaTeX, playwright-core) for the browser edition (scripts/build-web.sh)
 set -euo pipefail
 
 packages=(

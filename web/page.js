@@ -43,18 +43,59 @@ class RaylabWorker {
 }
 
 // ---- state ----------------------------------------------------------------------------------
-const state = {exercises: [], stubs: {}, files: {}, current: null, editor: null, context: ''};
+const state = {exercises: [], stubs: {}, files: {}, current: null, editor: null, context: '',
+               verdicts: {}};  // file -> Map(text -> the status a check gave that text)
 let checker = null;   // the check Worker (replaced after a timeout)
 let painter = null;   // the live picture's Worker
 const $ = (id) => document.getElementById(id);
 const setStatus = (text) => { $('status').textContent = text; };
 
+// ---- the page's words for the native program's ----------------------------------------------
+// A handout's path (docs/exercises/05-ggx.md, course/05-ggx/handout.md).
+const HANDOUT_PATH = /\b(?:docs\/exercises\/(\d\d-[a-z-]+)\.md|course\/(\d\d-[a-z-]+)\/handout\.md)\b/g;
+// The stub as the page shows it: its comments speak of the page (the
+// handout beside the editor, the Check button), not of command lines. Same
+// lines, so that line numbers in messages are the editor's.
+function pageStub(name) {
+  return state.stubs[name].split('\n').map((line) => {
+    const comment = line.indexOf('//');
+    if (comment < 0) return line;
+    let text = line.slice(comment);
+    text = text.replace(/Handout: \S+\.md/, 'Handout: beside this editor');
+    text = text.replace(/(?:\S*\/)?raylab check(?: --exercise \d+)?/, 'the "Check this exercise" button');
+    return line.slice(0, comment) + text;
+  }).join('\n');
+}
+// What the checker, the picture and the download get: the page's stub is
+// the shipped stub (so an untouched file is NOT STARTED as "the unchanged
+// stub", natively and by raylab grade).
+function repositoryText(name, text) {
+  return text === pageStub(name) ? state.stubs[name] : text;
+}
+function repositoryFiles() {
+  const out = {};
+  for (const [name, text] of Object.entries(state.files)) out[name] = repositoryText(name, text);
+  return out;
+}
+// A check's text as the page shows it: the handouts are beside the editor,
+// the pictures below (there is no check-output/ folder in a browser).
+function pageReportText(text) {
+  return text
+      .replace(/the handout: /g, 'the handout ')
+      .replace(HANDOUT_PATH, (all, a, b) => '"' + (a || b) + '" (the handout beside the editor)')
+      .replace(/raylab render compiles the ten files/g, 'the picture beside the editor compiles the ten files')
+      .replace(/^(\s+)expected +check-output\/\S+\n(?:\s+got +check-output\/\S+\n)?(?:\s+diff +check-output\/\S+\n)?/gm,
+               '$1expected, got and difference: the pictures below\n')
+      .replace(/check-output\/\S*/g, 'the pictures below');
+}
+
 function load(name) {
+  let text = state.stubs[name];
   try {
     const saved = localStorage.getItem(STORAGE_PREFIX + name);
-    if (saved !== null) return saved;
+    if (saved !== null) text = saved;
   } catch (e) { /* storage refused (private mode): the stub */ }
-  return state.stubs[name];
+  return text === state.stubs[name] ? pageStub(name) : text;
 }
 function save(name, text) {
   state.files[name] = text;
@@ -72,25 +113,94 @@ function showFile(name) {
   state.editor.setValue(state.files[name]);
   state.editor.clearHistory();
   for (const b of $('tabs').children) b.classList.toggle('active', b.dataset.file === name);
+  showHandout(state.exercises.find((e) => e.file === name));
+}
+// The exercise's handout beside the editor (rendered at build time, web/handouts.js).
+function showHandout(exercise) {
+  const handout = (typeof RAYLAB_HANDOUTS !== 'undefined' ? RAYLAB_HANDOUTS : {})[exercise.id];
+  $('handout-title').textContent = handout ? 'Handout: ' + handout.title : 'No handout for ' + exercise.file;
+  $('handout-title').title = handout ? handout.path + ' in the raylab repository' : '';
+  $('handout').innerHTML = handout ? handout.html : '';
+  $('handout').dataset.exercise = exercise.id;
+  $('handout-pane').scrollTop = 0;
+  // The handout's command lines that the page has as buttons get one beside them.
+  for (const code of $('handout').querySelectorAll('code')) {
+    const text = code.textContent.trim();
+    const checkCommand = text.match(/^\.\/raylab check --exercise (\d+)$/);
+    const view = text.match(/^\.\/raylab render .*--view (\w+)/);
+    const option = view && [...$('view').options].find((o) => o.value === view[1]);
+    if (!checkCommand && !option) continue;
+    const button = document.createElement('button');
+    button.className = 'in-page';
+    if (checkCommand) {
+      button.textContent = 'Check this exercise';
+      button.title = 'In this page: what ' + text + ' does';
+      button.onclick = () => runCheckOf(Number(checkCommand[1]));
+    } else {
+      button.textContent = 'Show the ' + option.textContent + ' view';
+      button.title = 'In this page: the View menu beside the picture';
+      button.onclick = () => { $('view').value = option.value; drawLive(); };
+    }
+    const where = code.parentElement.tagName === 'PRE' ? code.parentElement : code;
+    where.insertAdjacentElement('afterend', button);
+  }
+}
+function runCheckOf(number) {
+  const exercise = state.exercises.find((e) => e.number === number);
+  if (exercise && exercise.file !== state.current) showFile(exercise.file);
+  return check([number]);
+}
+function wireHandout() {
+  $('toggle-handout').onclick = () => document.body.classList.toggle('no-handout');
+  $('handout').addEventListener('click', (event) => {
+    const link = event.target.closest('a');
+    if (!link) return;
+    if (link.dataset.handout) {  // another exercise's handout: its tab
+      event.preventDefault();
+      const exercise = state.exercises.find((e) => e.id === link.dataset.handout);
+      if (exercise) showFile(exercise.file);
+    } else if (link.classList.contains('repo-link')) {
+      event.preventDefault();  // a file of the repository, not in the page (its path is the title)
+    }
+  });
 }
 function buildTabs() {
   for (const e of state.exercises) {
     const b = document.createElement('button');
     b.dataset.file = e.file;
-    b.title = e.title + ' (' + e.handout + ')';
+    b.title = e.title + ' (its handout opens beside the editor)';
     b.innerHTML = '<span></span><span class="mark"></span>';
     b.firstChild.textContent = e.file;
     b.onclick = () => showFile(e.file);
     $('tabs').appendChild(b);
   }
 }
-function markTab(file, status) {
+// A tab's mark is the verdict of the file as it is now: the last check of
+// this very text, or none (a dot) when the text has not been checked. A file
+// put back to a text that passed is ✓ again, one put back to the stub loses
+// its mark.
+function recordVerdict(file, text, status) {
+  if (!state.verdicts[file]) state.verdicts[file] = new Map();
+  const known = state.verdicts[file];
+  known.delete(text);
+  known.set(text, status);
+  if (known.size > 50) known.delete(known.keys().next().value);  // the oldest
+}
+function markTab(file) {
+  const text = state.files[file];
+  const known = state.verdicts[file];
+  let status = known && known.has(text) ? known.get(text) : null;
+  if (status === null && repositoryText(file, text) === state.stubs[file]) status = 'NOT STARTED';
   for (const b of $('tabs').children)
     if (b.dataset.file === file) {
-      b.lastChild.textContent = status === 'PASS' ? '✓' : status === 'NOT STARTED' ? '' : '✗';
-      b.lastChild.className = 'mark ' + status;
+      const mark = b.lastChild;
+      mark.textContent = status === null ? '•' : status === 'PASS' ? '✓' : status === 'NOT STARTED' ? '' : '✗';
+      mark.className = 'mark ' + (status === null ? 'changed' : status);
+      mark.title = status === null ? 'changed since the last check' : status;
+      b.dataset.status = status === null ? 'changed' : status;
     }
 }
+function markAllTabs() { for (const e of state.exercises) markTab(e.file); }
 
 // ---- check ----------------------------------------------------------------------------------
 function timeoutReport(exercise) {
@@ -113,9 +223,12 @@ function showImages(images) {
     const fig = document.createElement('figure');
     const img = document.createElement('img');
     img.src = URL.createObjectURL(new Blob([bytes], {type: 'image/png'}));
-    img.alt = path;
+    // check-output/05-ggx/metal-row-diff.png: "metal-row: diff" (no such folder in a browser)
+    const caption = path.replace(/^.*\//, '').replace(/\.png$/, '').replace(/-(expected|got|diff)$/, ': $1');
+    img.alt = caption;
+    img.dataset.path = path;
     fig.appendChild(img);
-    fig.appendChild(document.createTextNode(path));
+    fig.appendChild(document.createTextNode(caption));
     $('check-images').appendChild(fig);
   }
 }
@@ -131,7 +244,9 @@ async function check(numbers) {
   for (const number of numbers) {
     const exercise = state.exercises.find((e) => e.number === number);
     setStatus('checking ' + exercise.file + '…');
-    const call = checker.call('check', {files: state.files, exercises: [number]},
+    const sent = repositoryFiles();
+    const checked = state.files[exercise.file];  // the text this verdict is for (the editor may change meanwhile)
+    const call = checker.call('check', {files: sent, exercises: [number]},
         (msg) => showImages(msg.images));
     const result = await withTimeout(call.catch((e) => ({error: e})), CHECK_TIMEOUT_SECONDS);
     let report;
@@ -147,18 +262,19 @@ async function check(numbers) {
       report = result.reports[0];
     }
     reports.push(report);
-    markTab(exercise.file, report.status);
-    $('check-text').textContent += report.text;
+    recordVerdict(exercise.file, checked, report.status);
+    markTab(exercise.file);
+    $('check-text').textContent += pageReportText(report.text);
   }
   const has = (s) => reports.some((r) => r.status === s);
   let together = null;
   if (numbers.length === state.exercises.length && (has('PASS') || has('FAIL')) &&
       !has('COMPILE ERROR') && !has('TIMEOUT') && !has('CRASH')) {
-    const result = await withTimeout(checker.call('together', {files: state.files}), CHECK_TIMEOUT_SECONDS);
+    const result = await withTimeout(checker.call('together', {files: repositoryFiles()}), CHECK_TIMEOUT_SECONDS);
     together = result === 'timeout' ? null : result.together;
   }
   const togetherOk = !together || together.status === 'PASS';
-  if (!togetherOk) $('check-text').textContent += together.text;
+  if (!togetherOk) $('check-text').textContent += pageReportText(together.text);
   const passed = reports.filter((r) => r.status === 'PASS').length;
   const seconds = Math.round((performance.now() - started) / 1000);
   const summary = passed + ' of ' + reports.length + ' exercises pass' +
@@ -189,7 +305,7 @@ async function drawLive() {
   }
 }
 async function compileLive() {
-  const r = await painter.call('liveCompile', {files: state.files});
+  const r = await painter.call('liveCompile', {files: repositoryFiles()});
   $('live-error').textContent = r.error;
   await drawLive();
   return r.error;
@@ -263,7 +379,7 @@ function makeZip(entries) {
 }
 function exercisesZip() {
   const encoder = new TextEncoder();
-  return makeZip(state.exercises.map((e) => ['exercises/' + e.file, encoder.encode(state.files[e.file])]));
+  return makeZip(state.exercises.map((e) => ['exercises/' + e.file, encoder.encode(repositoryText(e.file, state.files[e.file]))]));
 }
 function download() {
   const a = document.createElement('a');
@@ -284,16 +400,19 @@ async function start() {
   state.editor = CodeMirror($('editor'), {mode: 'x-shader/x-fragment', lineNumbers: true, indentUnit: 4,
                                           matchBrackets: true, value: ''});
   buildTabs();
+  wireHandout();
   showFile(state.exercises[0].file);
+  markAllTabs();
   let recompile = null;
   state.editor.on('change', () => {
     save(state.current, state.editor.getValue());
+    markTab(state.current);
     clearTimeout(recompile);
     recompile = setTimeout(compileLive, 400);  // the live view's hot reload
   });
-  $('revert').onclick = () => { if (confirm('Replace ' + state.current + ' with the stub?')) state.editor.setValue(state.stubs[state.current]); };
+  $('revert').onclick = () => { if (confirm('Replace ' + state.current + ' with the stub?')) state.editor.setValue(pageStub(state.current)); };
   $('check-all').onclick = () => check();
-  $('check-one').onclick = () => check([state.exercises.find((e) => e.file === state.current).number]);
+  $('check-one').onclick = () => runCheckOf(state.exercises.find((e) => e.file === state.current).number);
   $('download').onclick = download;
   $('scene').onchange = setScene;
   $('view').onchange = drawLive;
@@ -309,7 +428,8 @@ async function start() {
 // What the tests drive (tests/browser/): the same functions as the buttons.
 window.raylab = {
   state, check, compileLive, exercisesZip,
-  setFile(name, text) { if (state.current === name) state.editor.setValue(text); else save(name, text); },
+  setFile(name, text) { if (state.current === name) state.editor.setValue(text); else { save(name, text); markTab(name); } },
+  pageStub, pageReportText, showFile,
   compareLive: () => painter.call('compareLive'),
   liveFrame: () => painter.call('liveFrame', {view: $('view').value}),
 };

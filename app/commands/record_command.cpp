@@ -2,9 +2,11 @@
 //               [--sweep exposure|roughness|metallic:FROM:TO] [--view NAME] [--impl DIR]
 //               [--no-captions] [--ui-scale S]
 // Renders a scripted turntable orbit or a slider sweep offline, headless, at
-// full resolution, into DIR/frame-0000.png ...; where ffmpeg is installed,
-// also DIR/record.mp4 and DIR/record.gif. A slow laptop still gives a smooth
-// clip for the lecture. Each frame carries the live view's caption and colour
+// full resolution, into DIR/frame-0000.png ..., then DIR/record.mp4 and a
+// palette-optimised DIR/record.gif with ffmpeg (without ffmpeg: the frames,
+// one line saying what to install, exit 1). A slow laptop still gives a
+// smooth clip for the lecture. The GIF and PNG sizes are estimated before
+// the first frame is rendered. Each frame carries the live view's caption and colour
 // bar (view/caption_layer.h), drawn into the picture before it is read back;
 // --no-captions leaves them out. docs/lecture.md, "Recording".
 // Built with the window library (it shares the view's caption layer), so it
@@ -25,6 +27,7 @@
 #include "view/caption_layer.h"
 #include "view/view_caption.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -49,6 +52,7 @@ struct RecordOptions {
     std::string view = "final";
     std::string impl;
     int fps = 30;
+    int gifFps = 15;          // the GIF's frame rate (at most --fps): every other frame of a 30 fps clip
     bool noCaptions = false;  // leave the caption and colour bar out
     float uiScale = 0;        // caption size; 0 = the frame height / 720 (at least 1), as a projector at 1080p gets 1.5
 };
@@ -67,6 +71,57 @@ bool onPath(const std::string& program) {
         start = end + 1;
     }
     return false;
+}
+
+// Bytes per pixel of one frame, measured on the 120-frame 1280x720 orbit of
+// the lecture scene (docs/lecture.md, "Recording"): the GIF 4,938,248 bytes
+// for 60 frames (0.089), the PNG frames 21.9 MB for 120 (0.198). A sweep
+// changes less of the picture than an orbit and gives smaller GIFs; the
+// estimate is for the worst case the docs show.
+constexpr double kGifBytesPerPixel = 0.09;
+constexpr double kPngBytesPerPixel = 0.2;
+
+int gifFrames(const RecordOptions& o) {
+    if (o.gifFps >= o.fps) return o.frames;
+    return std::max(1, int(std::lround(double(o.frames) * o.gifFps / o.fps)));
+}
+
+std::string megabytes(double bytes) {
+    char text[32];
+    if (bytes < 1e6)
+        std::snprintf(text, sizeof text, "%.0f kB", std::max(1.0, bytes / 1e3));
+    else
+        std::snprintf(text, sizeof text, "%.1f MB", bytes / 1e6);
+    return text;
+}
+
+// One line, before the first frame is rendered.
+std::string sizeEstimate(const RecordOptions& o, int width, int height, bool haveFfmpeg) {
+    const double pixels = double(width) * height;
+    const std::string frames = "raylab: recording " + std::to_string(o.frames) + " frames of " + std::to_string(width) +
+                               "x" + std::to_string(height) + ": about " +
+                               megabytes(kPngBytesPerPixel * pixels * o.frames) + " of PNG frames";
+    if (!haveFfmpeg) return frames + ", no video (ffmpeg is not installed)\n";
+    return frames + " and a GIF of about " + megabytes(kGifBytesPerPixel * pixels * gifFrames(o)) + " (" +
+           std::to_string(gifFrames(o)) + " frames at " + std::to_string(std::min(o.gifFps, o.fps)) + " fps)\n";
+}
+
+// ffmpeg ARGS into DIR/NAME, through DIR/NAME.part: an earlier file of that
+// name stays until the new one is complete.
+void encode(const std::string& dir, const std::string& name, const std::string& format, std::vector<std::string> args) {
+    const fs::path file = fs::path(dir) / name, part = fs::path(dir) / (name + ".part");
+    args.insert(args.begin(), {"ffmpeg", "-nostdin", "-loglevel", "error", "-y"});
+    args.insert(args.end(), {"-f", format, part.string()});
+    if (!run(args)) {
+        std::error_code ec;
+        fs::remove(part, ec);
+        throw Error("ffmpeg could not write " + file.string() + " (its message is above)");
+    }
+    fs::rename(part, file);
+    std::error_code ec;
+    const auto bytes = fs::file_size(file, ec);
+    std::cout << fs::absolute(file).lexically_normal().string() << " (" << megabytes(ec ? 0.0 : double(bytes))
+              << ")\n";
 }
 
 void runRecord(const RecordOptions& o) {
@@ -94,6 +149,7 @@ void runRecord(const RecordOptions& o) {
     Implementation impl{o.impl.empty() ? defaultImplementationDir() : fs::path(o.impl), {}};
     if (!fs::is_directory(impl.dir)) throw Error("--impl: " + impl.dir.string() + " is not a directory");
     fs::create_directories(o.out);
+    std::cout << sizeEstimate(o, scene.render.width, scene.render.height, onPath("ffmpeg")) << std::flush;
 
     auto context = createHeadlessContext(Backend::Auto);
     // The generic program: a sweep changes values that specialisation compiles in.
@@ -141,22 +197,37 @@ void runRecord(const RecordOptions& o) {
         std::snprintf(name, sizeof name, "frame-%04d.png", k);
         writePng((fs::path(o.out) / name).string(), r.display);
     }
-    std::cout << fs::absolute(o.out).lexically_normal().string() << ": " << o.frames << " frames\n";
-    if (!onPath("ffmpeg")) {
-        std::cout << "raylab: ffmpeg not found: the image sequence only (apt-get install ffmpeg for a video)\n";
-        return;
+    // Frames past this clip's end, from a longer recording into the same
+    // folder, would run on in the video (ffmpeg reads frame-%04d.png until a
+    // number is missing): the folder's frames are this clip's.
+    for (int k = o.frames;; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%04d.png", k);
+        std::error_code ec;
+        if (!fs::remove(fs::path(o.out) / name, ec)) break;
     }
+    const std::string dir = fs::absolute(o.out).lexically_normal().string();
+    std::cout << dir << ": " << o.frames << " frames\n";
+    if (!onPath("ffmpeg"))
+        throw Error("ffmpeg not found: " + dir + "/frame-*.png are written, record.mp4 and record.gif are not "
+                    "(install ffmpeg: apt-get install ffmpeg, or scripts/setup.sh --window)");
     const std::string pattern = (fs::path(o.out) / "frame-%04d.png").string();
     const std::string fps = std::to_string(o.fps);
-    const std::string mp4 = (fs::path(o.out) / "record.mp4").string(), gif = (fs::path(o.out) / "record.gif").string();
     // yuv420p and even sizes: every player plays it.
-    if (run({"ffmpeg", "-loglevel", "error", "-y", "-framerate", fps, "-i", pattern, "-vf",
-             "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", mp4}))
-        std::cout << fs::absolute(mp4).lexically_normal().string() << "\n";
-    else
-        std::cerr << "raylab: warning: ffmpeg could not write " << mp4 << "\n";
-    if (run({"ffmpeg", "-loglevel", "error", "-y", "-framerate", fps, "-i", pattern, gif}))
-        std::cout << fs::absolute(gif).lexically_normal().string() << "\n";
+    encode(o.out, "record.mp4", "mp4",
+           {"-framerate", fps, "-i", pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"});
+    // One palette of 256 colours made from the whole clip (palettegen), the
+    // frames mapped onto it with an ordered dither (paletteuse): ffmpeg's
+    // default GIF uses a fixed palette with error diffusion, which both bands
+    // and compresses badly (the 120-frame 720p orbit of docs/lecture.md: 39.7 MB
+    // before, 4.9 MB now). Bayer scale 5 is the finest pattern and the
+    // smallest file; sierra2_4a dithering gave 11.4 MB, no dither 6.2 MB with
+    // visible bands on the spheres. Half the frame rate halves the size; the
+    // MP4 keeps every frame.
+    const std::string rate = o.gifFps < o.fps ? "fps=" + std::to_string(o.gifFps) + "," : "";
+    encode(o.out, "record.gif", "gif",
+           {"-framerate", fps, "-i", pattern, "-filter_complex",
+            "[0:v]" + rate + "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=5"});
 }
 
 }  // namespace
@@ -175,6 +246,9 @@ void addRecordCommand(CLI::App& app) {
     cmd->add_option("--view", o->view, "Teaching view, as raylab render --view")->capture_default_str();
     cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/; exercises/ where there is none)");
     cmd->add_option("--fps", o->fps, "Frame rate of the video")->check(CLI::Range(1, 120))->capture_default_str();
+    cmd->add_option("--gif-fps", o->gifFps, "Frame rate of the GIF, at most --fps (fewer frames, a smaller file)")
+        ->check(CLI::Range(1, 120))
+        ->capture_default_str();
     cmd->add_flag("--no-captions", o->noCaptions, "Frames without the caption and colour bar of the view");
     cmd->add_option("--ui-scale", o->uiScale, "Caption size (default: frame height / 720, at least 1)")
         ->check(CLI::Range(0.5, 4.0));

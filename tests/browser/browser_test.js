@@ -2,7 +2,7 @@
 // case a run, against the native checker (./raylab check) run in the same test.
 //   node tests/browser/browser_test.js BACKEND CASE PAGE RAYLAB
 // BACKEND: swiftshader (Chromium's CPU GL) | mesa (Mesa through ANGLE's GL-EGL)
-// CASE:    solutions | stubs | mutants | compile-error | storage | runaway
+// CASE:    solutions | stubs | mutants | compile-error | storage | runaway | handout
 // Exit 0 when every assertion holds; each failure is one line on stderr.
 // No network: every request other than file:, data: and blob: fails the test.
 'use strict';
@@ -206,6 +206,85 @@ const cases = {
     expect(status('03-lambert') && status('03-lambert').status === 'PASS', 'graded 03-lambert: ' + JSON.stringify(status('03-lambert')));
     expect(status('01-camera') && status('01-camera').status === 'NOT STARTED', 'graded 01-camera: ' + JSON.stringify(status('01-camera')));
     fs.rmSync(work, {recursive: true, force: true});
+  },
+  // Issue 26: the handout beside the exercise, followed in the page. The
+  // 05-ggx handout's steps: write D as "What you write" gives it (the
+  // textbook formula), check, read the verdict and hint, take the form the
+  // handout's "Hints" give (read from the page), check again. The tab's mark
+  // follows the file's current text; no check-output/ path is shown.
+  async handout(page) {
+    page.on('dialog', (d) => d.accept());  // "Back to the stub" asks first
+    const mark = (file) => page.$eval('#tabs button[data-file="' + file + '"]', (b) => [b.dataset.status, b.lastChild.textContent]);
+    const setEditor = (text) => page.evaluate((t) => window.raylab.state.editor.setValue(t), text);
+    const checkHere = async (button = '#check-one') => {
+      await page.click(button);
+      await page.waitForFunction(() => /exercises? pass/.test(document.getElementById('check-text').textContent),
+                                 null, {timeout: 120000});
+      return page.$eval('#check-text', (e) => e.textContent);
+    };
+    await page.click('#tabs button[data-file="05-ggx.glsl"]');
+    // The handout, beside the editor, with its formula and pictures.
+    const pane = await page.$eval('#handout-pane', (e) => { const r = e.getBoundingClientRect(); return [r.left, r.right, r.width]; });
+    const editor = await page.$eval('#editor', (e) => { const r = e.getBoundingClientRect(); return [r.left, r.right]; });
+    expect(pane[2] > 200 && pane[1] <= editor[0], 'the handout is not beside the editor: ' + pane + ' / ' + editor);
+    const title = await page.$eval('#handout h1', (e) => e.textContent);
+    expect(/^Exercise 05/.test(title), 'the 05-ggx tab shows the handout ' + title);
+    const handoutText = await page.$eval('#handout', (e) => e.textContent);
+    expect(handoutText.includes('D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2)'), 'the handout lacks its formula');
+    const pictures = await page.evaluate(async () => {
+      const images = [...document.querySelectorAll('#handout img')];
+      await Promise.all(images.map((i) => { i.loading = 'eager'; return i.decode().catch(() => {}); }));
+      return images.map((i) => i.naturalWidth);
+    });
+    expect(pictures.length >= 3 && pictures.every((w) => w > 0), 'handout pictures (widths): ' + pictures);
+    // The stub speaks of the page, not of command lines.
+    const stub = await page.evaluate(() => window.raylab.state.editor.getValue());
+    expect(/Handout: beside this editor/.test(firstLine(stub)) && !/docs\/exercises|build\/bin/.test(stub),
+           'the stub in the page: ' + firstLine(stub));
+    const camera = await page.evaluate(() => window.raylab.state.files['01-camera.glsl']);
+    expect(!/build\/bin\/raylab|\.\/raylab/.test(camera) && camera.includes('the "Check this exercise" button'),
+           '01-camera stub in the page still names a command line');
+    // The handout's "./raylab check --exercise 5" has the page's button beside it.
+    const inPage = await page.$$eval('#handout button.in-page', (b) => b.map((x) => x.textContent));
+    expect(inPage.includes('Check this exercise') && inPage.some((t) => /^Show the D .* view$/.test(t)),
+           'the handout\'s commands as buttons: ' + inPage);
+    let text = await checkHere('#handout button.in-page >> text="Check this exercise"');
+    expect(/05-ggx +NOT STARTED/.test(text) && text.includes('(the handout beside the editor)'), 'the stub: ' + text);
+    expect((await mark('05-ggx.glsl'))[0] === 'NOT STARTED', 'mark of the stub: ' + await mark('05-ggx.glsl'));
+    // Step 1, the formula of "What you write", as written.
+    const body = (code) => stub.replace(/return NOT_STARTED;.*$/m, code);
+    const textbook = body('float NoH = dot(n, h);\n    float a2 = alpha * alpha;\n' +
+                          '    float d = NoH * NoH * (a2 - 1.0) + 1.0;\n    return a2 / (PI * d * d);');
+    await setEditor(textbook);
+    expect((await mark('05-ggx.glsl'))[0] === 'changed', 'an edited, unchecked file: ' + await mark('05-ggx.glsl'));
+    text = await checkHere();
+    expect(/05-ggx +FAIL/.test(text) && /cancels in float32/.test(text), 'the textbook formula: ' + text.slice(0, 400));
+    expect(!/check-output/.test(text), 'check output names check-output/: ' + text);
+    expect(JSON.stringify(await mark('05-ggx.glsl')) === '["FAIL","✗"]', 'mark after FAIL: ' + await mark('05-ggx.glsl'));
+    const captions = await page.$$eval('#check-images figure', (f) => f.map((x) => x.textContent));
+    expect(captions.every((c) => !/check-output/.test(c)), 'picture captions: ' + captions);
+    // Step 2, the handout's hints, read from the page.
+    const hints = await page.$$eval('#handout li code', (c) => c.map((x) => x.textContent));
+    const cross = hints.find((h) => h.includes('cross(n, h)'));
+    const denominator = hints.find((h) => /^sin2 \+/.test(h));
+    expect(cross && denominator, 'the handout hints: ' + hints);
+    const hinted = body('float NoH = dot(n, h);\n    ' + cross + '\n    float a2 = alpha * alpha;\n' +
+                        '    float denom = ' + denominator + ';\n    return a2 / (PI * denom * denom);');
+    await setEditor(hinted);
+    text = await checkHere();
+    expect(/05-ggx +PASS/.test(text), 'the handout\'s form: ' + text.slice(0, 400));
+    expect(JSON.stringify(await mark('05-ggx.glsl')) === '["PASS","✓"]', 'mark after PASS: ' + await mark('05-ggx.glsl'));
+    // The marks follow the file: back to the failing text, to the passing one, to the stub.
+    await setEditor(textbook);
+    expect((await mark('05-ggx.glsl'))[0] === 'FAIL', 'back to the textbook formula: ' + await mark('05-ggx.glsl'));
+    await setEditor(hinted);
+    expect((await mark('05-ggx.glsl'))[0] === 'PASS', 'back to the passing file: ' + await mark('05-ggx.glsl'));
+    await page.click('#revert');
+    expect(JSON.stringify(await mark('05-ggx.glsl')) === '["NOT STARTED",""]', 'back to the stub: ' + await mark('05-ggx.glsl'));
+    // The stub the page shows is the shipped stub to the checker and in the download.
+    const zipped = await page.evaluate(async () => new Uint8Array(await window.raylab.exercisesZip().arrayBuffer()).length);
+    expect(zipped > 0, 'no zip');
+    console.log('handout 05-ggx: NOT STARTED, FAIL (textbook), PASS (the hints), marks followed');
   },
   // A loop that never ends: TIMEOUT (the loop guard ends it), and the page still checks afterwards.
   async runaway(page) {

@@ -21,6 +21,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +31,7 @@ namespace fs = std::filesystem;
 using namespace rl;
 using namespace rl::wintest;
 using rl::test::writeText;
+using rl::test::readText;
 
 namespace {
 
@@ -751,27 +753,107 @@ TEST_F(LectureTest, RecordedFramesCarryTheCaption) {
 }
 
 // Where ffmpeg is installed (scripts/setup.sh --window installs it),
-// `raylab record` also writes record.mp4 and record.gif with every frame.
+// `raylab record` also writes record.mp4 with every frame and record.gif at
+// --gif-fps (15 by default: every other frame of the 30 fps clip).
 // Skipped only when ffmpeg is missing.
+bool haveFfmpeg() {
+    return std::system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1") == 0;
+}
+
 TEST_F(LectureTest, RecordWritesAVideoAndAGifWhereFfmpegIsInstalled) {
-    if (std::system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1") != 0)
-        GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
     RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "5", "--orbit", "40"},
                             env, dir.path());
     ASSERT_EQ(r.status, 0) << r.err;
+    // The size estimate comes first, before any frame.
+    EXPECT_EQ(r.out.rfind("raylab: recording 5 frames of 96x54: about ", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("GIF of about"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("record.mp4"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("record.gif"), std::string::npos) << r.out;
-    for (const char* video : {"record.mp4", "record.gif"}) {
+    for (const auto& [video, frames] : {std::pair<const char*, const char*>{"record.mp4", "96,54,5"},
+                                        {"record.gif", "96,54,3"}}) {
         const fs::path file = dir / "clip" / video;
         ASSERT_TRUE(fs::exists(file)) << video;
-        // ffprobe decodes the file and counts its frames: all five are in it.
+        EXPECT_FALSE(fs::exists(dir / "clip" / (std::string(video) + ".part"))) << video;
+        // ffprobe decodes the file and counts its frames.
         RunResult probe = Process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
                                    "stream=nb_read_frames,width,height", "-of", "csv=p=0", file.string()},
                                   env, dir.path())
                               .wait(std::chrono::seconds(60));
         ASSERT_EQ(probe.status, 0) << probe.err;
-        EXPECT_EQ(probe.out.substr(0, probe.out.find('\n')), "96,54,5") << video << ": width, height, frames";
+        EXPECT_EQ(probe.out.substr(0, probe.out.find('\n')), frames) << video << ": width, height, frames";
     }
+}
+
+// The GIF's palette is made from the clip (palettegen/paletteuse, issue 26):
+// against ffmpeg's default GIF of the same frames (what record wrote
+// before, a fixed palette), its first frame is closer to the PNG and the
+// file is smaller. The 120-frame 720p orbit of docs/lecture.md: 39.7 MB
+// before, 4.9 MB after. Seen failing with record's old ffmpeg command.
+TEST_F(LectureTest, RecordedGifHasAPaletteMadeFromTheClip) {
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
+    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "160x90", "--frames", "6", "--orbit",
+                             "30", "--no-captions"},
+                            env, dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto ffmpeg = [&](std::vector<std::string> args) {
+        args.insert(args.begin(), {"ffmpeg", "-nostdin", "-loglevel", "error", "-y"});
+        RunResult f = Process(args, env, dir.path()).wait(std::chrono::seconds(60));
+        ASSERT_EQ(f.status, 0) << f.err;
+    };
+    ffmpeg({"-framerate", "30", "-i", "clip/frame-%04d.png", "before.gif"});  // record's command before issue 26
+    ffmpeg({"-i", "clip/record.gif", "-frames:v", "1", "-pix_fmt", "rgb24", "now-first.png"});
+    ffmpeg({"-i", "before.gif", "-frames:v", "1", "-pix_fmt", "rgb24", "before-first.png"});
+    const DisplayImage frame = shot("clip/frame-0000.png");
+    auto meanDifference = [&](const DisplayImage& gif) {
+        EXPECT_EQ(gif.rgb.size(), frame.rgb.size());
+        double sum = 0;
+        for (std::size_t i = 0; i < std::min(gif.rgb.size(), frame.rgb.size()); ++i)
+            sum += std::abs(int(gif.rgb[i]) - int(frame.rgb[i]));
+        return sum / double(frame.rgb.size());
+    };
+    const double now = meanDifference(shot("now-first.png")), before = meanDifference(shot("before-first.png"));
+    EXPECT_LT(now, before) << "mean difference to the PNG frame, in 8-bit levels";
+    const auto nowBytes = fs::file_size(dir / "clip" / "record.gif"), beforeBytes = fs::file_size(dir / "before.gif");
+    EXPECT_LT(nowBytes, beforeBytes);
+    std::printf("160x90, 6 frames: record.gif %ju bytes, mean difference %.2f levels; ffmpeg's default %ju bytes, %.2f\n",
+                std::uintmax_t(nowBytes), now, std::uintmax_t(beforeBytes), before);
+}
+
+// A shorter clip into the folder of a longer one: the video has the new
+// clip's frames only (ffmpeg reads frame-%04d.png until a number is
+// missing, so the old clip's tail would run on).
+TEST_F(LectureTest, RecordIntoTheFolderOfALongerClipKeepsItsOwnFrames) {
+    if (!haveFfmpeg()) GTEST_SKIP() << "ffmpeg is not installed (scripts/setup.sh --window installs it)";
+    for (const char* frames : {"4", "2"}) {
+        RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", frames,
+                                 "--no-captions"},
+                                env, dir.path());
+        ASSERT_EQ(r.status, 0) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir / "clip" / "frame-0002.png"));
+    RunResult probe = Process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                               "stream=nb_read_frames", "-of", "csv=p=0", (dir / "clip" / "record.mp4").string()},
+                              env, dir.path())
+                          .wait(std::chrono::seconds(60));
+    ASSERT_EQ(probe.status, 0) << probe.err;
+    EXPECT_EQ(probe.out.substr(0, probe.out.find('\n')), "2");
+}
+
+// Without ffmpeg: the frames, one line saying what to install, exit 1, and
+// an earlier record.gif is left as it was.
+TEST_F(LectureTest, RecordWithoutFfmpegSaysWhatToInstall) {
+    fs::create_directories(dir / "clip");
+    writeText(dir / "clip" / "record.gif", "an earlier recording");
+    std::map<std::string, std::string> noFfmpeg = env;
+    noFfmpeg["PATH"] = (dir / "empty").string();  // a folder with no ffmpeg (none at all)
+    RunResult r = runRaylab({"record", lectureScene(), "-o", "clip", "--size", "96x54", "--frames", "2"}, noFfmpeg,
+                            dir.path());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("apt-get install ffmpeg"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "clip" / "frame-0001.png"));
+    EXPECT_EQ(readText(dir / "clip" / "record.gif"), "an earlier recording");
 }
 
 // ---- side by side ------------------------------------------------------------------------
