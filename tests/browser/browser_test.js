@@ -124,7 +124,7 @@ const cases = {
     const {reports} = await checkInPage(page, null);
     for (const r of reports) {
       expect(r.status === 'NOT STARTED', r.exercise + ': ' + r.status + ' ' + r.message);
-      expect(r.hint === 'start with the handout: docs/exercises/' + r.exercise + '.md', r.exercise + ': hint ' + r.hint);
+      expect(r.hint === 'start with the handout: course/' + r.exercise + '/handout.md', r.exercise + ': hint ' + r.hint);
       expect(r.message === 'the file is the unchanged stub', r.exercise + ': ' + r.message);
     }
     const native = nativeCheck(5, path.join(root, 'build-web/generated/shipped-stubs/05-ggx.glsl'));  // build-web.sh's snapshot
