@@ -638,7 +638,7 @@ std::string markdownSection(const MarkdownRun& run, const std::vector<Measuremen
     if (!run.load.empty()) s << "; load average before the run " << run.load << " (1, 5, 15 minutes)";
     s << ".\n\n";
     if (!run.plot.empty()) {
-        fs::path base = fs::absolute(markdownFile).parent_path();
+        fs::path base = fs::absolute(markdownFile).lexically_normal().parent_path();
         std::string link = fs::absolute(run.plot).lexically_normal().lexically_relative(base).generic_string();
         s << "![Error against time per frame](" << link << ")\n\n";
     }
