@@ -9,8 +9,8 @@
 #   scripts/performance-page.sh [--size WxH] [--frames N] [--sweeps LIST] [--doc FILE]
 #
 # Defaults: 640x480, 9 timed frames, the `modes` sweep (both yardsticks and
-# raylab's four programs), docs/performance.md; the binary is $RAYLAB, else
-# build/bin/raylab. On 2 cores with llvmpipe the default run takes about two
+# raylab's four programs), docs/performance.md; the binary is the one
+# ./raylab runs (RAYLAB_BIN=/path/to/raylab overrides it). On 2 cores with llvmpipe the default run takes about two
 # minutes. --doc FILE writes another copy of the page (its plot goes to
 # images/ beside it); a FILE that does not exist yet gets both sections.
 set -euo pipefail
@@ -28,20 +28,19 @@ while [ $# -gt 0 ]; do
         *) echo "performance-page.sh: unknown option $1 (expected --size, --frames, --sweeps, --doc)" >&2; exit 2 ;;
     esac
 done
-raylab=${RAYLAB:-$root/build/bin/raylab}
-[ -x "$raylab" ] || { echo "performance-page.sh: $raylab: not built (scripts/build.sh, or set RAYLAB)" >&2; exit 1; }
+raylab="$root/raylab"  # the wrapper: build/ or build-headless/, or RAYLAB_BIN
 doc=$(cd "$(dirname "$doc")" && pwd)/$(basename "$doc")
 plot="$(dirname "$doc")/images/bench-course.svg"
 mkdir -p "$(dirname "$plot")" "$root/build"
 csv="$root/build/bench-course.csv"
 log="$root/build/bench-course.log"
+fresh=0
 if [ ! -e "$doc" ]; then
-    printf '# Performance\n\n<!-- standing:begin -->\n<!-- standing:end -->\n\n<!-- bench:begin -->\n<!-- bench:end -->\n' >"$doc"
-fi
-grep -qx '<!-- standing:begin -->' "$doc" && grep -qx '<!-- standing:end -->' "$doc" || {
+    fresh=1  # raylab bench --markdown writes it; the table goes on top
+elif ! { grep -qx '<!-- standing:begin -->' "$doc" && grep -qx '<!-- standing:end -->' "$doc"; }; then
     echo "performance-page.sh: $doc has no <!-- standing:begin --> ... <!-- standing:end --> lines (not changed)" >&2
     exit 1
-}
+fi
 
 cd "$root"
 scenes="scenes/metal-row.json tests/bench/course-row-ground.json scenes/lecture.json tests/bench/random-30.json"
@@ -52,9 +51,9 @@ rel() { python3 -c 'import os,sys; print(os.path.relpath(sys.argv[1]))' "$1"; }
 wait
 context=$(sed -n 's/^bench: \(EGL\|OSMesa\|GLFW\)/\1/p' "$log" | head -1)
 
-python3 - "$csv" "$doc" "$context" "$size" <<'EOF'
+python3 - "$csv" "$doc" "$context" "$size" "$fresh" <<'EOF'
 import csv, datetime, os, sys
-path, doc, context, size = sys.argv[1:5]
+path, doc, context, size, fresh = sys.argv[1:6]
 rows = [r for r in csv.DictReader(open(path)) if r["sweep"] == "modes" and r["skipped"] == "0"]
 scenes = []
 for r in rows:
@@ -95,6 +94,8 @@ out.append("%s, %s, process CPU time per frame (`--clock cpu`, median of the ben
                datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
                ", load average " + load + " after the run" if load else ""))
 text = open(doc).read()
+if fresh == "1":
+    text = "# Performance\n\n<!-- standing:begin -->\n<!-- standing:end -->\n\n" + text
 begin, end = "<!-- standing:begin -->\n", "<!-- standing:end -->"
 a = text.index(begin) + len(begin)
 b = text.index(end, a)
