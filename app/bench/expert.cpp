@@ -47,6 +47,10 @@ struct Facts {
     // starts outside every sphere and no point of a surface lies inside
     // another sphere (touching is allowed).
     bool simple = true;
+    // huge[i]: a sphere far larger than every other (a ground): the float
+    // |p - c|^2 - R^2 of a point near it cancels, so rays that start on
+    // another sphere take it from that sphere's centre (constants per pair).
+    std::vector<bool> huge;
     // may[l][k]: bit j set when sphere j can block light l for some point of
     // receiver k (j != k); the receiver itself is handled apart.
     std::vector<std::vector<std::vector<bool>>> may;
@@ -90,6 +94,13 @@ Facts factsOf(const Scene& scene) {
         for (int j = i + 1; j < f.n; ++j)
             if (glm::length(f.c[i] - f.c[j]) < f.r[i] + f.r[j]) f.simple = false;
     for (const Light& l : scene.lights) f.light.push_back((l.position - eye) * f.scale);
+    f.huge.assign(f.n, false);
+    for (int i = 0; i < f.n && f.n > 1; ++i) {
+        double smallest = 1e300;
+        for (int j = 0; j < f.n; ++j)
+            if (j != i) smallest = std::min(smallest, f.r[j]);
+        f.huge[i] = f.r[i] > 64 * smallest;
+    }
     f.may.assign(f.light.size(), std::vector<std::vector<bool>>(f.n, std::vector<bool>(f.n, false)));
     for (std::size_t l = 0; l < f.light.size(); ++l)
         for (int k = 0; k < f.n; ++k)
@@ -149,6 +160,16 @@ std::string expertFragmentSource(const Scene& original) {
             if (!f.simple)
                 s << "const float S2R[" << n << "] = " << array("float", idx, [&](int i) { return num(2 * f.r[i]); }) << ";\n";
         }
+        for (int i = 0; i < n && rs.maxBounces > 0; ++i) {
+            if (!f.huge[i]) continue;
+            s << "const float HK" << i << "[" << n << "] = " << array("float", idx, [&](int k) {
+                glm::dvec3 d = f.c[k] - f.c[i];
+                return num(k == i ? 0.0 : glm::dot(d, d) - f.r[i] * f.r[i] + f.r[k] * f.r[k]);
+            }) << ";\n";
+            s << "const vec3 HD" << i << "[" << n << "] = " << array("vec3", idx, [&](int k) {
+                return vec(k == i ? glm::dvec3(0.0) : 2 * f.r[k] * (f.c[k] - f.c[i]));
+            }) << ";\n";
+        }
         for (int l = 0; l < lights; ++l) {
             for (int half = 0; half < (n > 32 ? 2 : 1); ++half) {
                 std::vector<unsigned> masks;
@@ -177,8 +198,14 @@ std::string expertFragmentSource(const Scene& original) {
     } else {
         s << "    float best = INF, m, disc, t, sq;\n    int id = -1;\n    vec3 q;\n    bool h;\n";
         for (int i = 0; i < n; ++i) {
-            s << "    m = dot(" << vec(f.c[i]) << ", d); q = " << vec(f.c[i]) << " - m * d; disc = "
-              << num(f.r[i] * f.r[i]) << " - dot(q, q); sq = sqrt(max(disc, 0.0));\n";
+            // The quarter discriminant: m^2 - (|c|^2 - R^2) where the camera is
+            // inside or within R^2 of the surface (no cancellation: the constant
+            // is exact), else from the perpendicular distance (docs/model.md).
+            if (f.cc[i] < f.r[i] * f.r[i])
+                s << "    m = dot(" << vec(f.c[i]) << ", d); disc = m * m - " << num(f.cc[i]) << "; sq = sqrt(max(disc, 0.0));\n";
+            else
+                s << "    m = dot(" << vec(f.c[i]) << ", d); q = " << vec(f.c[i]) << " - m * d; disc = "
+                  << num(f.r[i] * f.r[i]) << " - dot(q, q); sq = sqrt(max(disc, 0.0));\n";
             if (f.cc[i] > 0)  // outside: the near root in one expression
                 s << "    t = " << num(f.cc[i]) << " / (m + sq); h = m > 0.0 && disc >= 0.0 && t < best;\n";
             else  // inside: the far root, stable either way
@@ -262,9 +289,13 @@ std::string expertFragmentSource(const Scene& original) {
                  "        d += (2.0 * abs(nd)) * n;\n"
                  "        int k = id;\n        best = INF; id = -1;\n        vec3 oc; float b, cq;\n";
             for (int i = 0; i < n; ++i) {
-                s << "        oc = p - " << vec(f.c[i]) << "; b = dot(oc, d); q = oc - b * d; disc = "
-                  << num(f.r[i] * f.r[i]) << " - dot(q, q); cq = dot(oc, oc) - " << num(f.r[i] * f.r[i])
-                  << "; sq = sqrt(max(disc, 0.0));\n";
+                if (f.huge[i])  // p = c_k + R_k no: |p - c|^2 - R^2 = |c_k - c|^2 - R^2 + R_k^2 + 2 R_k no.(c_k - c)
+                    s << "        b = dot(p - " << vec(f.c[i]) << ", d); cq = HK" << i << "[k] + dot(no, HD" << i
+                      << "[k]); disc = b * b - cq; sq = sqrt(max(disc, 0.0));\n";
+                else
+                    s << "        oc = p - " << vec(f.c[i]) << "; b = dot(oc, d); q = oc - b * d; disc = "
+                      << num(f.r[i] * f.r[i]) << " - dot(q, q); cq = dot(oc, oc) - " << num(f.r[i] * f.r[i])
+                      << "; sq = sqrt(max(disc, 0.0));\n";
                 if (f.simple)  // every ray starts outside sphere i: the near root
                     s << "        t = cq / (sq - b); h = k != " << i << " && b < 0.0 && disc >= 0.0 && t > 0.0 && t < best;\n";
                 else
