@@ -2,6 +2,7 @@
 
 #include "bench/frame_clock.h"
 #include "bench/pareto.h"
+#include "bench/expert.h"
 #include "bench/textbook.h"
 #include "core/error.h"
 #include "core/message.h"
@@ -108,6 +109,9 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
 
     if (wanted(options, "modes")) {
         add("textbook", "modes", false, scene, false)->textbook = true;
+        Variant* expert = add("expert", "modes", false, scene, false);
+        expert->expert = true;
+        expert->skipReason = expertUnsupported(scene);
         add("generic", "modes", false, scene, false);
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
@@ -220,7 +224,7 @@ Measurement describe(const Variant& v) {
     Measurement m;
     m.variant = v.name;
     m.sweep = v.sweep;
-    m.mode = v.textbook ? "textbook" : modeName(v.specialised, v.picture);
+    m.mode = v.textbook ? "textbook" : v.expert ? "expert" : modeName(v.specialised, v.picture);
     m.width = v.scene.render.width;
     m.height = v.scene.render.height;
     m.spp = v.scene.render.spp;
@@ -258,6 +262,8 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 if (v.textbook) {
                     programs[i].program = buildTextbook();
                     setTextbookUniforms(programs[i].program, v.scene);
+                } else if (v.expert) {
+                    programs[i].program = buildExpert(v.scene);  // the scene's numbers are compiled in
                 } else {
                     Implementation impl{implDir, v.overrides};
                     // The mode's purpose (modeName()); "specialised" is what `raylab render` compiles.
@@ -419,13 +425,24 @@ double ModeComparison::overTextbook() const {
     return textbook->msMedian / specialised->msMedian;
 }
 
+const Measurement* ModeComparison::strongest() const {
+    if (expert && textbook) return expert->msMedian <= textbook->msMedian ? expert : textbook;
+    return expert ? expert : textbook;
+}
+
+double ModeComparison::overStrongest() const {
+    const Measurement* y = strongest();
+    if (!y || !specialised || specialised->msMedian <= 0) return 0;
+    return y->msMedian / specialised->msMedian;
+}
+
 std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements) {
     std::vector<ModeComparison> out;
     for (const Measurement& m : measurements) {
         if (m.sweep != "modes" || m.skipped) continue;
         auto it = std::find_if(out.begin(), out.end(), [&](const ModeComparison& c) { return c.scene == m.scene; });
         if (it == out.end()) {
-            out.push_back({m.scene, nullptr, nullptr, nullptr, nullptr, nullptr});
+            out.push_back({m.scene, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr});
             it = out.end() - 1;
         }
         if (m.mode == "generic") it->generic = &m;
@@ -433,6 +450,7 @@ std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& meas
         else if (m.mode == "generic-picture") it->genericPicture = &m;
         else if (m.mode == "specialised-full") it->specialisedFull = &m;
         else if (m.mode == "textbook") it->textbook = &m;
+        else if (m.mode == "expert") it->expert = &m;
     }
     out.erase(std::remove_if(out.begin(), out.end(),
                              [](const ModeComparison& c) { return !c.generic || !c.specialised; }),
@@ -487,42 +505,63 @@ std::string formatTable(const std::vector<Measurement>& measurements) {
 }
 
 std::string formatComparisons(const std::vector<Measurement>& measurements) {
+    // Every ratio is a speed ratio against the strongest yardstick measured in
+    // the same run (yardstick ms / program ms: above 1 is faster than it).
     std::ostringstream s;
-    for (const ModeComparison& c : modeComparisons(measurements)) {
-        char line[512];
+    const std::vector<ModeComparison> comparisons = modeComparisons(measurements);
+    if (comparisons.empty()) return "";
+    for (const ModeComparison& c : comparisons) {
+        char line[768];
+        const Measurement* y = c.strongest();
+        auto error = [](const Measurement& m) {
+            char text[128];
+            std::snprintf(text, sizeof text, "mean %.3f LSB, p99 %.1f, off %.3f%%", m.error.meanLsb, m.error.p99Lsb,
+                          100 * m.error.offFraction);
+            return std::string(text);
+        };
+        if (!y) {
+            std::snprintf(line, sizeof line, "%s at %dx%d: specialised %.2f ms, generic %.2f ms per frame (no yardstick ran)\n",
+                          c.scene.c_str(), c.specialised->width, c.specialised->height, c.specialised->msMedian,
+                          c.generic->msMedian);
+            s << line;
+            continue;
+        }
+        auto ratio = [&](const Measurement* m) { return m && m->msMedian > 0 ? y->msMedian / m->msMedian : 0.0; };
         std::snprintf(line, sizeof line,
-                      "%s at %dx%d: specialised %.2f ms, generic %.2f ms per frame: %.2fx faster; "
-                      "error mean %.3f vs %.3f LSB, p99 %.1f vs %.1f, off %.3f%% vs %.3f%%\n",
-                      c.scene.c_str(), c.specialised->width, c.specialised->height, c.specialised->msMedian,
-                      c.generic->msMedian, c.speedup(), c.specialised->error.meanLsb, c.generic->error.meanLsb,
-                      c.specialised->error.p99Lsb, c.generic->error.p99Lsb, 100 * c.specialised->error.offFraction,
-                      100 * c.generic->error.offFraction);
+                      "%s at %dx%d: against the strongest yardstick (%s, %.2f ms, %s):\n"
+                      "  specialised %.2fx (%.2f ms, %s)\n",
+                      c.scene.c_str(), c.specialised->width, c.specialised->height, y->variant.c_str(), y->msMedian,
+                      error(*y).c_str(), ratio(c.specialised), c.specialised->msMedian,
+                      error(*c.specialised).c_str());
         s << line;
-        if (c.textbook) {
-            std::snprintf(line, sizeof line,
-                          "  against the textbook shader (the yardstick): specialised %.2fx, generic %.2fx "
-                          "(textbook %.2f ms, error mean %.3f LSB, off %.3f%%)\n",
-                          c.overTextbook(), c.textbook->msMedian / c.generic->msMedian, c.textbook->msMedian,
-                          c.textbook->error.meanLsb, 100 * c.textbook->error.offFraction);
-            s << line;
-        }
+        std::snprintf(line, sizeof line, "  generic %.2fx (%.2f ms, %s)\n", ratio(c.generic), c.generic->msMedian,
+                      error(*c.generic).c_str());
+        s << line;
         if (c.genericPicture && c.specialisedFull) {
-            double g = c.generic->msMedian;
             std::snprintf(line, sizeof line,
-                          "  parts: scene constants alone (specialised-full) %.2fx, picture program alone "
-                          "(generic-picture) %.2fx, both (specialised) %.2fx\n",
-                          g / c.specialisedFull->msMedian, g / c.genericPicture->msMedian, c.speedup());
+                          "  generic-picture %.2fx (%.2f ms), specialised-full %.2fx (%.2f ms)\n", ratio(c.genericPicture),
+                          c.genericPicture->msMedian, ratio(c.specialisedFull), c.specialisedFull->msMedian);
             s << line;
         }
+        for (const Measurement* other : {c.expert, c.textbook}) {
+            if (!other || other == y) continue;
+            std::snprintf(line, sizeof line, "  %s (%s yardstick) %.2fx (%.2f ms, %s)\n", other->variant.c_str(),
+                          other->mode == "expert" ? "the expert" : "the straightforward", ratio(other),
+                          other->msMedian, error(*other).c_str());
+            s << line;
+        }
+        if (!c.expert)
+            s << "  (the expert yardstick did not run on this scene: the ratios are against " << y->variant << ")\n";
         double more = c.specialised->error.meanLsb - c.generic->error.meanLsb;
         if (more == 0 && c.generic->error.maxLsb == c.specialised->error.maxLsb) {
-            s << "  the same error against the reference for both\n";
+            s << "  the same error against the reference for specialised and generic\n";
         } else {
             std::snprintf(line, sizeof line, "  error against the reference, specialised minus generic: mean %+.4f LSB\n",
                           more);
             s << line;
         }
     }
+    s << "(ratios: the strongest yardstick's ms / the row's ms, measured in this run: above 1 is faster than it)\n";
     return s.str();
 }
 
@@ -599,7 +638,7 @@ std::string markdownSection(const MarkdownRun& run, const std::vector<Measuremen
     if (!run.load.empty()) s << "; load average before the run " << run.load << " (1, 5, 15 minutes)";
     s << ".\n\n";
     if (!run.plot.empty()) {
-        fs::path base = fs::absolute(markdownFile).parent_path();
+        fs::path base = fs::absolute(markdownFile).lexically_normal().parent_path();
         std::string link = fs::absolute(run.plot).lexically_normal().lexically_relative(base).generic_string();
         s << "![Error against time per frame](" << link << ")\n\n";
     }

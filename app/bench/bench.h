@@ -28,7 +28,8 @@ struct Variant {
     std::string sweep;       // the group it belongs to: "modes", "bounces", "spp", "resolution", "models", "strategies"
     bool specialised = true; // the scene's structure compiled in (Purpose::EveryView, or Picture with `picture`)
     bool picture = true;     // without the term views (Purpose::Picture, or GenericPicture when not specialised)
-    bool textbook = false;   // the yardstick instead (bench/textbook.h): none of the flags above apply
+    bool textbook = false;   // the straightforward yardstick instead (bench/textbook.h): none of the flags above apply
+    bool expert = false;     // the expert yardstick instead (bench/expert.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
     ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_CANDIDATE_SHADOWS")
@@ -85,7 +86,9 @@ const std::vector<std::string>& sweepNames();
 //   specialised-full  Purpose::EveryView: every view, as `raylab render --view d` compiles it
 //   specialised       Purpose::Picture: `raylab render`
 // (render/define_table.h)
-// and the yardstick, "textbook" (bench/textbook.h), which has none of them.
+// and the two yardsticks, which have none of them: "textbook", the
+// straightforward one (bench/textbook.h), and "expert", the hand-optimised
+// one (bench/expert.h), the strongest: every speed ratio is against it.
 std::string modeName(bool specialised, bool picture);
 
 // The variants of one scene (already at the bench size), in table order.
@@ -113,9 +116,14 @@ struct ModeComparison {
     const Measurement* specialised = nullptr;
     const Measurement* genericPicture = nullptr;
     const Measurement* specialisedFull = nullptr;
-    const Measurement* textbook = nullptr;  // the yardstick, when the run has it
+    const Measurement* textbook = nullptr;  // the straightforward yardstick, when the run has it
+    const Measurement* expert = nullptr;    // the expert yardstick, when the run has it
     double speedup() const;  // generic ms / specialised ms
     double overTextbook() const;  // textbook ms / specialised ms (0 without the yardstick)
+    // The strongest yardstick measured: the faster of expert and textbook
+    // (the expert wherever it ran), nullptr without either.
+    const Measurement* strongest() const;
+    double overStrongest() const;  // strongest ms / specialised ms (0 without one)
 };
 std::vector<ModeComparison> modeComparisons(const std::vector<Measurement>& measurements);
 

@@ -1,6 +1,7 @@
-// The bench's yardstick: shaders/yardstick/textbook.frag, the model written
-// the plain way with none of raylab's layers. Every speed claim in
-// docs/performance.md is a ratio against it, measured in the same run.
+// The bench's straightforward yardstick: shaders/yardstick/textbook.frag,
+// the model written the plain way with none of raylab's layers. The
+// strongest yardstick, which every speed ratio is against, is the expert
+// one (bench/expert.h); this one stays beside it.
 #pragma once
 
 #include "core/scene.h"

@@ -2,9 +2,10 @@
 // of the framework. The model of docs/model.md written the plain way, as a
 // course text would: uniform arrays, a nearest-hit loop, a shadow loop per
 // light, a bounce loop, world coordinates, a fixed relative ray offset. No
-// exercise files, stub checks, teaching views or specialisation. raylab's own
-// programs are timed against this one in the same bench run
-// (docs/performance.md); the host sets the tb_ uniforms (app/bench/textbook.cpp).
+// exercise files, stub checks, teaching views or specialisation: the
+// straightforward yardstick, beside the hand-optimised `expert` one
+// (app/bench/expert.cpp) that every ratio is against (docs/performance.md);
+// the host sets the tb_ uniforms (app/bench/textbook.cpp).
 const float PI = 3.14159265358979;
 const int MAX_SPHERES = 64;
 const int MAX_LIGHTS = 16;
