@@ -43,9 +43,9 @@ ShaderDiagnostic at(const SourceFile& file, int line, std::string message, bool 
 
 std::string location(const SourceFile& file, int line) { return file.shown + ":" + std::to_string(line); }
 
-// The prototypes of shaders/declarations.glsl by exercise file ("05-ggx.glsl"):
-// a comment line "// 05-ggx" starts each exercise's list, "// Framework"
-// ends them.
+// The prototypes of the generated exercise_declarations.glsl (the units'
+// signatures, shader/readiness.cpp) by exercise file ("05-ggx.glsl"): a
+// comment line "// 05-ggx" starts each exercise's list.
 std::map<std::string, std::vector<GlslFunction>> contractOf(const SourceFile& declarations) {
     std::vector<std::string> sectionOfLine{""};  // index 0 unused
     std::string section;
@@ -95,7 +95,7 @@ std::vector<ShaderDiagnostic> checkExerciseSources(const AssembledSource& source
     for (std::size_t i = 0; i < count; ++i) {
         const SourceFile& f = source.sources[i];
         if (!f.exercise) {
-            if (f.path.filename() == "declarations.glsl") declarations = &f;
+            if (f.path.filename() == "exercise_declarations.glsl") declarations = &f;
             continue;
         }
         scans[i] = scanGlsl(f.text);

@@ -2,7 +2,7 @@
 // every shader error names the exercise file and line (never a framework
 // file), or says plainly that two files disagree:
 //   - before compiling (checkExerciseSources): the contract of
-//     shaders/declarations.glsl (every function of the exercise present,
+//     the units' signatures, exercise_declarations.glsl (every function of the exercise present,
 //     with its parameters and return type), a main() in an exercise file,
 //     and the same function, variable or macro defined in two exercise files
 //     (they are compiled together: `pow5` in 07 and in 09);

@@ -29,10 +29,10 @@ using glm::vec3;
 
 std::string testName(const ::testing::TestParamInfo<acc::NamedModel>& info) { return acc::modelTestName(info.param); }
 
+// A naive version: a unit's mutant, course/<unit>/mutants/<name>.glsl, in place of the unit's file.
 Implementation withNaive(const std::string& file) {
     std::filesystem::path path = sourceRoot() / file;
-    std::string name = path.filename().string();
-    return acc::solutionsWith({{name.substr(0, name.find("--")) + ".glsl", path}});
+    return acc::solutionsWith({{path.parent_path().parent_path().filename().string() + ".glsl", path}});
 }
 
 // A unit vector at angle theta from n (radians), azimuth phi.

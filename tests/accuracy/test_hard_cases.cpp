@@ -293,7 +293,8 @@ TEST_P(HardCaseTest, CatchesItsNaiveVersions) {
         std::filesystem::path path = sourceRoot() / file;
         ASSERT_TRUE(std::filesystem::exists(path)) << path;
         std::string name = path.filename().string();
-        std::string exercise = name.substr(0, name.find("--")) + ".glsl";  // 02-intersect--x.glsl replaces 02-intersect.glsl
+        // course/02-intersect/mutants/x.glsl replaces 02-intersect.glsl
+        std::string exercise = path.parent_path().parent_path().filename().string() + ".glsl";
         Rendering gl = acc::renderGlsl(scene, acc::solutionsWith({{exercise, path}}));
         std::string found = problems(c, scene, gl, truth);
         std::cout << "[ measured ] " << c.name << " with " << name << ": " << acc::describeDiff(compareRenderings(gl, truth))

@@ -40,7 +40,10 @@ const HINTED_MUTANTS = [
   '09-reflections--full-strength-bounces', '10-display--gamma-before-tonemap',
 ];
 // Every unit's mutants (course/<unit>/mutants/<name>.glsl), named <unit>--<name>.
-const MUTANTS = fs.readdirSync(path.join(root, 'course')).filter((u) => /^\d\d-/.test(u))
+// The course's exercises: course/manifest.txt's lines.
+const COURSE = fs.readFileSync(path.join(root, 'course/manifest.txt'), 'utf8').split('\n')
+    .map((l) => l.replace(/#.*/, '').trim()).filter((l) => l);
+const MUTANTS = COURSE
     .flatMap((u) => {
       const dir = path.join(root, 'course', u, 'mutants');
       return fs.existsSync(dir) ? fs.readdirSync(dir).filter((f) => f.endsWith('.glsl'))
@@ -132,9 +135,13 @@ const cases = {
            'native on the stub: ' + native.status + ' / ' + native.hint);
   },
   // Mutants: every unit's mutant gets the native checker's verdict;
-  // the hinted ones also its first hint line.
+  // the hinted ones also its first hint line. The two backends share the
+  // work (CI's time): each takes every hinted mutant and every other one of
+  // the rest, so between them every mutant runs on one backend at least.
   async mutants(page) {
-    for (const mutant of MUTANTS) {
+    const rest = MUTANTS.filter((m) => !HINTED_MUTANTS.includes(m));
+    const mine = rest.filter((m, i) => i % 2 === (backend === 'swiftshader' ? 0 : 1));
+    for (const mutant of MUTANTS.filter((m) => HINTED_MUTANTS.includes(m) || mine.includes(m))) {
       const file = mutantPath(mutant);
       const number = Number(mutant.slice(0, 2));
       const name = mutant.split('--')[0] + '.glsl';

@@ -277,10 +277,10 @@ TEST(CliHostile, UsageErrorsAreOneLineWithStatus2) {
         std::string args, expected;
     };
     const Case cases[] = {
-        {"", "raylab: error: name a command: render, check, grade, bench, view or record (raylab --help explains them)"},
-        {"bogus", "raylab: error: 'bogus' is not a command; expected render, check, grade, bench, view or record"},
-        {"\"$(printf '\\033[31mred')\"", "raylab: error: '\\x1b[31mred' is not a command; expected render, check, grade, bench, view or record"},
-        {"-x", "raylab: error: '-x' before a command; expected render, check, grade, bench, view or record first (raylab --help "
+        {"", "raylab: error: name a command: render, check, grade, bench, course, view or record (raylab --help explains them)"},
+        {"bogus", "raylab: error: 'bogus' is not a command; expected render, check, grade, bench, course, view or record"},
+        {"\"$(printf '\\033[31mred')\"", "raylab: error: '\\x1b[31mred' is not a command; expected render, check, grade, bench, course, view or record"},
+        {"-x", "raylab: error: '-x' before a command; expected render, check, grade, bench, course, view or record first (raylab --help "
                "explains them)"},
         {"render --frobnicate", "raylab: error: The following argument was not expected: --frobnicate"},
         {"render --spp 0", "raylab: error: --spp: must be a square number from 1 to 1024 (1, 4, 9, 16, ...), not '0'"},

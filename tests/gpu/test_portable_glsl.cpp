@@ -72,11 +72,9 @@ TEST(PortableGlsl, EveryMutantAndAlternativeIsPortable) {
     context();
     int checked = 0;
     for (const char* folder : {"mutants", "alternatives"})
-        for (const fs::path& file : glslFiles(sourceRoot() / "tests" / folder)) {
-            std::smatch m;
-            std::string name = file.filename().string();
-            ASSERT_TRUE(std::regex_search(name, m, std::regex(R"(^(\d\d-[a-z-]+?)--)"))) << name;
-            Implementation impl{solutionsDir(), {{m[1].str() + ".glsl", file}}};
+        for (const std::string& name : test::unitFileNames(folder)) {
+            const fs::path file = test::unitFilePath(folder, name);
+            Implementation impl{solutionsDir(), {{name.substr(0, name.find("--")) + ".glsl", file}}};
             EXPECT_EQ(portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300)), "") << name;
             ++checked;
         }

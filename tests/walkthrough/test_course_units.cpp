@@ -208,6 +208,9 @@ TEST(Course, AddingAnExercise) {
                                               "-P cmake/course.cmake && cat web-generated/course_sources.txt");
     EXPECT_EQ(listed.status, 0) << listed.output;
     EXPECT_NE(listed.output.find("course/11-hemisphere/probes.cpp"), std::string::npos) << listed.output;
+    // The page's tabs are allExercises() of the units compiled in (web/raylab_web.cpp).
+    EXPECT_NE(test::readText(repo / "web-generated" / "course_units.cpp").find("{\"11-hemisphere\", 10,"),
+              std::string::npos);
 }
 
 TEST(Course, ACourseOfNine) {
