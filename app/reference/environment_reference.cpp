@@ -107,11 +107,12 @@ EnvironmentSampler::Sample EnvironmentSampler::sample(double u1, double u2, doub
     return s;
 }
 
-double EnvironmentSampler::pdf(dvec3 d) const {
-    glm::dvec2 uv = equirectUv(d);
+double EnvironmentSampler::pdf(dvec3 d) const { return pdf(equirectUv(d), d.y); }
+
+double EnvironmentSampler::pdf(glm::dvec2 uv, double cosTheta) const {
     int x = std::clamp(int(uv.x * width_), 0, width_ - 1);
     // The row from cos(theta) against the edges (the same numbers sample() used).
-    double c = std::clamp(d.y, -1.0, 1.0);
+    double c = std::clamp(cosTheta, -1.0, 1.0);
     int y = std::clamp(int(uv.y * height_), 0, height_ - 1);
     while (y > 0 && c > cosTop_[size_t(y)]) --y;
     while (y + 1 < height_ && c < cosTop_[size_t(y) + 1]) ++y;
@@ -137,8 +138,13 @@ std::shared_ptr<const EnvironmentSampler> environmentSampler(const Environment& 
 
 namespace {
 
+// Below this n.v the specular draws use D(h) n.h half vectors instead of
+// visible normals (whose pdf divides by n.v).
+constexpr double kMinVisibleNoV = 1e-4;
+
 // pdf per steradian of drawing l from the BRDF's mixture: the specular share
-// by GGX half vectors (D(h) n.h / (4 v.h)), the rest by the cosine lobe.
+// by GGX visible normals (Heitz 2018: G1(v) D(h) / (4 n.v), G1 Smith's for
+// GGX; D(h) n.h / (4 v.h) below kMinVisibleNoV), the rest by the cosine lobe.
 double brdfPdf(dvec3 n, dvec3 v, dvec3 l, const SurfaceBrdf& brdf) {
     double NoL = glm::dot(n, l);
     if (NoL <= 0.0) return 0.0;
@@ -150,10 +156,32 @@ double brdfPdf(dvec3 n, dvec3 v, dvec3 l, const SurfaceBrdf& brdf) {
             h /= length;
             double VoH = glm::dot(v, h);
             double NoH = glm::dot(n, h);
-            if (VoH > 0.0 && NoH > 0.0) pdf += brdf.specularShare * D_GGX(n, h, brdf.alpha) * NoH / (4.0 * VoH);
+            double NoV = glm::dot(n, v);
+            if (VoH > 0.0 && NoH > 0.0) {
+                double D = D_GGX(n, h, brdf.alpha);
+                pdf += brdf.specularShare * (NoV >= kMinVisibleNoV ? G1_SmithGGX(NoV, brdf.alpha) * D / (4.0 * NoV)
+                                                                    : D * NoH / (4.0 * VoH));
+            }
         }
     }
     return pdf;
+}
+
+// A GGX visible normal for the view ve in the frame where n = +z (Heitz
+// 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4)).
+dvec3 visibleNormal(dvec3 ve, double alpha, double u1, double u2) {
+    dvec3 vh = glm::normalize(dvec3(alpha * ve.x, alpha * ve.y, ve.z));
+    double lengthSquared = vh.x * vh.x + vh.y * vh.y;
+    dvec3 t1 = lengthSquared > 0.0 ? dvec3(-vh.y, vh.x, 0.0) / std::sqrt(lengthSquared) : dvec3(1.0, 0.0, 0.0);
+    dvec3 t2 = glm::cross(vh, t1);
+    double r = std::sqrt(u1);
+    double phi = 2.0 * kPi * u2;
+    double p1 = r * std::cos(phi);
+    double p2 = r * std::sin(phi);
+    double s = 0.5 * (1.0 + vh.z);
+    p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * p2;
+    dvec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+    return glm::normalize(dvec3(alpha * nh.x, alpha * nh.y, std::max(0.0, nh.z)));
 }
 
 // A direction drawn from the BRDF's mixture (may lie below the surface: a
@@ -165,11 +193,18 @@ dvec3 drawFromBrdf(dvec3 n, dvec3 v, const SurfaceBrdf& brdf, Random& random) {
     double u1 = random.uniform(), u2 = random.uniform();
     double phi = 2.0 * kPi * u2;
     if (choose < brdf.specularShare) {
-        double a2 = brdf.alpha * brdf.alpha;
-        double cos2 = (1.0 - u1) / (1.0 + (a2 - 1.0) * u1);  // Walter et al. 2007 eq. 35, 1/(1 + tan^2)
-        double cosTheta = std::sqrt(std::max(0.0, cos2));
-        double sinTheta = std::sqrt(std::max(0.0, 1.0 - cos2));
-        dvec3 h = sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
+        dvec3 h;
+        dvec3 ve(glm::dot(v, t), glm::dot(v, b), glm::dot(v, n));
+        if (ve.z >= kMinVisibleNoV) {
+            dvec3 he = visibleNormal(ve, brdf.alpha, u1, u2);
+            h = he.x * t + he.y * b + he.z * n;
+        } else {
+            double a2 = brdf.alpha * brdf.alpha;
+            double cos2 = (1.0 - u1) / (1.0 + (a2 - 1.0) * u1);  // Walter et al. 2007 eq. 35, 1/(1 + tan^2)
+            double cosTheta = std::sqrt(std::max(0.0, cos2));
+            double sinTheta = std::sqrt(std::max(0.0, 1.0 - cos2));
+            h = sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
+        }
         return glm::normalize(2.0 * glm::dot(v, h) * h - v);
     }
     double cosTheta = std::sqrt(1.0 - u1);  // pdf cos/pi (Malley's method)
@@ -189,13 +224,15 @@ dvec3 integrateEnvironmentLight(const Environment& environment, const Environmen
     auto add = [&](dvec3 l) {
         double NoL = glm::dot(n, l);
         if (NoL <= 0.0) return;
-        double pdfMap = sampler.pdf(environmentLocalDirection(environment, l));
+        dvec3 local = environmentLocalDirection(environment, l);
+        glm::dvec2 uv = equirectUv(local);
+        double pdfMap = sampler.pdf(uv, local.y);
         double pdfBrdf = brdfPdf(n, v, l, brdf);
         double denominator = pdfMap + pdfBrdf;
         if (!(denominator > 0.0)) return;
         dvec3 f = brdf.f(l);
         if (f == dvec3(0.0)) return;
-        dvec3 L = environmentRadiance(environment, l);
+        dvec3 L = environment.intensity * bilinearRadiance(*environment.image, uv.x, uv.y);
         if (L == dvec3(0.0)) return;
         if (escapes && !escapes(l)) return;
         sum += f * L * (NoL / denominator);

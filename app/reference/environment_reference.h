@@ -5,7 +5,7 @@
 // (f the scene's BRDF, L the radiance map scaled and turned, V = 1 where a ray
 // from p towards l leaves the scene, or V = 1 everywhere without visibility)
 // by Monte Carlo with a fixed seed: per estimate, `samples` directions drawn
-// from the BRDF (GGX half vectors and a cosine lobe) and `samples` drawn from
+// from the BRDF (GGX visible normals, Heitz 2018, and a cosine lobe) and `samples` drawn from
 // the radiance map (a CDF over its pixels), combined by multiple importance
 // sampling with the balance heuristic (Veach 1997, ch. 9). The estimate is
 // unbiased: its error falls as 1/sqrt(samples).
@@ -15,6 +15,7 @@
 #include "core/scene.h"
 #include "reference/cpu_reference.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -64,6 +65,7 @@ public:
     };
     Sample sample(double u1, double u2, double u3) const;
     double pdf(glm::dvec3 localDirection) const;  // per steradian, of a unit direction in the image's frame
+    double pdf(glm::dvec2 uv, double cosTheta) const;  // the same from its equirectUv() and its y
 
 private:
     int width_ = 0, height_ = 0;
@@ -92,7 +94,7 @@ glm::dvec3 integrateEnvironmentLight(const Environment& environment, const Envir
                                      Random& random);
 
 // The scene's BRDF at a hit (cookTorranceBRDF with scene.model), with its
-// sampling: GGX draws for the specular lobe (every model variant: GGX's tail
+// sampling: GGX visible-normal draws for the specular lobe (every model variant: GGX's tail
 // is the widest of them), cosine draws for the diffuse one, shared by their
 // rough weight at n.v.
 SurfaceBrdf sceneBrdf(const Scene& scene, const Hit& hit, glm::dvec3 v);

@@ -38,10 +38,12 @@ int sh9Band(int k);
 double sh9CosineFactor(int band);
 
 // Projection of a radiance map, in the image's own frame and without its
-// intensity: each pixel's value times Y_k at the pixel's centre direction
-// times the pixel's exact solid angle (2 pi / W)(cos theta_top - cos theta_bottom).
-// For a uniform map of radiance L it gives L_0 = 4 pi L Y00 and the others 0
-// (to rounding), hence E = pi L.
+// intensity: each pixel's value times the exact integral of Y_k over the
+// pixel (phi in [2 pi (x/W - 1/2), 2 pi ((x+1)/W - 1/2)], cos theta between
+// its top and bottom edge: products of polynomials in cos theta, sin theta
+// and sin, cos of phi, integrated in closed form). So the map is taken as
+// constant over each pixel, and a uniform map of radiance L gives
+// L_0 = 4 pi L Y00 and the others 0 to rounding, hence E = pi L.
 Sh9 projectSh9(const RadianceImage& image);
 
 // E(n) from the coefficients, n a unit direction in the same frame.
