@@ -48,6 +48,43 @@ void requireSize(long long w, long long h, const std::string& path) {
                     " pixels, 4096x2048, and 4096 a side)");
 }
 
+// stb_image's run-length decoder loops forever on a run of length 0, and on
+// a truncated file (it reads zeros past the end): seen with a .hdr cut short.
+// So the scanlines are walked here first, as stb will walk them, and a file
+// that would make it loop is refused. "" when stb can decode it safely.
+std::string hdrScanlineProblem(const std::string& bytes, int width, int height) {
+    std::size_t pos = bytes.find("\n\n");  // the header ends with an empty line...
+    if (pos == std::string::npos) return "no end of header";
+    pos = bytes.find('\n', pos + 2);     // ...then comes "-Y height +X width"
+    if (pos == std::string::npos) return "no resolution line";
+    ++pos;
+    if (width < 8 || width >= 32768) return "";  // stb reads these flat: it stops at the end of the data
+    auto byte = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    for (int row = 0; row < height; ++row) {
+        if (pos + 4 > bytes.size()) return "the file ends at scanline " + std::to_string(row);
+        if (byte(pos) != 2 || byte(pos + 1) != 2 || (byte(pos + 2) & 0x80)) return "";  // flat from here: safe
+        pos += 4;  // stb checks the scanline's length itself
+        for (int component = 0; component < 4; ++component) {
+            int filled = 0;
+            while (filled < width) {
+                if (pos >= bytes.size()) return "the file ends at scanline " + std::to_string(row);
+                int count = byte(pos++);
+                if (count == 0) return "a run of length 0 at scanline " + std::to_string(row);
+                if (count > 128) {
+                    count -= 128;
+                    ++pos;
+                } else {
+                    pos += std::size_t(count);
+                }
+                if (count > width - filled) return "";  // stb reports "bad RLE data" itself
+                filled += count;
+            }
+            if (pos > bytes.size()) return "the file ends at scanline " + std::to_string(row);
+        }
+    }
+    return "";
+}
+
 RadianceImage decodeHdr(const std::string& bytes, const std::string& path) {
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     int length = int(bytes.size());  // bytes.size() <= kMaxEnvironmentFileBytes < 2^31
@@ -55,6 +92,8 @@ RadianceImage decodeHdr(const std::string& bytes, const std::string& path) {
     if (!stbi_info_from_memory(data, length, &w, &h, &channels))
         throw Error(path + ": cannot read the environment image (" + stbi_failure_reason() + ")");
     requireSize(w, h, path);  // before decoding: a lying header cannot ask for gigabytes
+    std::string problem = hdrScanlineProblem(bytes, w, h);
+    if (!problem.empty()) throw Error(path + ": cannot read the environment image (corrupt HDR: " + problem + ")");
     float* pixels = stbi_loadf_from_memory(data, length, &w, &h, &channels, 3);
     if (!pixels) throw Error(path + ": cannot read the environment image (" + stbi_failure_reason() + ")");
     RadianceImage image;

@@ -104,6 +104,21 @@ TEST(EnvironmentScene, EveryBadImageIsOneLineNamingTheSceneAndTheImage) {
         {"truncated hdr", R"({"file": "cut.hdr"})",
          [&] { test::writeText(dir / "cut.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n\x02\x02"); },
          "cannot read the environment image"},
+        // stb_image alone loops forever on these two (it reads zeros past the end).
+        {"hdr cut short", R"({"file": "cut-sky.hdr"})",
+         [&] {
+             std::string sky = test::readText(rl::scenesDir() / "environments" / "sky.hdr");
+             test::writeText(dir / "cut-sky.hdr", sky.substr(0, sky.size() / 2));
+         },
+         "corrupt HDR: the file ends at scanline 63"},
+        {"hdr with a run of 0", R"({"file": "zero-run.hdr"})",
+         [&] {
+             std::string sky = test::readText(rl::scenesDir() / "environments" / "sky.hdr");
+             std::size_t start = sky.find("+X 256\n") + 7;  // the first scanline: 2 2 1 0, then its first run
+             sky[start + 4] = '\0';  // the first run of the first scanline
+             test::writeText(dir / "zero-run.hdr", sky);
+         },
+         "corrupt HDR: a run of length 0 at scanline 0"},
         {"oversized hdr", R"({"file": "huge.hdr"})",
          [&] { test::writeText(dir / "huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4096 +X 4096\n"); },
          "more than the limit"},
