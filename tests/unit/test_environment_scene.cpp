@@ -172,3 +172,15 @@ TEST(EnvironmentScene, TheShippedEnvironmentScenesRender) {
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_TRUE(fs::exists(dir / "sky.png"));
 }
+
+// The shipped images are what the committed generator makes, byte for byte
+// (as a user regenerates them: the command of docs/scene-format.md).
+TEST(EnvironmentScene, TheShippedImagesAreTheGeneratorsOutput) {
+    fs::path dir = test::freshTempDir("env-generator");
+    test::CommandResult r = test::runShell("python3 '" + (rl::sourceRoot() / "scripts/make-environments.py").string() +
+                                           "' '" + dir.string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* name : {"sky.hdr", "studio.hdr", "white.pfm"})
+        EXPECT_EQ(test::readText(dir / name), test::readText(rl::scenesDir() / "environments" / name))
+            << name << " differs from what scripts/make-environments.py makes";
+}
