@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -430,4 +431,25 @@ TEST(Prefilter, UniformStaysUniformAndSmoothSurfacesSeeTheMap) {
             if (expected.x > 2.0) continue;  // the sun's disc
             EXPECT_NEAR(sharp.at(x, y)[0], expected.x, 0.01 * expected.x + 1e-4) << x << ", " << y;
         }
+}
+// The figures of docs/model.md "Environment light", on demand (15 s, so not
+// part of the suite):
+//   build/bin/unit_tests --gtest_also_run_disabled_tests --gtest_filter='EnvironmentFigures.*'
+TEST(EnvironmentFigures, DISABLED_VisibilityAndNoiseOnTheShippedScenes) {
+    for (const char* name : {"sky-spheres.json", "studio-spheres.json"}) {
+        Scene scene = loadSceneFile((rl::sourceRoot() / "scenes/environments" / name).string()).scene;
+        scene.render.width = 80; scene.render.height = 45;
+        EnvironmentOptions on, off; off.visibility = false;
+        auto t0 = std::chrono::steady_clock::now();
+        Rendering a = renderCpu(scene, 2, on);
+        double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        Rendering b = renderCpu(scene, 2, off);
+        ImageDiff d = compareRenderings(b, a);
+        on.samples = 4096;
+        Rendering c = renderCpu(scene, 2, on);
+        ImageDiff noise = compareRenderings(a, c);
+        double sum = 0, sumRef = 0; for (size_t k = 0; k < a.radiance.rgb.size(); ++k) { sum += b.radiance.rgb[k] - a.radiance.rgb[k]; sumRef += a.radiance.rgb[k]; }
+        std::printf("%s: 80x45 256 samples %.2f s; no-visibility vs visibility: off %.1f%% mean %.2f LSB p99 %.1f, radiance +%.1f%%; 256 vs 4096: off %.1f%% mean %.2f LSB p99 %.1f PSNR %.1f\n",
+            name, sec, 100 * d.offFraction, d.meanLsb, d.p99Lsb, 100 * sum / sumRef, 100 * noise.offFraction, noise.meanLsb, noise.p99Lsb, noise.psnr);
+    }
 }
