@@ -3,8 +3,11 @@
 // renderer, the CPU reference and every check read it.
 #pragma once
 
+#include "core/environment_image.h"
+
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,6 +79,10 @@ struct Scene {
     ShadingModel model;
     std::vector<Light> lights;
     std::vector<Sphere> spheres;
+    // Light from all around (issue 24, docs/model.md "Environment light"):
+    // absent unless the scene file has "environment"; then it replaces
+    // render.background for rays that hit nothing.
+    std::optional<Environment> environment;
     std::string sourcePath;  // file it was read from, "<default>" for the embedded one
 };
 

@@ -257,6 +257,31 @@ Light readLight(const json& j, const std::string& path, const std::string& origi
     return l;
 }
 
+// "environment": the radiance map is read here, relative to the scene file's
+// folder, so that a missing or bad image is refused with the scene, in one
+// line naming both files.
+Environment readEnvironment(const json& j, const std::string& origin, std::vector<std::string>& warnings) {
+    Reader r(j, "environment", origin, warnings);
+    Environment e;
+    r.require(r.has("file"), "file", "is missing: name an equirectangular .hdr or .pfm image");
+    e.file = r.string("file", "");
+    r.require(!e.file.empty(), "file", "must name an equirectangular .hdr or .pfm image");
+    r.require(e.file.find('\0') == std::string::npos, "file", "must not hold a NUL character");
+    e.intensity = r.number("intensity", e.intensity);
+    r.require(e.intensity >= 0.0 && e.intensity <= kMaxEnvironmentIntensity, "intensity",
+              "must be between 0 and 1e6");
+    e.rotationDegrees = r.number("rotation", e.rotationDegrees);
+    r.require(std::fabs(e.rotationDegrees) <= 1e6, "rotation", "must be between -1e6 and 1e6 degrees");
+    std::filesystem::path file(e.file);
+    e.path = (file.is_absolute() ? file : std::filesystem::path(origin).parent_path() / file).string();
+    try {
+        e.image = std::make_shared<const RadianceImage>(loadEnvironmentImage(e.path));
+    } catch (const Error& error) {
+        r.fail("environment.file " + quotedValue(e.file, 80) + ": " + error.what());
+    }
+    return e;
+}
+
 }  // namespace
 
 LoadedScene parseScene(const std::string& text, const std::string& origin) {
@@ -274,6 +299,7 @@ LoadedScene parseScene(const std::string& text, const std::string& origin) {
         if (top.has("camera")) s.camera = readCamera(top.raw("camera"), origin, out.warnings);
         if (top.has("render")) s.render = readRender(top.raw("render"), origin, out.warnings);
         if (top.has("model")) s.model = readModel(top.raw("model"), origin, out.warnings);
+        if (top.has("environment")) s.environment = readEnvironment(top.raw("environment"), origin, out.warnings);
         for (const char* list : {"lights", "spheres"}) {
             if (!top.has(list)) continue;
             const json& items = top.raw(list);
@@ -352,11 +378,24 @@ json sceneToJson(const Scene& s) {
         if (m.edgeTint != glm::dvec3(1.0)) mat["edge_tint"] = v(m.edgeTint);
         j["spheres"].push_back({{"center", v(sp.center)}, {"radius", sp.radius}, {"material", mat}});
     }
+    if (s.environment)
+        j["environment"] = {{"file", s.environment->file}, {"intensity", s.environment->intensity},
+                            {"rotation", s.environment->rotationDegrees}};
     return j;
 }
 
 void saveSceneFile(const Scene& scene, const std::string& path) {
-    writeFileAtomic(path, sceneToJson(scene).dump(2) + "\n", WriteOptions{"the scene file"});
+    json j = sceneToJson(scene);
+    if (scene.environment) {
+        // The image stays where it is: its path is written relative to the new file's folder.
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::path image = fs::absolute(scene.environment->path, ec).lexically_normal();
+        fs::path folder = fs::absolute(fs::path(path), ec).parent_path().lexically_normal();
+        fs::path relative = image.lexically_relative(folder);
+        j["environment"]["file"] = (relative.empty() ? image : relative).generic_string();
+    }
+    writeFileAtomic(path, j.dump(2) + "\n", WriteOptions{"the scene file"});
 }
 
 }  // namespace rl

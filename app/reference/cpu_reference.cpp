@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/light_surface.h"
+#include "reference/environment_reference.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <thread>
@@ -264,17 +266,48 @@ dvec3 shadeHit(const Scene& scene, const Hit& hit, dvec3 v) {
     return radiance;
 }
 
+namespace {
+
+// The seed of a camera ray's environment estimates: the options' seed and
+// the ray's bits, so that every pixel sample draws its own numbers whatever
+// thread renders it.
+std::uint64_t raySeed(std::uint64_t seed, dvec3 origin, dvec3 dir) {
+    std::uint64_t h = seed;
+    for (double x : {origin.x, origin.y, origin.z, dir.x, dir.y, dir.z}) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        h = mixSeed(h, bits);
+    }
+    return h;
+}
+
+}  // namespace
+
 dvec3 traceRadiance(const Scene& scene, dvec3 origin, dvec3 dir) {
+    return traceRadiance(scene, origin, dir, EnvironmentOptions{});
+}
+
+dvec3 traceRadiance(const Scene& scene, dvec3 origin, dvec3 dir, const EnvironmentOptions& options) {
     dvec3 radiance(0.0);
     dvec3 throughput(1.0);
+    const bool environment = scene.environment.has_value();
+    const std::uint64_t seed = environment ? raySeed(options.seed, origin, dir) : 0;
     Hit hit;
     bool found = closestHit(scene, origin, dir, hit);
     for (int bounce = 0;; ++bounce) {
         if (!found) {
-            radiance += throughput * scene.render.background;
+            if (!environment)
+                radiance += throughput * scene.render.background;
+            else if (bounce == 0)  // a camera ray that hits nothing sees the environment
+                radiance += environmentRadiance(*scene.environment, dir);
+            // A mirror bounce that escapes adds nothing more: the environment
+            // in its direction is part of the environment light of the hit it
+            // left (docs/model.md, "Environment light").
             break;
         }
         radiance += throughput * shadeHit(scene, hit, -dir);
+        if (environment)
+            radiance += throughput * environmentLight(scene, hit, -dir, options, mixSeed(seed, std::uint64_t(bounce)));
         if (bounce == scene.render.maxBounces) break;
         const Material& m = scene.spheres[size_t(hit.sphere)].material;
         double NoV = std::clamp(glm::dot(hit.n, -dir), kMinNoV, 1.0);  // the spec's NdotV clamp
@@ -319,6 +352,10 @@ int samplesPerAxis(int spp) {
 }  // namespace
 
 dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j) {
+    return pixelRadiance(scene, camera, i, j, EnvironmentOptions{});
+}
+
+dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j, const EnvironmentOptions& options) {
     const RenderSettings& settings = scene.render;
     int n = samplesPerAxis(settings.spp);
     dvec2 resolution(settings.width, settings.height);
@@ -327,12 +364,14 @@ dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j)
         dvec2 pixelSample = dvec2(i, j) + sampleOffset(s, n);
         dvec3 d = cameraRayDirection(pixelSample, resolution, camera.fovYRadians, camera.right, camera.up,
                                      camera.forward);
-        sum += traceRadiance(scene, camera.position, d);
+        sum += traceRadiance(scene, camera.position, d, options);
     }
     return sum / double(n * n);
 }
 
-Rendering renderCpu(const Scene& scene, int threads) {
+Rendering renderCpu(const Scene& scene, int threads) { return renderCpu(scene, threads, EnvironmentOptions{}); }
+
+Rendering renderCpu(const Scene& scene, int threads, const EnvironmentOptions& options) {
     const RenderSettings& settings = scene.render;
     const int width = settings.width;
     const int height = settings.height;
@@ -357,7 +396,7 @@ Rendering renderCpu(const Scene& scene, int threads) {
         for (int y = nextRow++; y < height; y = nextRow++) {
             int j = height - 1 - y;  // spec rows count from the bottom, images from the top
             for (int i = 0; i < width; ++i) {
-                dvec3 L = pixelRadiance(scene, camera, i, j);
+                dvec3 L = pixelRadiance(scene, camera, i, j, options);
                 dvec3 c = displayEncode(L, settings);
                 float* radiance = out.radiance.at(i, y);
                 std::uint8_t* display = out.display.at(i, y);

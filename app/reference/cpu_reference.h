@@ -13,7 +13,14 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
+
 namespace rl::ref {
+
+// How the reference integrates a scene's environment light (defined in
+// environment_reference.h; the defaults: 256 samples a strategy, seed 1,
+// with visibility). Scenes without an environment never look at it.
+struct EnvironmentOptions;
 
 // A ray/sphere hit.
 struct Hit {
@@ -89,7 +96,13 @@ glm::dvec3 shadeHit(const Scene& scene, const Hit& hit, glm::dvec3 v);
 // A ray that hits nothing adds throughput * background and stops.
 // The bounce Fresnel is F_SchlickRoughness for EVERY model variant: the
 // variants (scene.model) change the direct-light BRDF only.
+// With scene.environment (docs/model.md, "Environment light"): a camera ray
+// that hits nothing adds the environment's radiance instead of background; each
+// hit adds throughput * environmentLight() (environment_reference.h) too; a
+// bounce that escapes adds nothing (its direction is part of that integral).
+// Its estimates are seeded by options.seed and the bits of (origin, dir).
 glm::dvec3 traceRadiance(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir);
+glm::dvec3 traceRadiance(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir, const EnvironmentOptions& options);
 
 // ---- the camera and the whole picture ---------------------------------------------------
 
@@ -109,6 +122,7 @@ CameraBasis cameraBasis(const Camera& camera);
 // the average of traceRadiance over the render.spp = n*n samples at
 // sampleOffset(s, n).
 glm::dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j);
+glm::dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, int j, const EnvironmentOptions& options);
 
 // Renders the scene at render.width x render.height: averaged linear radiance
 // (as float) and its display step in double, quantised by rl::quantize8.
@@ -117,6 +131,7 @@ glm::dvec3 pixelRadiance(const Scene& scene, const CameraBasis& camera, int i, i
 // the result does not depend on the thread count.
 // Throws rl::Error for a non-positive size or spp, or a degenerate camera.
 Rendering renderCpu(const Scene& scene, int threads = 0);
+Rendering renderCpu(const Scene& scene, int threads, const EnvironmentOptions& options);
 
 // ---- energy ------------------------------------------------------------------------------
 
