@@ -144,9 +144,12 @@ class ExerciseFilesTest : public AssemblerTest {
 protected:
     void SetUp() override {
         AssemblerTest::SetUp();
-        write("lib/declarations.glsl",
+        // As the host writes them: the units' signatures in exercise_declarations.glsl.
+        write("lib/exercise_declarations.glsl",
               "// 05-ggx\nfloat D_GGX(vec3 n, vec3 h, float alpha);\n"
-              "// 07-fresnel\nvec3 F_Schlick(vec3 F0, float VoH);\n"
+              "// 07-fresnel\nvec3 F_Schlick(vec3 F0, float VoH);\n");
+        write("lib/declarations.glsl",
+              "#include \"exercise_declarations.glsl\"\n"
               "// Framework functions the exercises may call:\nfloat helper(float x);\n");
         write("lib/main.frag",
               "#include \"declarations.glsl\"\n#include \"exercise/05-ggx.glsl\"\n#include \"exercise/07-fresnel.glsl\"\n"
@@ -249,11 +252,13 @@ TEST_F(AssemblerTest, OnlyRegularFilesAreReadAndTheByteOrderMarkIsDropped) {
 
 TEST_F(ExerciseFilesTest, EachExerciseFileIsClosedAndRecorded) {
     AssembledSource s = assemble();
-    ASSERT_EQ(s.sources.size(), 4u);
+    // main.frag, declarations.glsl, exercise_declarations.glsl, then the two exercise files.
+    ASSERT_EQ(s.sources.size(), 5u);
     EXPECT_FALSE(s.sources[0].exercise);
-    EXPECT_TRUE(s.sources[2].exercise);
-    EXPECT_EQ(s.sources[2].includedAs, "exercise/05-ggx.glsl");
-    EXPECT_EQ(s.sources[2].owner, 2);
+    EXPECT_FALSE(s.sources[2].exercise);
+    EXPECT_TRUE(s.sources[3].exercise);
+    EXPECT_EQ(s.sources[3].includedAs, "exercise/05-ggx.glsl");
+    EXPECT_EQ(s.sources[3].owner, 3);
     // After each exercise file, one line that closes its scope, mapped to its last line.
     int markers = 0;
     for (std::size_t k = 0; k < s.lines.size(); ++k) {
