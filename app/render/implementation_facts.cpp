@@ -71,11 +71,15 @@ bool sameExercise(const Implementation& a, const Implementation& b, const std::s
 ImplementationFacts implementationFacts(const Implementation& impl) {
     ImplementationFacts facts;
     facts.exercisesFinished = finished(impl);
-    const ExerciseInfo& reflections = findExercise("9");
-    facts.traceStarted = !isUnchangedStub(impl.fileFor(reflections.file()), reflections);
+    // traceRay's unit: an exercise of the course, or framework code (always started).
+    const ExerciseInfo* reflections = exerciseOfFunction("traceRay");
+    facts.traceStarted = !reflections || !reflections->inCourse ||
+                         !isUnchangedStub(impl.fileFor(reflections->file()), *reflections);
     const Implementation course{solutionsDir(), {}};
     for (const ExerciseInfo& exercise : allExercises())
         if (sameExercise(impl, course, exercise.file())) facts.courseFiles.insert(exercise.file());
+    // A unit the manifest leaves out is the course's own code in every implementation.
+    for (const ExerciseInfo& unit : frameworkUnits()) facts.courseFiles.insert(unit.file());
     return facts;
 }
 
