@@ -119,7 +119,8 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("specialised", "modes", true, scene, true);
         // `raylab render`'s program before the course's generated one
         // (render/course_program.h): the exercise API's picture program.
-        if (courseProgramApplies(scene, implementationFacts(Implementation{defaultImplementationDir(), {}})))
+        const fs::path impl = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
+        if (courseProgramApplies(scene, implementationFacts(Implementation{impl, {}})))
             add("specialised-api", "modes", true, scene, true)->exerciseApi = true;
     }
     if (wanted(options, "layers")) {
