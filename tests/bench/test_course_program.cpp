@@ -42,7 +42,7 @@ Scene tiny(const fs::path& file) {
 
 std::vector<fs::path> scenes() {
     std::vector<fs::path> out;
-    for (const fs::path& dir : {scenesDir(), scenesDir() / "presets", sourceRoot() / "tests" / "bench"})
+    for (const fs::path& dir : {scenesDir(), scenesDir() / "presets", scenesDir() / "hard", sourceRoot() / "tests" / "bench"})
         for (const auto& entry : fs::directory_iterator(dir))
             if (entry.path().extension() == ".json" && entry.path().filename() != "scene.schema.json")
                 out.push_back(entry.path());
