@@ -3,6 +3,7 @@
 #include "bench/frame_clock.h"
 #include "bench/pareto.h"
 #include "bench/expert.h"
+#include "render/course_program.h"
 #include "bench/textbook.h"
 #include "core/error.h"
 #include "core/message.h"
@@ -116,6 +117,11 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
         add("specialised", "modes", true, scene, true);
+        // `raylab render`'s program before the course's generated one
+        // (render/course_program.h): the exercise API's picture program.
+        const fs::path impl = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
+        if (courseProgramApplies(scene, implementationFacts(Implementation{impl, {}})))
+            add("specialised-api", "modes", true, scene, true)->exerciseApi = true;
     }
     if (wanted(options, "layers")) {
         // The course's picture program with one of its layers taken out
@@ -224,7 +230,7 @@ Measurement describe(const Variant& v) {
     Measurement m;
     m.variant = v.name;
     m.sweep = v.sweep;
-    m.mode = v.textbook ? "textbook" : v.expert ? "expert" : modeName(v.specialised, v.picture);
+    m.mode = v.textbook ? "textbook" : v.expert ? "expert" : v.exerciseApi ? "specialised-api" : modeName(v.specialised, v.picture);
     m.width = v.scene.render.width;
     m.height = v.scene.render.height;
     m.spp = v.scene.render.spp;
@@ -269,10 +275,17 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     // The mode's purpose (modeName()); "specialised" is what `raylab render` compiles.
                     const Purpose purpose = v.specialised ? (v.picture ? Purpose::Picture : Purpose::EveryView)
                                                           : (v.picture ? Purpose::GenericPicture : Purpose::Generic);
-                    ShaderDefines defines = definesFor(v.scene, implementationFacts(impl), purpose);
+                    const ImplementationFacts facts = implementationFacts(impl);
+                    ShaderDefines defines = definesFor(v.scene, facts, purpose);
                     for (const std::string& name : v.withoutDefines) defines.erase(name);
                     for (const auto& [name, value] : v.withDefines) defines[name] = value;
-                    programs[i] = buildPictureProgram(impl, defines);
+                    // What `raylab render` draws: the generated program where every
+                    // exercise file is the course's own (render/course_program.h).
+                    if (purpose == Purpose::Picture && !v.exerciseApi && v.withDefines.empty() &&
+                        v.withoutDefines.empty() && v.overrides.empty() && courseProgramApplies(v.scene, facts))
+                        programs[i] = buildCoursePicture(v.scene);
+                    else
+                        programs[i] = buildPictureProgram(impl, defines);
                 }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);

@@ -29,6 +29,9 @@ struct Variant {
     bool specialised = true; // the scene's structure compiled in (Purpose::EveryView, or Picture with `picture`)
     bool picture = true;     // without the term views (Purpose::Picture, or GenericPicture when not specialised)
     bool textbook = false;   // the straightforward yardstick instead (bench/textbook.h): none of the flags above apply
+    // The picture program of the exercise API even where the course's own files
+    // would get the generated one (render/course_program.h): what it saves.
+    bool exerciseApi = false;
     bool expert = false;     // the expert yardstick instead (bench/expert.h): none of the flags above apply
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")

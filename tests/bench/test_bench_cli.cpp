@@ -219,7 +219,10 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
     std::map<std::string, int> perSweep;
     for (const Variant& v : all) ++perSweep[v.sweep];
     for (const std::string& sweep : sweepNames()) EXPECT_GT(perSweep[sweep], 0) << sweep;
-    EXPECT_EQ(perSweep["modes"], 6);  // the two yardsticks and raylab's four modes
+    // The two yardsticks, raylab's four modes and, the course's files being
+    // used, the exercise API's picture program beside the generated one.
+    EXPECT_EQ(perSweep["modes"], 7);
+    EXPECT_TRUE(find_if(all.begin(), all.end(), [](const Variant& v) { return v.exerciseApi; }) != all.end());
     auto find = [&](const std::string& name) {
         auto it = std::find_if(all.begin(), all.end(), [&](const Variant& v) { return v.name == name; });
         EXPECT_NE(it, all.end()) << name;
@@ -301,9 +304,9 @@ TEST(BenchCli, SeveralScenesAndOneSweep) {
                              " --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1 --csv " + csv);
     ASSERT_EQ(r.status, 0) << r.output;
     std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
-    ASSERT_EQ(rows.size(), 12u);  // (2 yardsticks + 4 modes) x 2 scenes
+    ASSERT_EQ(rows.size(), 14u);  // (2 yardsticks + 4 modes + specialised-api) x 2 scenes
     EXPECT_EQ(rows[0]["scene"], "lecture");
-    EXPECT_EQ(rows[11]["scene"], "metal-row");
+    EXPECT_EQ(rows[13]["scene"], "metal-row");
     for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
 }
 

@@ -1,0 +1,101 @@
+// The course's generated picture program (app/render/course_program.h): what
+// `raylab render` draws when every exercise file is the course's own. It must
+// render the same picture as the generic program (within the core's budget
+// against the CPU reference and against each other), on the bundled scenes
+// and the bench's, and never replace a student's own file. No timing is
+// asserted: `raylab bench` measures speed.
+#include "core/file_io.h"
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "render/course_program.h"
+#include "render/define_table.h"
+#include "render/gl_renderer.h"
+#include "render/implementation_facts.h"
+#include "shader/shader_library.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+using namespace rl;
+namespace fs = std::filesystem;
+
+namespace {
+
+void ensureContext() {
+    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
+}
+
+Scene tiny(const fs::path& file) {
+    Scene s = loadSceneFile(file.string()).scene;
+    s.render.width = 64;  // llvmpipe: small renders keep the suite fast
+    s.render.height = 48;
+    return s;
+}
+
+std::vector<fs::path> scenes() {
+    std::vector<fs::path> out;
+    for (const fs::path& dir : {scenesDir(), scenesDir() / "presets", scenesDir() / "hard", sourceRoot() / "tests" / "bench"})
+        for (const auto& entry : fs::directory_iterator(dir))
+            if (entry.path().extension() == ".json" && entry.path().filename() != "scene.schema.json")
+                out.push_back(entry.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The core's budget (as tests/bench/test_specialisation.cpp): at most 0.5% of
+// pixels off by more than 1/255, mean under 0.2/255, no NaN or Inf.
+void expectWithinBudget(const Rendering& got, const Rendering& expected, const std::string& what) {
+    ImageDiff d = compareRenderings(got, expected);
+    SCOPED_TRACE(what + ": " + test::describe(d));
+    EXPECT_LE(d.offFraction, 0.005);
+    EXPECT_LT(d.meanLsb, 0.2);
+    EXPECT_EQ(d.nonFinite, 0);
+}
+
+}  // namespace
+
+TEST(CourseProgram, AppliesToTheCourseFilesOnlyAndNeverToAStudentsFile) {
+    const Scene scene = tiny(scenesDir() / "lecture.json");
+    EXPECT_TRUE(courseProgramApplies(scene, implementationFacts(Implementation{solutionsDir(), {}})));
+
+    // One exercise file of the student's own (the course's text plus a
+    // statement): that file's code must run, so the generic path is used.
+    const fs::path dir = test::freshTempDir("course-program-student");
+    const std::string file = "02-intersect.glsl";
+    const fs::path own = dir / file;
+    {
+        std::ofstream out(own);
+        out << readRegularFile(solutionsDir() / file, 1 << 20) << "\n// mine\nconst float MY_OWN = 1.0;\n";
+    }
+    Implementation student{solutionsDir(), {{file, own}}};
+    const ImplementationFacts facts = implementationFacts(student);
+    EXPECT_FALSE(facts.courseFile(file));
+    EXPECT_FALSE(courseProgramApplies(scene, facts));
+}
+
+TEST(CourseProgram, RendersThePictureOfTheGenericProgramOnEveryBundledScene) {
+    ensureContext();
+    int rendered = 0;
+    for (const fs::path& file : scenes()) {
+        const Scene s = tiny(file);
+        if (!courseProgramApplies(s, implementationFacts(Implementation{solutionsDir(), {}}))) continue;  // model variants
+        const std::string name = file.filename().string();
+        const Rendering reference = ref::renderCpu(s);
+        const Rendering generic = renderOnce(
+            buildRayTracer(Implementation{solutionsDir(), {}}, definesFor(s, ImplementationFacts{}, Purpose::Generic)), s,
+            frameFromScene(s));
+        const Rendering course = renderOnce(buildCoursePicture(s), s, frameFromScene(s));
+        expectWithinBudget(course, reference, name + ": course program vs CPU reference");
+        expectWithinBudget(course, generic, name + ": course program vs generic program");
+        ++rendered;
+    }
+    EXPECT_GE(rendered, 5);
+}
