@@ -60,7 +60,7 @@ leave_out=(
     tests/portability
     tests/exercises tests/grading tests/gpu tests/accuracy tests/metamorphic tests/fuzz
     tests/walkthrough tests/window tests/browser tests/edition
-    tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp  # its scenes stay: unit tests read them
+    tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp tests/bench/test_course_program.cpp  # its scenes stay: unit tests read them
     tests/unit/test_shipped_stubs.cpp tests/unit/test_loop_guard.cpp
     tests/unit/test_define_table.cpp tests/unit/defines.golden  # its implementations are the solutions and mutants
     docs/exercises/images/make-images.sh scripts/judge-kinds.py
