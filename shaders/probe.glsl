@@ -12,7 +12,7 @@ uniform int u_probeFunction;  // a function's probe id (probeFunctionId, the uni
 
 const int PROBE_REINTERSECT = -2;  // the re-intersection yardstick (tests/metamorphic/test_reintersect.cpp), not a check
 
-const float PROBE_WRONG_ORIGIN = -2.0;  // traceRay: a bounce that does not start on the normal (probe_cases.cpp)
+const float PROBE_WRONG_ORIGIN = -2.0;  // traceRay: a bounce that does not start on the normal (course/09-reflections/probes.cpp)
 
 // pbrt-v4's re-intersection test (shapes_test.cpp, FullSphere.Reintersect)
 // on the framework's hits: a ray from o along d meets the scene's sphere

@@ -21,7 +21,7 @@
 
 namespace rl {
 
-// One function an exercise implements, declared in shaders/declarations.glsl.
+// One function an exercise implements, declared for the framework from its unit.json.
 struct ExerciseFunction {
     std::string name;       // "D_GGX"
     std::string signature;  // "float D_GGX(vec3 n, vec3 h, float alpha)": declared for the framework

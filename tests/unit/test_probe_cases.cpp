@@ -1,5 +1,5 @@
 // The probe cases are the same on every compiler: every random draw is
-// sequenced (checks/probe_cases.cpp), so g++ and clang++ build the same
+// sequenced (course/*/probes.cpp), so g++ and clang++ build the same
 // inputs, in the same order, with the same counts. A hash of all of them is
 // pinned here: a change in the order of the draws, a seed, a count or a
 // group changes it.
