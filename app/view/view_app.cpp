@@ -394,7 +394,10 @@ void ViewApp::drawUi(ViewRequests& requests) {
 void ViewApp::handleRequests(const ViewRequests& r) {
     // Values re-upload uniforms only; a new model (the one structural edit
     // of the panel) also compiles that model's program.
-    if (r.sceneEdited) sceneChanged(false);
+    if (r.sceneEdited) {
+        sceneChanged(false);
+        valueChanged();  // a slider being dragged: low resolution until the hand stops
+    }
     if (r.redraw) dirty_ = true;
     if (r.openPreset >= 0) openPreset(r.openPreset);
     if (r.save || r.saveConfirmed) saveScene(r.saveConfirmed);

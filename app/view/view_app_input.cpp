@@ -133,6 +133,14 @@ void ViewApp::cameraMoved() {
     dirty_ = true;
 }
 
+void ViewApp::valueChanged() {
+    // Not a camera move, but the same hand on a control: while values keep
+    // changing, each frame renders at the adaptive scale; the full picture
+    // comes back kSettleTime after the last change.
+    lastMove_ = Clock::now();
+    dirty_ = true;
+}
+
 void ViewApp::onKey(int key, int action, int mods) {
     if (action == GLFW_RELEASE || ui_->wantsKeyboard()) return;  // typing in a panel field
     auto binding = bindingFor(key, (mods & GLFW_MOD_CONTROL) != 0);
@@ -280,7 +288,7 @@ void ViewApp::perform(Action action, int argument) {
                 std::clamp(state_.viewBounce + (action == Action::BounceUp ? 1 : -1), 0, bounceViewLimit());
             toast("view: bounce " + std::to_string(state_.viewBounce) +
                   (state_.viewBounce > render.maxBounces ? " (beyond max bounces: black)" : ""));
-            dirty_ = true;
+            valueChanged();
             break;
         case Action::ExposureDown:
         case Action::ExposureUp:
@@ -358,7 +366,7 @@ void ViewApp::perform(Action action, int argument) {
     }
     if (sceneEdited) {
         picture_->setScene(scene_.scene());
-        dirty_ = true;
+        valueChanged();  // exposure, gamma, reflections: low resolution while the keys are pressed
     }
 }
 
@@ -368,6 +376,20 @@ void ViewApp::scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) {
 }
 void ViewApp::scriptCursor(glm::dvec2 pixel) { onCursor(pixel); }
 void ViewApp::scriptScroll(double steps) { onScroll(steps); }
+void ViewApp::scriptSlide(const std::string& value, double to) {
+    // What the panel's slider does to the scene (panel.cpp), then what
+    // handleRequests does with a panel edit.
+    Scene& scene = scene_.scene();
+    if (value == "exposure") scene.render.exposure = std::clamp(to, kMinExposure, kMaxExposure);
+    if (!scene.spheres.empty()) {  // the first sphere's slider in the panel's Materials
+        Material& m = scene.spheres[0].material;
+        if (value == "roughness") m.roughness = std::clamp(to, 0.0, 1.0);
+        if (value == "metallic") m.metallic = std::clamp(to, 0.0, 1.0);
+    }
+    ViewRequests edit;
+    edit.sceneEdited = true;
+    handleRequests(edit);
+}
 void ViewApp::scriptKey(const KeyBinding& binding) { perform(binding.action, binding.argument); }
 void ViewApp::scriptView(View view, int bounce) {
     state_.view = view;

@@ -702,6 +702,51 @@ TEST(LectureDrag, AdaptiveScaleGoesAsLowAsTheFrameNeeds) {
     if (stillMs > 16 * budget) EXPECT_LT(scale, 0.25) << "a quarter width would not keep 30 fps";
 }
 
+// Issue 26, "responsive everywhere": a slider drag, keys that change values
+// and the bounce keys enter the same low-resolution "moving" state as a
+// camera drag (the view's --stats reports the frames rendered while moving;
+// before, a value change rendered every frame at full resolution and no
+// frame counted as moving). 640x360 keeps it small; on llvmpipe a full D
+// view there takes more than a 30 fps budget, so the scale also drops.
+TEST(LectureDrag, SlidersAndValueKeysUseTheAdaptiveResolution) {
+    Xvfb x(640, 360);
+    TempDir dir;
+    const auto env = windowEnv(x);
+    const std::vector<std::pair<std::string, std::string>> scripts = {
+        {"slider", "wait 2\nview d\nwait 2\nslide roughness 0.05 0.95 24\nquit\n"},
+        {"keys", "wait 2\nkey Up\nwait 1\nkey Up\nwait 1\nkey Down\nwait 1\nkey ]\nwait 1\nkey [\nwait 1\nquit\n"},
+    };
+    for (const auto& [name, text] : scripts) {
+        SCOPED_TRACE(name);
+        writeText(dir / "s.txt", text);
+        RunResult r = runRaylab({"view", lectureScene(), "--size", "640x360", "--no-panel", "--script", "s.txt",
+                                 "--stats"},
+                                env, dir.path());
+        ASSERT_EQ(r.status, 0) << r.err;
+        const std::size_t moving = r.out.find("raylab view: moving:");
+        ASSERT_NE(moving, std::string::npos) << "no frame rendered in the moving state:\n" << r.out;
+        int frames = 0, w = 0, h = 0;
+        double ms = 0, fps = 0, scale = 0;
+        ASSERT_EQ(std::sscanf(r.out.c_str() + moving,
+                              "raylab view: moving: %d frames, median %lf ms per frame (%lf fps), render scale down to "
+                              "%lf (%dx%d)",
+                              &frames, &ms, &fps, &scale, &w, &h),
+                  6)
+            << r.out;
+        std::printf("%s at 640x360: %d moving frames, median %.1f ms (%.1f fps), scale down to %.3f\n", name.c_str(),
+                    frames, ms, fps, scale);
+        EXPECT_GE(frames, name == "slider" ? 20 : 3) << "each step of the change renders in the moving state";
+        const std::size_t still = r.out.find("raylab view: still:");
+        double stillMs = 0;
+        int stillRenders = 0;
+        if (still != std::string::npos &&
+            std::sscanf(r.out.c_str() + still, "raylab view: still: %d renders at full resolution, median %lf ms",
+                        &stillRenders, &stillMs) == 2 &&
+            name == "slider" && stillMs > 2 * 1000.0 / 30.0)
+            EXPECT_LT(scale, 1.0) << "a full render over two budgets: the slider drag renders fewer pixels";
+    }
+}
+
 // ---- recording ---------------------------------------------------------------------------
 
 // `raylab record --orbit 90`: the first frame is the scene's camera, the last
