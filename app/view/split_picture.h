@@ -31,6 +31,9 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // Side by side: each half is the whole picture scaled into its half
+    // (same aspect as the window, letterboxed), this many rows tall.
+    int halfHeight() const { return halfHeight_; }
 
     SplitPicture();
     ~SplitPicture();
@@ -48,6 +51,7 @@ private:
     GlRenderer sides_[2];
     bool drawn_[2] = {false, false};
     int width_ = 0, height_ = 0, split_ = 0;
+    int halfHeight_ = 0;
     bool sideBySide_ = false;
 };
 

@@ -507,7 +507,9 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
     int x0 = 0, width = fbWidth_;  // side by side: the half the pixel was asked in
     pictureColumns(sideBySideActive() ? pickedHalf_ : -1, x0, width);
-    const double aspect = double(width) / fbHeight_;
+    int y0 = 0, height = fbHeight_;
+    pictureRows(sideBySideActive() ? pickedHalf_ : -1, y0, height);
+    const double aspect = double(width) / height;
     // Points closer than this along the view direction are clipped away:
     // a ray from the camera itself projects to no point.
     const double nearPlane = 1e-3 * glm::length(camera.target - camera.position);
@@ -519,7 +521,7 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
         if (cb.z < nearPlane) cb += (ca - cb) * ((nearPlane - cb.z) / (ca.z - cb.z));
         auto toPixel = [&](glm::dvec3 c) {
             return glm::dvec2(x0 + (c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * width,
-                              (1.0 - c.y / (c.z * tanHalf)) * 0.5 * fbHeight_);
+                              y0 + (1.0 - c.y / (c.z * tanHalf)) * 0.5 * height);
         };
         const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
         out.push_back({float(pa.x), float(pa.y), float(pb.x), float(pb.y), colour});

@@ -109,6 +109,8 @@ private:
     void pickPixel(glm::dvec2 pixel);
     // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
     void pictureColumns(int half, int& x0, int& width) const;
+    // Side by side: the rows of the letterboxed half picture (top-left origin).
+    void pictureRows(int half, int& y0, int& height) const;
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;

@@ -206,13 +206,18 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
             where = std::string(pickedHalf_ == 0 ? " of the left picture" : " of the right picture") + " (" +
                     sides_[std::size_t(pickedHalf_)].program->label() + ")";
         }
-        int x0 = 0, width = fbWidth_;
+        int x0 = 0, width = fbWidth_, y0 = 0, height = fbHeight_;
         pictureColumns(pickedHalf_, x0, width);
-        picked_ = ref::explainPixel(scene, camera, width, fbHeight_, i - x0, fbHeight_ - 1 - row);
+        pictureRows(pickedHalf_, y0, height);
+        if (row < y0 || row >= y0 + height) {  // side by side: the bars above and below the pictures
+            pickedHalf_ = -1;
+            return;
+        }
+        picked_ = ref::explainPixel(scene, camera, width, height, i - x0, height - 1 - (row - y0));
         state_.pickedText = ref::formatPixelTerms(scene, *picked_);
         state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
         state_.revealPicked = true;
-        std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row << ") from the top left" << where << "\n"
+        std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row - y0 << ") from the top left" << where << "\n"
                   << state_.pickedText << std::flush;
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -226,6 +231,15 @@ void ViewApp::pictureColumns(int half, int& x0, int& width) const {
     const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
     x0 = half == 0 ? 0 : split;
     width = half == 0 ? split : std::max(1, fbWidth_ - split);
+}
+
+void ViewApp::pictureRows(int half, int& y0, int& height) const {
+    y0 = 0;
+    height = fbHeight_;
+    if (half < 0 || !sideBySideActive()) return;
+    const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
+    height = std::max(1, int(std::lround(double(fbHeight_) * split / std::max(fbWidth_, 1))));
+    y0 = (fbHeight_ - height) / 2;
 }
 
 void ViewApp::onScroll(double steps) {
