@@ -32,19 +32,22 @@ void SplitPicture::setScene(const Scene& scene) {
 }
 
 void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgram* right,
-                                    const FrameSettings& frame) {
+                                    const FrameSettings& frame, double leftFraction) {
     sideBySide_ = true;
     width_ = frame.width;
     height_ = frame.height;
-    split_ = std::max(1, frame.width / 2);
+    // Right of the panel (issue 26: it covered most of the left picture).
+    offset_ = std::clamp(int(std::lround(leftFraction * frame.width)), 0, std::max(0, frame.width - 2));
+    const int halfWidth = std::max(1, (frame.width - offset_) / 2);
+    split_ = offset_ + halfWidth;
     // The whole picture in each half (issue 26: a centre crop showed neither
     // end of a material row): the window's aspect at half the width, so
     // half the height, letterboxed in present().
-    halfHeight_ = std::max(1, int(std::lround(double(frame.height) * split_ / std::max(frame.width, 1))));
+    halfHeight_ = std::max(1, int(std::lround(double(frame.height) * halfWidth / std::max(frame.width, 1))));
     const ShaderProgram* programs[2] = {left, right};
     for (int i = 0; i < 2; ++i) {
         FrameSettings half = frame;
-        half.width = i == 0 ? split_ : std::max(1, frame.width - split_);
+        half.width = i == 0 ? halfWidth : std::max(1, frame.width - split_);
         half.height = halfHeight_;
         drawn_[i] = programs[i] != nullptr;
         if (drawn_[i]) sides_[i].draw(*programs[i], half);
@@ -54,6 +57,7 @@ void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgr
 void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame,
                           int splitX) {
     sideBySide_ = false;
+    offset_ = 0;
     width_ = frame.width;
     height_ = frame.height;
     split_ = std::clamp(splitX, 0, width_);
@@ -85,8 +89,9 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     if (width_ == 0 || height_ == 0) return;
     const bool sameSize = width_ == windowWidth && height_ == windowHeight;
     const int src0[2] = {0, sideBySide_ ? 0 : split_},
-              src1[2] = {split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
-    const int dst0[2] = {0, windowSplit}, dst1[2] = {windowSplit, windowWidth};
+              src1[2] = {sideBySide_ ? split_ - offset_ : split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
+    const int windowOffset = width_ > 0 ? int(std::lround(double(offset_) * windowWidth / width_)) : 0;
+    const int dst0[2] = {windowOffset, windowSplit}, dst1[2] = {windowSplit, windowWidth};
     // Rows: the whole height, or side by side the letterboxed half picture,
     // centred (its top (windowHeight - rows) / 2 rows below the window's top).
     const int srcRows = sideBySide_ ? halfHeight_ : height_;

@@ -334,7 +334,7 @@ void ViewApp::renderPicture(bool fullResolution) {
     if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
     try {
         if (sideBySideActive())
-            picture_->renderSideBySide(left, right, frame);
+            picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else
             picture_->render(left, right, frame, split);
         runtimeError_.clear();
@@ -547,19 +547,27 @@ std::vector<OverlayLabel> ViewApp::sideBySideLabels() const {
     const float s = ui_->scale(), margin = 10 * s;
     // Framebuffer pixels per window unit (the panel is laid out in window units).
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();
-    float leftX = margin;
-    if (state_.showPanel) {  // right of the panel (or its strip): never under it
-        const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
-        const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
-        const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
-        leftX = std::max(leftX, float(panelRight * perUnit.x));
-    }
-    return {{leftX, margin, sides_[0].program->label()},
-            {float(fbWidth_ / 2) + margin, margin, sides_[1].program->label()}};
+    (void)perUnit;
+    int x0 = 0, width = 0, x1 = 0;
+    pictureColumns(0, x0, width);
+    pictureColumns(1, x1, width);
+    return {{float(x0) + margin, margin, sides_[0].program->label()},
+            {float(x1) + margin, margin, sides_[1].program->label()}};
 }
 
 std::string ViewApp::windowTitle() const {
     return "raylab view - " + sceneName(scene_.path()) + " - " + implementationsTitle_;
+}
+
+int ViewApp::sideBySideOffset() const {
+    if (!sideBySideActive() || !state_.showPanel) return 0;
+    // Right of the panel (or its strip), as the labels were: both pictures clear of it.
+    const float s = ui_->scale(), margin = 10 * s;
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
+    const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
+    const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
+    const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
+    return std::clamp(int(std::lround(panelRight * perUnit.x)), 0, std::max(0, fbWidth_ - 2));
 }
 
 int ViewApp::bounceViewLimit() const { return std::max(scene_.scene().render.maxBounces, 0) + 1; }

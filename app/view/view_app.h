@@ -111,6 +111,8 @@ private:
     void pictureColumns(int half, int& x0, int& width) const;
     // Side by side: the rows of the letterboxed half picture (top-left origin).
     void pictureRows(int half, int& y0, int& height) const;
+    // Side by side: framebuffer columns left of the pictures (the panel's).
+    int sideBySideOffset() const;
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;

@@ -201,7 +201,10 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         std::string where;
         pickedHalf_ = -1;
         if (sideBySideActive()) {
-            pickedHalf_ = i < std::max(1, fbWidth_ / 2) ? 0 : 1;
+            int x1 = 0, w = 0;
+            pictureColumns(1, x1, w);
+            if (i < sideBySideOffset()) return;  // left of the pictures (the panel's columns)
+            pickedHalf_ = i < x1 ? 0 : 1;
             if (sides_[std::size_t(pickedHalf_)].model) scene.model = *sides_[std::size_t(pickedHalf_)].model;
             where = std::string(pickedHalf_ == 0 ? " of the left picture" : " of the right picture") + " (" +
                     sides_[std::size_t(pickedHalf_)].program->label() + ")";
@@ -228,17 +231,18 @@ void ViewApp::pictureColumns(int half, int& x0, int& width) const {
     x0 = 0;
     width = fbWidth_;
     if (half < 0 || !sideBySideActive()) return;
-    const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
-    x0 = half == 0 ? 0 : split;
-    width = half == 0 ? split : std::max(1, fbWidth_ - split);
+    // As SplitPicture::renderSideBySide at full resolution.
+    const int offset = sideBySideOffset(), split = offset + std::max(1, (fbWidth_ - offset) / 2);
+    x0 = half == 0 ? offset : split;
+    width = half == 0 ? split - offset : std::max(1, fbWidth_ - split);
 }
 
 void ViewApp::pictureRows(int half, int& y0, int& height) const {
     y0 = 0;
     height = fbHeight_;
     if (half < 0 || !sideBySideActive()) return;
-    const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
-    height = std::max(1, int(std::lround(double(fbHeight_) * split / std::max(fbWidth_, 1))));
+    const int offset = sideBySideOffset(), halfWidth = std::max(1, (fbWidth_ - offset) / 2);  // as SplitPicture
+    height = std::max(1, int(std::lround(double(fbHeight_) * halfWidth / std::max(fbWidth_, 1))));
     y0 = (fbHeight_ - height) / 2;
 }
 

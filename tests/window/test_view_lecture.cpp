@@ -920,10 +920,15 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     Scene blinn = loadSceneFile(row).scene;
     blinn.model.blinnPhong = true;
     saveSceneFile(blinn, (dir / "blinn.json").string());
-    const int kRows = kHeight / 2, kTop = (kHeight - kRows) / 2;  // the letterboxed half picture
-    const std::string half = std::to_string(kWidth / 2) + "x" + std::to_string(kRows);
+    // Both pictures right of the panel (10 px margin at scale 1), each half
+    // of what is left, at the window's aspect, centred vertically.
+    const PanelRect panel = panelRect(kWidth, kHeight, 1);
+    const int kLeft = int(std::lround(panel.x + panel.width + 10)), kHalf = (kWidth - kLeft) / 2;
+    const int kRows = int(std::lround(double(kHeight) * kHalf / kWidth)), kTop = (kHeight - kRows) / 2;
+    const std::string half = std::to_string(kHalf) + "x" + std::to_string(kRows);
+    const std::string rightHalf = std::to_string(kWidth - kLeft - kHalf) + "x" + std::to_string(kRows);
     ASSERT_EQ(runRaylab({"render", row, "--size", half, "-o", "left.png"}, env, dir.path()).status, 0);
-    ASSERT_EQ(runRaylab({"render", (dir / "blinn.json").string(), "--size", half, "-o", "right.png"}, env, dir.path())
+    ASSERT_EQ(runRaylab({"render", (dir / "blinn.json").string(), "--size", rightHalf, "-o", "right.png"}, env, dir.path())
                   .status,
               0);
     const DisplayImage both = shot("both.png");
@@ -935,24 +940,23 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     };
     const int labelRows = 40;
     ASSERT_LE(labelRows, kTop) << "the labels fit in the bar above the pictures";
-    EXPECT_LE(comparePictures(rows(columns(both, 0, kWidth / 2), kTop, kTop + kRows), shot("left.png")).offFraction,
+    EXPECT_LE(comparePictures(rows(columns(both, kLeft, kLeft + kHalf), kTop, kTop + kRows), shot("left.png")).offFraction,
               0.005)
         << "left: the scene's model, the whole picture in its half";
     EXPECT_LE(
-        comparePictures(rows(columns(both, kWidth / 2, kWidth), kTop, kTop + kRows), shot("right.png")).offFraction,
+        comparePictures(rows(columns(both, kLeft + kHalf, kWidth), kTop, kTop + kRows), shot("right.png")).offFraction,
         0.005)
         << "right: Blinn-Phong";
-    // The left label starts right of the panel (340 px wide at scale 1, at most 45% of 480).
-    const PanelRect panel = panelRect(kWidth, kHeight, 1);
+    // The left label starts right of the panel.
     // The label is what is not black in the bar above the picture: its
     // leftmost column must be right of the panel.
     int leftmost = kWidth;
     for (int y = 0; y < labelRows; ++y)
-        for (int x = 0; x < kWidth / 2; ++x)
+        for (int x = int(panel.x + panel.width) + 1; x < kLeft + kHalf; ++x)
             for (int c = 0; c < 3; ++c)
                 if (int(both.at(x, y)[c]) > 40) leftmost = std::min(leftmost, x);
-    ASSERT_LT(leftmost, kWidth / 2) << "no label on the left picture";
-    EXPECT_GE(leftmost, int(panel.x + panel.width)) << "the left label sits under the panel";
+    ASSERT_LT(leftmost, kLeft + kHalf) << "no label on the left picture";
+    EXPECT_GE(leftmost, kLeft) << "the left label starts over its picture, right of the panel";
     maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
 }
 
