@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -958,6 +959,61 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     ASSERT_LT(leftmost, kLeft + kHalf) << "no label on the left picture";
     EXPECT_GE(leftmost, kLeft) << "the left label starts over its picture, right of the panel";
     maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
+}
+
+// Issue 26, projector layout: side by side at UI scales 1, 2 and 3 on
+// 1280x720 and 1920x1080, the panel (found in the screenshot, as
+// PanelLayout does) ends left of both pictures, the pictures are where
+// panelRect() puts them (each the whole picture: compared with `raylab
+// render` at that size would take minutes at 1080p, so the picture's rows
+// are checked non-black and the bars black), and the names in the bar end
+// above the pictures.
+TEST(ProjectorLayout, SideBySideKeepsThePicturesClearOfThePanelAtEveryScale) {
+    Xvfb x(1920, 1080);
+    const auto env = windowEnv(x);
+    TempDir dir;
+    const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
+    for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}})
+        for (int scale : {1, 2, 3}) {
+            const std::string size = std::to_string(w) + "x" + std::to_string(h);
+            const std::string what = size + " at UI scale " + std::to_string(scale);
+            writeText(dir / "script.txt", "wait 2\nscreenshot ui.png ui\nscreenshot pic.png\nquit\n");
+            RunResult r = runRaylab({"view", row, "--size", size, "--no-captions", "--side-by-side", "--compare-model",
+                                     "blinn-phong", "--ui-scale", std::to_string(scale), "--script", "script.txt"},
+                                    env, dir.path());
+            ASSERT_EQ(r.status, 0) << what << ": " << r.err;
+            const DisplayImage pic = readPng((dir / "pic.png").string()), ui = readPng((dir / "ui.png").string());
+            const PanelRect panel = panelRect(float(w), float(h), float(scale));
+            const int left = int(std::lround(panel.x + panel.width + 10 * scale)), half = (w - left) / 2;
+            const int rows = int(std::lround(double(h) * half / w)), top = (h - rows) / 2;
+            // The panel: where the window differs from the picture without it.
+            int panelRight = -1;
+            for (int y = 0; y < h; ++y)
+                for (int xx = 0; xx < w; ++xx)
+                    if (std::memcmp(pic.at(xx, y), ui.at(xx, y), 3) != 0 && xx < w / 2) panelRight = std::max(panelRight, xx);
+            ASSERT_GE(panelRight, 0) << what << ": no panel";
+            EXPECT_LT(panelRight, left) << what << ": the panel reaches into the left picture";
+            // The pictures: something drawn in each half's rows, nothing in the bars beside the labels.
+            auto lit = [&](int x0, int x1, int y0, int y1) {
+                int n = 0;
+                for (int y = y0; y < y1; ++y)
+                    for (int xx = x0; xx < x1; ++xx) n += pic.at(xx, y)[0] + pic.at(xx, y)[1] + pic.at(xx, y)[2] > 60;
+                return n;
+            };
+            EXPECT_GT(lit(left, left + half, top, top + rows), 0) << what << ": the left picture";
+            EXPECT_GT(lit(left + half, w, top, top + rows), 0) << what << ": the right picture";
+            EXPECT_EQ(lit(0, w, top + rows + 1, h), 0) << what << ": drawn below the pictures";
+            EXPECT_EQ(lit(0, left, 0, h), 0) << what << ": drawn under the panel";
+            // The names: in the bar, ending above the pictures.
+            int labelBottom = -1;
+            for (int y = 0; y < top; ++y)
+                if (lit(left, w, y, y + 1) > 0) labelBottom = y;
+            EXPECT_GE(labelBottom, 0) << what << ": no names";
+            EXPECT_LT(labelBottom, top) << what;
+            EXPECT_EQ(lit(left, w, labelBottom + 1, top), 0) << what << ": the names run into the pictures";
+            if (w == 1920 && scale == 2) maybeUpdateDocImage(dir / "ui.png", "side-by-side-1080p-scale-2.png");
+            if (w == 1280 && scale == 3) maybeUpdateDocImage(dir / "ui.png", "side-by-side-720p-scale-3.png");
+        }
 }
 
 // Side by side, a pixel is asked of the picture it is in: a click in the
