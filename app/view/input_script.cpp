@@ -95,6 +95,15 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
                     r.fail("drag button must be left, right or middle, not " + quotedValue(button));
             }
             if (!r.atEnd()) c.count = r.integer("a step count", 1);
+        } else if (verb == "slide") {
+            c.kind = K::Slide;
+            c.text = r.word();
+            if (c.text != "roughness" && c.text != "metallic" && c.text != "exposure")
+                r.fail("slide takes roughness, metallic or exposure, not " + quotedValue(c.text));
+            c.startValue = r.number("a start value");
+            c.value = r.number("an end value");
+            c.count = kDefaultDragSteps;
+            if (!r.atEnd()) c.count = r.integer("a step count", 1);
         } else if (verb == "scroll") {
             c.kind = K::Scroll;
             c.value = r.number("wheel steps");
@@ -131,7 +140,7 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
         } else {
             r.fail(
                 "unknown command '" + verb +
-                "' (expected wait, sleep, wait-reload, drag, scroll, key, view, divider, pick, resize, screenshot or quit)");
+                "' (expected wait, sleep, wait-reload, drag, slide, scroll, key, view, divider, pick, resize, screenshot or quit)");
         }
         r.end();
         out.push_back(c);

@@ -19,6 +19,10 @@
 //   divider 0.3                 put the wipe divider at 30% of the width
 //   pick 200 150                ask the pixel at (200,150) (as Ctrl+click): its terms from
 //                               the CPU reference, printed and shown in the panel
+//   slide roughness 0.1 0.9 [STEPS]
+//                               drag a panel slider from 0.1 to 0.9 over STEPS frames
+//                               (default 4), as a hand on the slider does: roughness,
+//                               metallic (of spheres[0]) or exposure
 //   resize 320 240              set the window size (screen coordinates)
 //   screenshot out.png [ui]     write the picture (or, with `ui`, the whole window)
 //   quit                        exit now (status 0, or 1 while an error is shown)
@@ -34,15 +38,16 @@
 namespace rl {
 
 struct ScriptCommand {
-    enum class Kind { Wait, Sleep, WaitReload, Drag, Scroll, Key, View, Divider, Pick, Resize, Screenshot, Quit };
+    enum class Kind { Wait, Sleep, WaitReload, Drag, Slide, Scroll, Key, View, Divider, Pick, Resize, Screenshot, Quit };
     Kind kind = Kind::Wait;
     int line = 0;                   // in the script file, for messages
     int count = 0;                  // Wait: frames; Drag: steps; Scroll: steps
     double seconds = 0;             // Sleep, WaitReload
-    double value = 0;               // Divider
+    double value = 0;               // Divider; Slide: the end value
+    double startValue = 0;          // Slide
     glm::dvec2 from{0.0}, to{0.0};  // Drag; Resize uses `to` as the size, Pick as the pixel
     int button = 0;                 // Drag: 0 left, 1 right, 2 middle (GLFW's numbering)
-    std::string text;               // Key: the key name; View: the view name; Screenshot: the file
+    std::string text;               // Key: the key name; View: the view name; Screenshot: the file; Slide: the value
     bool withUi = false;            // Screenshot
 };
 

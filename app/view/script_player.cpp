@@ -53,6 +53,10 @@ bool ScriptPlayer::start(ScriptTarget& target) {
             target.scriptMouseButton(c.button, true, c.from);
             dragStep_ = 0;
             return false;
+        case K::Slide:
+            target.scriptSlide(c.text, c.startValue);
+            dragStep_ = 0;
+            return false;
         case K::Scroll: target.scriptScroll(c.value); return true;
         case K::Key: target.scriptKey(keys_[next_]); return true;
         case K::View: target.scriptView(views_[next_].first, views_[next_].second); return true;
@@ -88,6 +92,12 @@ bool ScriptPlayer::proceed(ScriptTarget& target) {
             }
             target.scriptMouseButton(c.button, false, c.to);
             return true;
+        }
+        case K::Slide: {
+            ++dragStep_;
+            const double t = double(dragStep_) / c.count;
+            target.scriptSlide(c.text, c.startValue + (c.value - c.startValue) * t);
+            return dragStep_ >= c.count;
         }
         default: return true;
     }

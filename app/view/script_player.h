@@ -19,6 +19,7 @@ public:
     virtual void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) = 0;  // GLFW button numbers
     virtual void scriptCursor(glm::dvec2 pixel) = 0;
     virtual void scriptScroll(double steps) = 0;
+    virtual void scriptSlide(const std::string& value, double to) = 0;  // a panel slider moved
     virtual void scriptKey(const KeyBinding& binding) = 0;
     virtual void scriptView(View view, int bounce) = 0;
     virtual void scriptDivider(double fraction) = 0;

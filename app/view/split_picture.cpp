@@ -32,15 +32,23 @@ void SplitPicture::setScene(const Scene& scene) {
 }
 
 void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgram* right,
-                                    const FrameSettings& frame) {
+                                    const FrameSettings& frame, double leftFraction) {
     sideBySide_ = true;
     width_ = frame.width;
     height_ = frame.height;
-    split_ = std::max(1, frame.width / 2);
+    // Right of the panel (issue 26: it covered most of the left picture).
+    offset_ = std::clamp(int(std::lround(leftFraction * frame.width)), 0, std::max(0, frame.width - 2));
+    const int halfWidth = std::max(1, (frame.width - offset_) / 2);
+    split_ = offset_ + halfWidth;
+    // The whole picture in each half (issue 26: a centre crop showed neither
+    // end of a material row): the window's aspect at half the width, so
+    // half the height, letterboxed in present().
+    halfHeight_ = std::max(1, int(std::lround(double(frame.height) * halfWidth / std::max(frame.width, 1))));
     const ShaderProgram* programs[2] = {left, right};
     for (int i = 0; i < 2; ++i) {
         FrameSettings half = frame;
-        half.width = i == 0 ? split_ : std::max(1, frame.width - split_);
+        half.width = i == 0 ? halfWidth : std::max(1, frame.width - split_);
+        half.height = halfHeight_;
         drawn_[i] = programs[i] != nullptr;
         if (drawn_[i]) sides_[i].draw(*programs[i], half);
     }
@@ -49,6 +57,7 @@ void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgr
 void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame,
                           int splitX) {
     sideBySide_ = false;
+    offset_ = 0;
     width_ = frame.width;
     height_ = frame.height;
     split_ = std::clamp(splitX, 0, width_);
@@ -71,7 +80,7 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     // The blits below cover the window when every side with columns drew;
     // then a clear would be one more pass over every window pixel (on
     // llvmpipe at 1080p, a few ms of a 33 ms budget).
-    const bool covered = width_ > 0 && height_ > 0 && (drawn_[0] || windowSplit == 0) &&
+    const bool covered = !sideBySide_ && width_ > 0 && height_ > 0 && (drawn_[0] || windowSplit == 0) &&
                          (drawn_[1] || windowSplit == windowWidth);
     if (!covered) {
         gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
@@ -80,8 +89,15 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     if (width_ == 0 || height_ == 0) return;
     const bool sameSize = width_ == windowWidth && height_ == windowHeight;
     const int src0[2] = {0, sideBySide_ ? 0 : split_},
-              src1[2] = {split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
-    const int dst0[2] = {0, windowSplit}, dst1[2] = {windowSplit, windowWidth};
+              src1[2] = {sideBySide_ ? split_ - offset_ : split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
+    const int windowOffset = width_ > 0 ? int(std::lround(double(offset_) * windowWidth / width_)) : 0;
+    const int dst0[2] = {windowOffset, windowSplit}, dst1[2] = {windowSplit, windowWidth};
+    // Rows: the whole height, or side by side the letterboxed half picture,
+    // centred (its top (windowHeight - rows) / 2 rows below the window's top).
+    const int srcRows = sideBySide_ ? halfHeight_ : height_;
+    const int dstRows = sideBySide_ ? std::max(1, int(std::lround(double(halfHeight_) * windowHeight / height_)))
+                                    : windowHeight;
+    const int dstY0 = windowHeight - dstRows - (windowHeight - dstRows) / 2, dstY1 = dstY0 + dstRows;
     if (!sameSize) ensureUpscaleSource(width_, height_);
     for (int i = 0; i < 2; ++i) {
         if (!drawn_[i]) continue;
@@ -90,18 +106,18 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
         if (sameSize) {
             // Nearest at 1:1 keeps the pixels exactly as rendered (screenshots
             // match `raylab render`).
-            gl::BlitFramebuffer(src0[i], 0, src1[i], height_, dst0[i], 0, dst1[i], windowHeight, GL_COLOR_BUFFER_BIT,
+            gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, dst0[i], dstY0, dst1[i], dstY1, GL_COLOR_BUFFER_BIT,
                                 GL_NEAREST);
             continue;
         }
         // Reduced: the columns to the 8-bit copy at the same size (cheap:
         // few pixels), then bilinear from it to the window (hides the blocks).
         gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, upscaleFramebuffer_);
-        gl::BlitFramebuffer(src0[i], 0, src1[i], height_, src0[i], 0, src1[i], height_, GL_COLOR_BUFFER_BIT,
+        gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, src0[i], 0, src1[i], srcRows, GL_COLOR_BUFFER_BIT,
                             GL_NEAREST);
         gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
         gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        gl::BlitFramebuffer(src0[i], 0, src1[i], height_, dst0[i], 0, dst1[i], windowHeight, GL_COLOR_BUFFER_BIT,
+        gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, dst0[i], dstY0, dst1[i], dstY1, GL_COLOR_BUFFER_BIT,
                             GL_LINEAR);
     }
     gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);

@@ -19,10 +19,12 @@ public:
     // program (none has built yet) leaves its side black.
     void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX);
 
-    // Side by side: two full pictures, each `frame.width / 2` wide (the
-    // right one takes the odd column), the same camera; present() puts them
-    // in the left and right halves of the window.
-    void renderSideBySide(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame);
+    // Side by side: two whole pictures, the same camera, each half of the
+    // columns right of leftFraction of the width (the panel's; the right one
+    // takes the odd column) and as tall as the window's aspect gives;
+    // present() puts them there, centred vertically.
+    void renderSideBySide(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame,
+                          double leftFraction = 0);  // the pictures start leftFraction of the width from the left
     bool sideBySide() const { return sideBySide_; }
 
     // Copies the last render to the default framebuffer's back buffer,
@@ -31,6 +33,9 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // Side by side: each half is the whole picture scaled into its half
+    // (same aspect as the window, letterboxed), this many rows tall.
+    int halfHeight() const { return halfHeight_; }
 
     SplitPicture();
     ~SplitPicture();
@@ -48,6 +53,8 @@ private:
     GlRenderer sides_[2];
     bool drawn_[2] = {false, false};
     int width_ = 0, height_ = 0, split_ = 0;
+    int offset_ = 0;  // side by side: the columns left of the pictures (the panel's)
+    int halfHeight_ = 0;
     bool sideBySide_ = false;
 };
 

@@ -334,7 +334,7 @@ void ViewApp::renderPicture(bool fullResolution) {
     if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
     try {
         if (sideBySideActive())
-            picture_->renderSideBySide(left, right, frame);
+            picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else
             picture_->render(left, right, frame, split);
         runtimeError_.clear();
@@ -394,7 +394,10 @@ void ViewApp::drawUi(ViewRequests& requests) {
 void ViewApp::handleRequests(const ViewRequests& r) {
     // Values re-upload uniforms only; a new model (the one structural edit
     // of the panel) also compiles that model's program.
-    if (r.sceneEdited) sceneChanged(false);
+    if (r.sceneEdited) {
+        sceneChanged(false);
+        valueChanged();  // a slider being dragged: low resolution until the hand stops
+    }
     if (r.redraw) dirty_ = true;
     if (r.openPreset >= 0) openPreset(r.openPreset);
     if (r.save || r.saveConfirmed) saveScene(r.saveConfirmed);
@@ -504,7 +507,9 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
     int x0 = 0, width = fbWidth_;  // side by side: the half the pixel was asked in
     pictureColumns(sideBySideActive() ? pickedHalf_ : -1, x0, width);
-    const double aspect = double(width) / fbHeight_;
+    int y0 = 0, height = fbHeight_;
+    pictureRows(sideBySideActive() ? pickedHalf_ : -1, y0, height);
+    const double aspect = double(width) / height;
     // Points closer than this along the view direction are clipped away:
     // a ray from the camera itself projects to no point.
     const double nearPlane = 1e-3 * glm::length(camera.target - camera.position);
@@ -516,7 +521,7 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
         if (cb.z < nearPlane) cb += (ca - cb) * ((nearPlane - cb.z) / (ca.z - cb.z));
         auto toPixel = [&](glm::dvec3 c) {
             return glm::dvec2(x0 + (c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * width,
-                              (1.0 - c.y / (c.z * tanHalf)) * 0.5 * fbHeight_);
+                              y0 + (1.0 - c.y / (c.z * tanHalf)) * 0.5 * height);
         };
         const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
         out.push_back({float(pa.x), float(pa.y), float(pb.x), float(pb.y), colour});
@@ -542,19 +547,27 @@ std::vector<OverlayLabel> ViewApp::sideBySideLabels() const {
     const float s = ui_->scale(), margin = 10 * s;
     // Framebuffer pixels per window unit (the panel is laid out in window units).
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();
-    float leftX = margin;
-    if (state_.showPanel) {  // right of the panel (or its strip): never under it
-        const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
-        const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
-        const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
-        leftX = std::max(leftX, float(panelRight * perUnit.x));
-    }
-    return {{leftX, margin, sides_[0].program->label()},
-            {float(fbWidth_ / 2) + margin, margin, sides_[1].program->label()}};
+    (void)perUnit;
+    int x0 = 0, width = 0, x1 = 0;
+    pictureColumns(0, x0, width);
+    pictureColumns(1, x1, width);
+    return {{float(x0) + margin, margin, sides_[0].program->label()},
+            {float(x1) + margin, margin, sides_[1].program->label()}};
 }
 
 std::string ViewApp::windowTitle() const {
     return "raylab view - " + sceneName(scene_.path()) + " - " + implementationsTitle_;
+}
+
+int ViewApp::sideBySideOffset() const {
+    if (!sideBySideActive() || !state_.showPanel) return 0;
+    // Right of the panel (or its strip), as the labels were: both pictures clear of it.
+    const float s = ui_->scale(), margin = 10 * s;
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
+    const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
+    const PanelRect panel = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), s);
+    const float panelRight = state_.panelStrip ? strip : panel.x + panel.width + margin;
+    return std::clamp(int(std::lround(panelRight * perUnit.x)), 0, std::max(0, fbWidth_ - 2));
 }
 
 int ViewApp::bounceViewLimit() const { return std::max(scene_.scene().render.maxBounces, 0) + 1; }

@@ -102,15 +102,23 @@ private:
     bool wipeActive() const { return sides_.size() == 2 && state_.wipe && !state_.sideBySide; }
     bool sideBySideActive() const { return sides_.size() == 2 && state_.sideBySide; }
     void cameraMoved();
+    // A value the picture depends on changed by hand (a slider, a key, a
+    // bounce view): the same low-resolution "moving" state as a drag.
+    void valueChanged();
     // Ask a pixel: the CPU reference's terms at `pixel` (framebuffer, top-left origin).
     void pickPixel(glm::dvec2 pixel);
     // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
     void pictureColumns(int half, int& x0, int& width) const;
+    // Side by side: the rows of the letterboxed half picture (top-left origin).
+    void pictureRows(int half, int& y0, int& height) const;
+    // Side by side: framebuffer columns left of the pictures (the panel's).
+    int sideBySideOffset() const;
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
     void scriptCursor(glm::dvec2 pixel) override;
     void scriptScroll(double steps) override;
+    void scriptSlide(const std::string& value, double to) override;
     void scriptKey(const KeyBinding& binding) override;
     void scriptView(View view, int bounce) override;
     void scriptDivider(double fraction) override;
@@ -148,7 +156,7 @@ private:
     std::vector<double> movingFrameMs_;  // whole frames rendered while moving, for --stats
     std::vector<double> fullRenderMs_;   // renders at full resolution (software renderers), for --stats
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
-    Clock::time_point lastMove_{};    // last camera or window-size change
+    Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
     int framesLeft_ = 0;              // --frames countdown, after the script
     int reloads_ = 0;                 // hot reloads applied (for wait-reload)

@@ -133,6 +133,14 @@ void ViewApp::cameraMoved() {
     dirty_ = true;
 }
 
+void ViewApp::valueChanged() {
+    // Not a camera move, but the same hand on a control: while values keep
+    // changing, each frame renders at the adaptive scale; the full picture
+    // comes back kSettleTime after the last change.
+    lastMove_ = Clock::now();
+    dirty_ = true;
+}
+
 void ViewApp::onKey(int key, int action, int mods) {
     if (action == GLFW_RELEASE || ui_->wantsKeyboard()) return;  // typing in a panel field
     auto binding = bindingFor(key, (mods & GLFW_MOD_CONTROL) != 0);
@@ -193,18 +201,26 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         std::string where;
         pickedHalf_ = -1;
         if (sideBySideActive()) {
-            pickedHalf_ = i < std::max(1, fbWidth_ / 2) ? 0 : 1;
+            int x1 = 0, w = 0;
+            pictureColumns(1, x1, w);
+            if (i < sideBySideOffset()) return;  // left of the pictures (the panel's columns)
+            pickedHalf_ = i < x1 ? 0 : 1;
             if (sides_[std::size_t(pickedHalf_)].model) scene.model = *sides_[std::size_t(pickedHalf_)].model;
             where = std::string(pickedHalf_ == 0 ? " of the left picture" : " of the right picture") + " (" +
                     sides_[std::size_t(pickedHalf_)].program->label() + ")";
         }
-        int x0 = 0, width = fbWidth_;
+        int x0 = 0, width = fbWidth_, y0 = 0, height = fbHeight_;
         pictureColumns(pickedHalf_, x0, width);
-        picked_ = ref::explainPixel(scene, camera, width, fbHeight_, i - x0, fbHeight_ - 1 - row);
+        pictureRows(pickedHalf_, y0, height);
+        if (row < y0 || row >= y0 + height) {  // side by side: the bars above and below the pictures
+            pickedHalf_ = -1;
+            return;
+        }
+        picked_ = ref::explainPixel(scene, camera, width, height, i - x0, height - 1 - (row - y0));
         state_.pickedText = ref::formatPixelTerms(scene, *picked_);
         state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
         state_.revealPicked = true;
-        std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row << ") from the top left" << where << "\n"
+        std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row - y0 << ") from the top left" << where << "\n"
                   << state_.pickedText << std::flush;
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -215,9 +231,19 @@ void ViewApp::pictureColumns(int half, int& x0, int& width) const {
     x0 = 0;
     width = fbWidth_;
     if (half < 0 || !sideBySideActive()) return;
-    const int split = std::max(1, fbWidth_ / 2);  // as SplitPicture::renderSideBySide at full resolution
-    x0 = half == 0 ? 0 : split;
-    width = half == 0 ? split : std::max(1, fbWidth_ - split);
+    // As SplitPicture::renderSideBySide at full resolution.
+    const int offset = sideBySideOffset(), split = offset + std::max(1, (fbWidth_ - offset) / 2);
+    x0 = half == 0 ? offset : split;
+    width = half == 0 ? split - offset : std::max(1, fbWidth_ - split);
+}
+
+void ViewApp::pictureRows(int half, int& y0, int& height) const {
+    y0 = 0;
+    height = fbHeight_;
+    if (half < 0 || !sideBySideActive()) return;
+    const int offset = sideBySideOffset(), halfWidth = std::max(1, (fbWidth_ - offset) / 2);  // as SplitPicture
+    height = std::max(1, int(std::lround(double(fbHeight_) * halfWidth / std::max(fbWidth_, 1))));
+    y0 = (fbHeight_ - height) / 2;
 }
 
 void ViewApp::onScroll(double steps) {
@@ -280,7 +306,7 @@ void ViewApp::perform(Action action, int argument) {
                 std::clamp(state_.viewBounce + (action == Action::BounceUp ? 1 : -1), 0, bounceViewLimit());
             toast("view: bounce " + std::to_string(state_.viewBounce) +
                   (state_.viewBounce > render.maxBounces ? " (beyond max bounces: black)" : ""));
-            dirty_ = true;
+            valueChanged();
             break;
         case Action::ExposureDown:
         case Action::ExposureUp:
@@ -358,7 +384,7 @@ void ViewApp::perform(Action action, int argument) {
     }
     if (sceneEdited) {
         picture_->setScene(scene_.scene());
-        dirty_ = true;
+        valueChanged();  // exposure, gamma, reflections: low resolution while the keys are pressed
     }
 }
 
@@ -368,6 +394,20 @@ void ViewApp::scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) {
 }
 void ViewApp::scriptCursor(glm::dvec2 pixel) { onCursor(pixel); }
 void ViewApp::scriptScroll(double steps) { onScroll(steps); }
+void ViewApp::scriptSlide(const std::string& value, double to) {
+    // What the panel's slider does to the scene (panel.cpp), then what
+    // handleRequests does with a panel edit.
+    Scene& scene = scene_.scene();
+    if (value == "exposure") scene.render.exposure = std::clamp(to, kMinExposure, kMaxExposure);
+    if (!scene.spheres.empty()) {  // the first sphere's slider in the panel's Materials
+        Material& m = scene.spheres[0].material;
+        if (value == "roughness") m.roughness = std::clamp(to, 0.0, 1.0);
+        if (value == "metallic") m.metallic = std::clamp(to, 0.0, 1.0);
+    }
+    ViewRequests edit;
+    edit.sceneEdited = true;
+    handleRequests(edit);
+}
 void ViewApp::scriptKey(const KeyBinding& binding) { perform(binding.action, binding.argument); }
 void ViewApp::scriptView(View view, int bounce) {
     state_.view = view;

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -702,6 +703,51 @@ TEST(LectureDrag, AdaptiveScaleGoesAsLowAsTheFrameNeeds) {
     if (stillMs > 16 * budget) EXPECT_LT(scale, 0.25) << "a quarter width would not keep 30 fps";
 }
 
+// Issue 26, "responsive everywhere": a slider drag, keys that change values
+// and the bounce keys enter the same low-resolution "moving" state as a
+// camera drag (the view's --stats reports the frames rendered while moving;
+// before, a value change rendered every frame at full resolution and no
+// frame counted as moving). 640x360 keeps it small; on llvmpipe a full D
+// view there takes more than a 30 fps budget, so the scale also drops.
+TEST(LectureDrag, SlidersAndValueKeysUseTheAdaptiveResolution) {
+    Xvfb x(640, 360);
+    TempDir dir;
+    const auto env = windowEnv(x);
+    const std::vector<std::pair<std::string, std::string>> scripts = {
+        {"slider", "wait 2\nview d\nwait 2\nslide roughness 0.05 0.95 24\nquit\n"},
+        {"keys", "wait 2\nkey Up\nwait 1\nkey Up\nwait 1\nkey Down\nwait 1\nkey ]\nwait 1\nkey [\nwait 1\nquit\n"},
+    };
+    for (const auto& [name, text] : scripts) {
+        SCOPED_TRACE(name);
+        writeText(dir / "s.txt", text);
+        RunResult r = runRaylab({"view", lectureScene(), "--size", "640x360", "--no-panel", "--script", "s.txt",
+                                 "--stats"},
+                                env, dir.path());
+        ASSERT_EQ(r.status, 0) << r.err;
+        const std::size_t moving = r.out.find("raylab view: moving:");
+        ASSERT_NE(moving, std::string::npos) << "no frame rendered in the moving state:\n" << r.out;
+        int frames = 0, w = 0, h = 0;
+        double ms = 0, fps = 0, scale = 0;
+        ASSERT_EQ(std::sscanf(r.out.c_str() + moving,
+                              "raylab view: moving: %d frames, median %lf ms per frame (%lf fps), render scale down to "
+                              "%lf (%dx%d)",
+                              &frames, &ms, &fps, &scale, &w, &h),
+                  6)
+            << r.out;
+        std::printf("%s at 640x360: %d moving frames, median %.1f ms (%.1f fps), scale down to %.3f\n", name.c_str(),
+                    frames, ms, fps, scale);
+        EXPECT_GE(frames, name == "slider" ? 20 : 3) << "each step of the change renders in the moving state";
+        const std::size_t still = r.out.find("raylab view: still:");
+        double stillMs = 0;
+        int stillRenders = 0;
+        if (still != std::string::npos &&
+            std::sscanf(r.out.c_str() + still, "raylab view: still: %d renders at full resolution, median %lf ms",
+                        &stillRenders, &stillMs) == 2 &&
+            name == "slider" && stillMs > 2 * 1000.0 / 30.0)
+            EXPECT_LT(scale, 1.0) << "a full render over two budgets: the slider drag renders fewer pixels";
+    }
+}
+
 // ---- recording ---------------------------------------------------------------------------
 
 // `raylab record --orbit 90`: the first frame is the scene's camera, the last
@@ -859,8 +905,10 @@ TEST_F(LectureTest, RecordWithoutFfmpegSaysWhatToInstall) {
 // ---- side by side ------------------------------------------------------------------------
 
 // --side-by-side --compare-model blinn-phong: the left half is the scene as
-// `raylab render` draws it at half the width, the right half the same scene
-// with Blinn-Phong; the names sit on the picture, right of the panel.
+// `raylab render` draws it at half the width and half the height (the whole
+// picture scaled into its half, letterboxed: issue 26, a centre crop showed
+// neither end of the metallic row), the right half the same scene with
+// Blinn-Phong; the names sit in the bar above the pictures, right of the panel.
 TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
     // 960 wide: the panel (340 px) leaves room for the left label in the left half.
@@ -873,59 +921,119 @@ TEST_F(LectureTest, SideBySideShowsTwoFullPictures) {
     Scene blinn = loadSceneFile(row).scene;
     blinn.model.blinnPhong = true;
     saveSceneFile(blinn, (dir / "blinn.json").string());
-    const std::string half = std::to_string(kWidth / 2) + "x" + std::to_string(kHeight);
+    // Both pictures right of the panel (10 px margin at scale 1), each half
+    // of what is left, at the window's aspect, centred vertically.
+    const PanelRect panel = panelRect(kWidth, kHeight, 1);
+    const int kLeft = int(std::lround(panel.x + panel.width + 10)), kHalf = (kWidth - kLeft) / 2;
+    const int kRows = int(std::lround(double(kHeight) * kHalf / kWidth)), kTop = (kHeight - kRows) / 2;
+    const std::string half = std::to_string(kHalf) + "x" + std::to_string(kRows);
+    const std::string rightHalf = std::to_string(kWidth - kLeft - kHalf) + "x" + std::to_string(kRows);
     ASSERT_EQ(runRaylab({"render", row, "--size", half, "-o", "left.png"}, env, dir.path()).status, 0);
-    ASSERT_EQ(runRaylab({"render", (dir / "blinn.json").string(), "--size", half, "-o", "right.png"}, env, dir.path())
+    ASSERT_EQ(runRaylab({"render", (dir / "blinn.json").string(), "--size", rightHalf, "-o", "right.png"}, env, dir.path())
                   .status,
               0);
     const DisplayImage both = shot("both.png");
-    // The labels sit at the top: compare below them.
-    auto below = [](const DisplayImage& image, int rows) {
-        DisplayImage out{image.width, image.height - rows, {}};
-        out.rgb.assign(image.rgb.begin() + std::ptrdiff_t(rows) * image.width * 3, image.rgb.end());
+    auto rows = [](const DisplayImage& image, int y0, int y1) {
+        DisplayImage out{image.width, y1 - y0, {}};
+        out.rgb.assign(image.rgb.begin() + std::ptrdiff_t(y0) * image.width * 3,
+                       image.rgb.begin() + std::ptrdiff_t(y1) * image.width * 3);
         return out;
     };
     const int labelRows = 40;
-    EXPECT_LE(comparePictures(below(columns(both, 0, kWidth / 2), labelRows), below(shot("left.png"), labelRows))
-                  .offFraction,
+    ASSERT_LE(labelRows, kTop) << "the labels fit in the bar above the pictures";
+    EXPECT_LE(comparePictures(rows(columns(both, kLeft, kLeft + kHalf), kTop, kTop + kRows), shot("left.png")).offFraction,
               0.005)
-        << "left: the scene's model, the full picture at half the width";
-    EXPECT_LE(comparePictures(below(columns(both, kWidth / 2, kWidth), labelRows), below(shot("right.png"), labelRows))
-                  .offFraction,
-              0.005)
+        << "left: the scene's model, the whole picture in its half";
+    EXPECT_LE(
+        comparePictures(rows(columns(both, kLeft + kHalf, kWidth), kTop, kTop + kRows), shot("right.png")).offFraction,
+        0.005)
         << "right: Blinn-Phong";
-    // The left label starts right of the panel (340 px wide at scale 1, at most 45% of 480).
-    const PanelRect panel = panelRect(kWidth, kHeight, 1);
-    // The label is where the picture differs from the plain render in the
-    // top rows: its leftmost column must be right of the panel.
-    const DisplayImage left = shot("left.png");
+    // The left label starts right of the panel.
+    // The label is what is not black in the bar above the picture: its
+    // leftmost column must be right of the panel.
     int leftmost = kWidth;
     for (int y = 0; y < labelRows; ++y)
-        for (int x = 0; x < kWidth / 2; ++x)
+        for (int x = int(panel.x + panel.width) + 1; x < kLeft + kHalf; ++x)
             for (int c = 0; c < 3; ++c)
-                if (std::abs(int(both.at(x, y)[c]) - int(left.at(x, y)[c])) > 40) leftmost = std::min(leftmost, x);
-    ASSERT_LT(leftmost, kWidth / 2) << "no label on the left picture";
-    EXPECT_GE(leftmost, int(panel.x + panel.width)) << "the left label sits under the panel";
+                if (int(both.at(x, y)[c]) > 40) leftmost = std::min(leftmost, x);
+    ASSERT_LT(leftmost, kLeft + kHalf) << "no label on the left picture";
+    EXPECT_GE(leftmost, kLeft) << "the left label starts over its picture, right of the panel";
     maybeUpdateDocImage(dir / "both-ui.png", "side-by-side.png");
+}
+
+// Issue 26, projector layout: side by side at UI scales 1, 2 and 3 on
+// 1280x720 and 1920x1080, the panel (found in the screenshot, as
+// PanelLayout does) ends left of both pictures, the pictures are where
+// panelRect() puts them (each the whole picture: compared with `raylab
+// render` at that size would take minutes at 1080p, so the picture's rows
+// are checked non-black and the bars black), and the names in the bar end
+// above the pictures.
+TEST(ProjectorLayout, SideBySideKeepsThePicturesClearOfThePanelAtEveryScale) {
+    Xvfb x(1920, 1080);
+    const auto env = windowEnv(x);
+    TempDir dir;
+    const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
+    for (const auto& [w, h] : {std::pair{1280, 720}, std::pair{1920, 1080}})
+        for (int scale : {1, 2, 3}) {
+            const std::string size = std::to_string(w) + "x" + std::to_string(h);
+            const std::string what = size + " at UI scale " + std::to_string(scale);
+            writeText(dir / "script.txt", "wait 2\nscreenshot ui.png ui\nscreenshot pic.png\nquit\n");
+            RunResult r = runRaylab({"view", row, "--size", size, "--no-captions", "--side-by-side", "--compare-model",
+                                     "blinn-phong", "--ui-scale", std::to_string(scale), "--script", "script.txt"},
+                                    env, dir.path());
+            ASSERT_EQ(r.status, 0) << what << ": " << r.err;
+            const DisplayImage pic = readPng((dir / "pic.png").string()), ui = readPng((dir / "ui.png").string());
+            const PanelRect panel = panelRect(float(w), float(h), float(scale));
+            const int left = int(std::lround(panel.x + panel.width + 10 * scale)), half = (w - left) / 2;
+            const int rows = int(std::lround(double(h) * half / w)), top = (h - rows) / 2;
+            // The panel: where the window differs from the picture without it.
+            int panelRight = -1;
+            for (int y = 0; y < h; ++y)
+                for (int xx = 0; xx < w; ++xx)
+                    if (std::memcmp(pic.at(xx, y), ui.at(xx, y), 3) != 0 && xx < w / 2) panelRight = std::max(panelRight, xx);
+            ASSERT_GE(panelRight, 0) << what << ": no panel";
+            EXPECT_LT(panelRight, left) << what << ": the panel reaches into the left picture";
+            // The pictures: something drawn in each half's rows, nothing in the bars beside the labels.
+            auto lit = [&](int x0, int x1, int y0, int y1) {
+                int n = 0;
+                for (int y = y0; y < y1; ++y)
+                    for (int xx = x0; xx < x1; ++xx) n += pic.at(xx, y)[0] + pic.at(xx, y)[1] + pic.at(xx, y)[2] > 60;
+                return n;
+            };
+            EXPECT_GT(lit(left, left + half, top, top + rows), 0) << what << ": the left picture";
+            EXPECT_GT(lit(left + half, w, top, top + rows), 0) << what << ": the right picture";
+            EXPECT_EQ(lit(0, w, top + rows + 1, h), 0) << what << ": drawn below the pictures";
+            EXPECT_EQ(lit(0, left, 0, h), 0) << what << ": drawn under the panel";
+            // The names: in the bar, ending above the pictures.
+            int labelBottom = -1;
+            for (int y = 0; y < top; ++y)
+                if (lit(left, w, y, y + 1) > 0) labelBottom = y;
+            EXPECT_GE(labelBottom, 0) << what << ": no names";
+            EXPECT_LT(labelBottom, top) << what;
+            EXPECT_EQ(lit(left, w, labelBottom + 1, top), 0) << what << ": the names run into the pictures";
+            if (w == 1920 && scale == 2) maybeUpdateDocImage(dir / "ui.png", "side-by-side-1080p-scale-2.png");
+            if (w == 1280 && scale == 3) maybeUpdateDocImage(dir / "ui.png", "side-by-side-720p-scale-3.png");
+        }
 }
 
 // Side by side, a pixel is asked of the picture it is in: a click in the
 // right half (Blinn-Phong) prints the CPU reference's values of that half's
 // pixel in the Blinn-Phong model.
 TEST_F(LectureTest, SideBySideAsksTheHalfThePixelIsIn) {
-    const int half = 480, x = 268, y = 122;  // the blue sphere in a 480x270 picture, as above
+    // The blue sphere in the 480x135 half picture, letterboxed 67 rows below the top.
+    const int half = 480, rowsTall = 135, top = 67, x = 254, y = 61;
     writeText(dir / "script.txt", "wait 1\nscreenshot before.png\npick " + std::to_string(half + x) + " " +
-                                      std::to_string(y) + "\nwait 1\nscreenshot picked.png\nquit\n");
+                                      std::to_string(top + y) + "\nwait 1\nscreenshot picked.png\nquit\n");
     RunResult r = runRaylab({"view", lectureScene(), "--size", "960x270", "--no-panel", "--no-captions", "--side-by-side",
                              "--compare-model", "blinn-phong", "--script", "script.txt"},
                             env, dir.path());
     ASSERT_EQ(r.status, 0) << r.err;
-    ASSERT_NE(r.out.find("raylab: ask a pixel at (268, 122) from the top left of the right picture"), std::string::npos)
+    ASSERT_NE(r.out.find("raylab: ask a pixel at (254, 61) from the top left of the right picture"), std::string::npos)
         << r.out;
     Scene blinn = loadSceneFile(lectureScene()).scene;
     blinn.model.blinnPhong = true;
     const ref::CameraBasis basis = ref::cameraBasis(blinn.camera);
-    const glm::dvec3 ray = ref::cameraRayDirection(glm::dvec2(x + 0.5, kHeight - 1 - y + 0.5), glm::dvec2(half, kHeight),
+    const glm::dvec3 ray = ref::cameraRayDirection(glm::dvec2(x + 0.5, rowsTall - 1 - y + 0.5), glm::dvec2(half, rowsTall),
                                                    basis.fovYRadians, basis.right, basis.up, basis.forward);
     const glm::dvec3 printed = printedVector(r.out, "radiance");
     expectRelative(printed, ref::traceRadiance(blinn, basis.position, ray), "radiance of the Blinn-Phong half");
@@ -935,7 +1043,7 @@ TEST_F(LectureTest, SideBySideAsksTheHalfThePixelIsIn) {
     // that half's camera): pixels change around it.
     const DisplayImage before = shot("before.png"), picked = shot("picked.png");
     int near = 0;
-    for (int yy = y - 6; yy <= y + 6; ++yy)
+    for (int yy = top + y - 6; yy <= top + y + 6; ++yy)
         for (int xx = half + x - 6; xx <= half + x + 6; ++xx)
             for (int c = 0; c < 3; ++c) near += std::abs(int(picked.at(xx, yy)[c]) - int(before.at(xx, yy)[c])) > 40;
     EXPECT_GT(near, 10) << "the rays are drawn from the asked pixel of the right half";
