@@ -1,0 +1,63 @@
+#include "render/scene_facts.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl::scene_facts {
+
+// Whether sphere j can meet a segment from light L to a point of sphere k:
+// j must meet the cone from L around k, no farther than k's far side.
+// Conservative: margins far above float32's rounding of the hit point.
+bool mayBlock(const glm::dvec3& L, const glm::dvec3& ck, double rk, const glm::dvec3& cj, double rj) {
+    glm::dvec3 toK = ck - L, toJ = cj - L;
+    double dk = glm::length(toK), dj = glm::length(toJ);
+    if (dj <= rj * (1 + 1e-6)) return true;  // the light inside (or on) j
+    if (dk <= rk * (1 + 1e-6)) return true;  // inside k: every direction
+    double slack = 1e-5 * (dk + rk + dj + rj);
+    if (dj - rj > dk + rk + slack) return false;  // j wholly beyond k's far side
+    double cosPhi = std::clamp(glm::dot(toK, toJ) / (dk * dj), -1.0, 1.0);
+    double phi = std::acos(cosPhi);
+    double reach = std::asin(std::min(1.0, rk / dk)) + std::asin(std::min(1.0, rj / dj));
+    return phi <= reach + 1e-5 + slack / dk;
+}
+
+Facts factsOf(const Scene& scene) {
+    Facts f;
+    const glm::dvec3 eye = scene.camera.position;
+    f.n = int(scene.spheres.size());
+    // Lengths in units of a power of two near the scene's size (exact in
+    // double): a scene scaled by 1e20 or 1e-20 fits float32 like any other.
+    double extent = 0;
+    for (const Sphere& s : scene.spheres) extent = std::max(extent, glm::length(s.center - eye) + s.radius);
+    for (const Light& l : scene.lights) extent = std::max(extent, glm::length(l.position - eye));
+    f.scale = extent > 0 ? std::ldexp(1.0, -std::ilogb(extent)) : 1.0;
+    for (const Sphere& s : scene.spheres) {
+        glm::dvec3 c = (s.center - eye) * f.scale;
+        double r = s.radius * f.scale;
+        f.c.push_back(c);
+        f.r.push_back(r);
+        f.cc.push_back(glm::dot(c, c) - r * r);
+        if (f.cc.back() <= 0) f.simple = false;
+    }
+    for (int i = 0; i < f.n; ++i)
+        for (int j = i + 1; j < f.n; ++j)
+            if (glm::length(f.c[i] - f.c[j]) < f.r[i] + f.r[j]) f.simple = false;
+    for (const Light& l : scene.lights) f.light.push_back((l.position - eye) * f.scale);
+    f.huge.assign(f.n, false);
+    for (int i = 0; i < f.n && f.n > 1; ++i) {
+        double smallest = 1e300;
+        for (int j = 0; j < f.n; ++j)
+            if (j != i) smallest = std::min(smallest, f.r[j]);
+        f.huge[i] = f.r[i] > 64 * smallest;
+    }
+    f.may.assign(f.light.size(), std::vector<std::vector<bool>>(f.n, std::vector<bool>(f.n, false)));
+    for (std::size_t l = 0; l < f.light.size(); ++l)
+        for (int k = 0; k < f.n; ++k)
+            for (int j = 0; j < f.n; ++j)
+                if (j != k) f.may[l][k][j] = mayBlock(f.light[l], f.c[k], f.r[k], f.c[j], f.r[j]);
+    return f;
+}
+
+}  // namespace rl::scene_facts

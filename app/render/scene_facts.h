@@ -1,0 +1,66 @@
+// What a per-scene shader generator knows about its scene, computed on the
+// host in double, and how it writes numbers as GLSL: shared by the bench's
+// expert yardstick (bench/expert.cpp) and the course's picture program
+// (render/course_program.cpp). Each writes its own shader; only these facts
+// of the scene and the literal forms are common.
+#pragma once
+
+#include "core/scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace rl::scene_facts {
+
+inline constexpr double kPi = 3.14159265358979323846;
+
+// A float32 literal that reads back as the same float.
+inline std::string num(double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.9g", double(float(v)));
+    std::string s = text;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+inline std::string vec(const glm::dvec3& v) { return "vec3(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+
+template <class T, class F>
+std::string array(const char* type, const std::vector<T>& items, F&& text) {
+    std::string s = std::string(type) + "[" + std::to_string(items.size()) + "](";
+    for (std::size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + text(items[i]);
+    return s + ")";
+}
+
+inline std::string bit(int j) { return std::to_string(1u << (j % 32)) + "u"; }
+
+// What the host knows about the scene, in double.
+struct Facts {
+    int n = 0;                       // spheres
+    double scale = 1;                // every length below is multiplied by it
+    std::vector<glm::dvec3> c;       // centres relative to the camera
+    std::vector<double> r, cc;       // radius, |c|^2 - R^2 (camera outside where > 0)
+    std::vector<glm::dvec3> light;   // lights relative to the camera
+    // Nothing starts inside a sphere: the camera is outside every sphere and
+    // no two spheres overlap, so every hit is from outside, every bounce ray
+    // starts outside every sphere and no point of a surface lies inside
+    // another sphere (touching is allowed).
+    bool simple = true;
+    // huge[i]: a sphere far larger than every other (a ground): the float
+    // |p - c|^2 - R^2 of a point near it cancels, so rays that start on
+    // another sphere take it from that sphere's centre (constants per pair).
+    std::vector<bool> huge;
+    // may[l][k]: bit j set when sphere j can block light l for some point of
+    // receiver k (j != k); the receiver itself is handled apart.
+    std::vector<std::vector<std::vector<bool>>> may;
+};
+
+// Whether sphere j can meet a segment from light L to a point of sphere k
+// (scene_facts.cpp).
+bool mayBlock(const glm::dvec3& L, const glm::dvec3& ck, double rk, const glm::dvec3& cj, double rj);
+
+Facts factsOf(const Scene& scene);
+
+}  // namespace rl::scene_facts
