@@ -72,6 +72,28 @@ std::string describe(const ImageDiff& d) {
     return text;
 }
 
+std::string shellQuoted(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+void copyRepositoryFiles(const std::filesystem::path& to) {
+    namespace fs = std::filesystem;
+    const std::string root = sourceRoot().string();
+    CommandResult files = runShell("git -C " + shellQuoted(root) + " ls-files --cached --others --exclude-standard");
+    if (files.status != 0) throw std::runtime_error("git ls-files in " + root + ": " + files.output);
+    std::istringstream in(files.output);
+    for (std::string rel; std::getline(in, rel);) {
+        fs::path from = sourceRoot() / rel;
+        std::error_code ec;
+        if (!fs::is_regular_file(from, ec)) continue;  // deleted in the working tree
+        fs::create_directories((to / rel).parent_path());
+        fs::copy_file(from, to / rel, fs::copy_options::overwrite_existing);
+        fs::permissions(to / rel, fs::status(from).permissions());
+    }
+}
+
 std::vector<std::string> unitFileNames(const std::string& kind) {
     std::vector<std::string> names;
     for (const ExerciseInfo& e : allExercises()) {

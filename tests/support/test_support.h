@@ -29,6 +29,14 @@ std::filesystem::path freshTempDir(const std::string& name);
 void writeText(const std::filesystem::path& path, const std::string& text);
 std::string readText(const std::filesystem::path& path);
 
+// `s` in single quotes for the shell ('\'' for each quote inside).
+std::string shellQuoted(const std::string& s);
+
+// Copies the repository into `to` as a clone would have it: the files git
+// tracks (and new ones it does not ignore), from the working tree, with their
+// permissions; files deleted in the working tree are left out. No build.
+void copyRepositoryFiles(const std::filesystem::path& to);
+
 // The files of kind "mutants" or "alternatives" of every exercise of the
 // course (course/<unit>/<kind>/*.glsl), named "<unit>--<stem>.glsl" as test
 // parameters, sorted.

@@ -34,11 +34,7 @@ using namespace rl;
 
 namespace {
 
-std::string quoted(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
+using test::shellQuoted;
 
 // A copy of the instructor's repository: what git tracks or would add, from
 // the working tree, and solutions/ (the build writes it). Under this build's
@@ -49,17 +45,7 @@ fs::path repositoryCopy(const std::string& name) {
     std::error_code ec;
     fs::remove_all(copy, ec);
     fs::create_directories(copy);
-    test::CommandResult files = test::runShell("git -C " + quoted(sourceRoot().string()) +
-                                               " ls-files --cached --others --exclude-standard");
-    if (files.status != 0) throw std::runtime_error("git ls-files: " + files.output);
-    std::istringstream in(files.output);
-    for (std::string rel; std::getline(in, rel);) {
-        fs::path from = sourceRoot() / rel;
-        if (!fs::is_regular_file(from, ec)) continue;  // deleted in the working tree
-        fs::create_directories((copy / rel).parent_path());
-        fs::copy_file(from, copy / rel, fs::copy_options::overwrite_existing);
-        fs::permissions(copy / rel, fs::status(from).permissions());
-    }
+    test::copyRepositoryFiles(copy);
     return copy;
 }
 
@@ -118,7 +104,7 @@ std::vector<std::string> commandsOf(const std::string& text) {
 }
 
 test::CommandResult runIn(const fs::path& dir, const std::string& command) {
-    return test::runShell("cd " + quoted(dir.string()) + " && " + command);
+    return test::runShell("cd " + shellQuoted(dir.string()) + " && " + command);
 }
 
 // A class of one student whose folder is `impl`'s files: the grade's CSV header.

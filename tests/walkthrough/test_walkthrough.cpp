@@ -34,11 +34,7 @@ using walkthrough::DocCommand;
 
 namespace {
 
-std::string shellQuoted(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
+using test::shellQuoted;
 
 test::CommandResult shell(const std::string& command) { return test::runShell(command); }
 
@@ -47,18 +43,7 @@ test::CommandResult shell(const std::string& command) { return test::runShell(co
 // repository of its own, so that `git status` shows what the commands leave.
 fs::path scratchClone(const std::string& name) {
     fs::path copy = test::freshTempDir(name);
-    test::CommandResult files =
-        shell("git -C " + shellQuoted(sourceRoot().string()) + " ls-files --cached --others --exclude-standard");
-    if (files.status != 0) throw std::runtime_error("git ls-files in " + sourceRoot().string() + ": " + files.output);
-    std::istringstream in(files.output);
-    for (std::string rel; std::getline(in, rel);) {
-        fs::path from = sourceRoot() / rel;
-        std::error_code ec;
-        if (!fs::is_regular_file(from, ec)) continue;  // deleted in the working tree
-        fs::create_directories((copy / rel).parent_path());
-        fs::copy_file(from, copy / rel, fs::copy_options::overwrite_existing);
-        fs::permissions(copy / rel, fs::status(from).permissions());
-    }
+    test::copyRepositoryFiles(copy);
     // solutions/ is what the build writes from the units (cmake/course.cmake):
     // a built instructor's repository has it.
     std::error_code ec;
