@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <optional>
 
 namespace rl {
 namespace {
@@ -34,8 +35,15 @@ CaptionLayer::CaptionLayer() {
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.LogFilename = nullptr;
+    io.Fonts->AddFontDefault();  // built now: textWidth() measures before the first frame
+    io.Fonts->Build();
     ImGui_ImplOpenGL3_Init("#version 150");  // as imgui_layer.cpp: the 3.3 core and macOS's 4.1 contexts
     ImGui::SetCurrentContext(previous);
+}
+
+float CaptionLayer::textWidth(const std::string& text, float fontSize) const {
+    ContextScope scope(context_);
+    return ImGui::GetIO().Fonts->Fonts[0]->CalcTextSizeA(fontSize, FLT_MAX, 0, text.c_str()).x;
 }
 
 CaptionLayer::~CaptionLayer() {
@@ -45,9 +53,12 @@ CaptionLayer::~CaptionLayer() {
     ImGui::SetCurrentContext(nullptr);  // the scope restores the panel's
 }
 
-void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std::vector<OverlaySegment>& rays,
-                        const std::vector<OverlayLabel>& labels, int width, int height, float uiScale) {
-    if (width <= 0 || height <= 0) return;
+CaptionLayer::Placement CaptionLayer::draw(const ViewCaption& caption, bool showCaption,
+                                           const std::vector<OverlaySegment>& rays,
+                                           const std::vector<OverlayLabel>& labels, int width, int height,
+                                           float uiScale, const std::vector<LayoutRect>& avoid, float topReserved) {
+    Placement placed;
+    if (width <= 0 || height <= 0) return placed;
     ContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(width), float(height));  // framebuffer pixels, as captionLayout()
@@ -56,50 +67,106 @@ void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std:
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
 
-    const CaptionLayout l = captionLayout(width, height, uiScale);
+    const CaptionLayout base = captionLayout(width, height, uiScale);
     ImDrawList* draw = ImGui::GetForegroundDrawList();
+    ImFont* font = ImGui::GetFont();
     // Rays: 2 px lines (scaled) with a dark outline, visible on any picture.
     for (const OverlaySegment& r : rays) {
-        draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), IM_COL32(0, 0, 0, 200), 4 * l.scale);
-        draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), r.colour, 2 * l.scale);
+        draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), IM_COL32(0, 0, 0, 200), 4 * base.scale);
+        draw->AddLine(ImVec2(r.x0, r.y0), ImVec2(r.x1, r.y1), r.colour, 2 * base.scale);
     }
     for (const OverlayLabel& label : labels) {
-        const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(l.fontSize, FLT_MAX, 0, label.text.c_str());
-        draw->AddRectFilled(ImVec2(label.x, label.y), ImVec2(label.x + size.x + 2 * l.pad, label.y + size.y + 2 * l.pad),
-                            kBox, 4 * l.scale);
-        draw->AddText(ImGui::GetFont(), l.fontSize, ImVec2(label.x + l.pad, label.y + l.pad), kTitle, label.text.c_str());
+        const float wrap = label.wrap > 0 ? std::max(1.0f, label.wrap - 2 * base.pad) : 0.0f;
+        const ImVec2 size = font->CalcTextSizeA(base.fontSize, FLT_MAX, wrap, label.text.c_str());
+        const LayoutRect box{label.x, label.y, label.x + size.x + 2 * base.pad, label.y + size.y + 2 * base.pad};
+        draw->AddRectFilled(ImVec2(box.x0, box.y0), ImVec2(box.x1, box.y1), kBox, 4 * base.scale);
+        draw->AddText(font, base.fontSize, ImVec2(label.x + base.pad, label.y + base.pad), kTitle, label.text.c_str(),
+                      nullptr, wrap);
+        placed.labels.push_back(box);
+        topReserved = std::max(topReserved, box.y1);  // the caption stays below the names
     }
     if (!showCaption) {
         ImGui::Render();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        return;
+        return placed;
     }
-    ImFont* font = ImGui::GetFont();
-    const float size = l.fontSize, s = l.scale;
 
-    // The lines above the bar, bottom up: scale label, formula, model, title.
+    // The lines above the bar, bottom up: scale label, formula, model, title;
+    // compact: the title and the formula only.
     struct Line {
         const std::string* text;
         ImU32 colour;
+        bool compact;  // kept in the compact caption
     };
-    const Line lines[] = {{&caption.title, kTitle},
-                          {&caption.model, kText},
-                          {&caption.formula, kFormula},
-                          {&caption.scale.label, kText}};
-    float widest = l.barWidth, textHeight = 0;
-    ImVec2 sizes[4];
+    const Line lines[] = {{&caption.title, kTitle, true},
+                          {&caption.model, kText, false},
+                          {&caption.formula, kFormula, true},
+                          {&caption.scale.label, kText, false}};
+    // One candidate: where its box, bar and lines go.
+    struct Geometry {
+        CaptionLayout l;
+        bool compact = false;
+        float left = 0, top = 0;
+        ImVec2 sizes[4];
+        LayoutRect box;
+    };
+    auto geometry = [&](float scale, bool compact, bool atTop) {
+        Geometry g;
+        g.l = captionLayout(width, height, scale);
+        g.compact = compact;
+        float widest = g.l.barWidth, textHeight = 0;
+        for (int i = 0; i < 4; ++i) {
+            g.sizes[i] = compact && !lines[i].compact
+                             ? ImVec2(0, 0)
+                             : font->CalcTextSizeA(g.l.fontSize, FLT_MAX, g.l.textWidth, lines[i].text->c_str());
+            if (compact && !lines[i].compact) continue;
+            widest = std::max(widest, g.sizes[i].x);
+            textHeight += g.sizes[i].y + 2 * g.l.scale;
+        }
+        g.left = g.l.right - g.l.pad - widest;
+        g.top = g.l.barY - 4 * g.l.scale - textHeight;
+        if (atTop) {  // the same box, moved up under the reserved rows
+            const float dy = (topReserved + g.l.margin + g.l.pad) - g.top;
+            g.top += dy;
+            g.l.barY += dy;
+            g.l.bottom += dy;
+        }
+        g.box = {g.left - g.l.pad, g.top - g.l.pad, g.l.right, g.l.bottom};
+        return g;
+    };
+    auto fits = [&](const Geometry& g) {
+        if (g.box.x0 < 0 || g.box.y0 < topReserved || g.box.y1 > float(height)) return false;
+        for (const LayoutRect& a : avoid)
+            if (g.box.overlaps(a)) return false;
+        return true;
+    };
+    std::optional<Geometry> chosen;
+    const float smallest = std::min(uiScale, std::max(1.0f, 0.5f * uiScale));
+    std::vector<float> scales;  // 15% steps down to the floor, the floor itself last
+    for (float scale = uiScale; scale > smallest + 1e-3f; scale *= 0.85f) scales.push_back(scale);
+    scales.push_back(smallest);
+    for (float scale : scales)
+        for (bool compact : {false, true})
+            for (bool atTop : {false, true}) {
+                if (chosen) break;
+                Geometry g = geometry(scale, compact, atTop);
+                if (fits(g)) chosen = g;
+            }
+    if (!chosen) chosen = geometry(smallest, true, false);  // nothing fits: the smallest at its usual place
+    const Geometry& g = *chosen;
+    const CaptionLayout& l = g.l;
+    const float size = l.fontSize, s = l.scale;
+    placed.box = g.box;
+    placed.bar = {l.barX, l.barY, l.barX + l.barWidth, l.barY + l.barHeight};
+    placed.compact = g.compact;
+    placed.scale = s;
+
+    draw->AddRectFilled(ImVec2(g.box.x0, g.box.y0), ImVec2(g.box.x1, g.box.y1), kBox, 4 * s);
+    float y = g.top;
     for (int i = 0; i < 4; ++i) {
-        sizes[i] = font->CalcTextSizeA(size, FLT_MAX, l.textWidth, lines[i].text->c_str());
-        widest = std::max(widest, sizes[i].x);
-        textHeight += sizes[i].y + 2 * s;
-    }
-    const float left = l.right - l.pad - widest;
-    const float top = l.barY - 4 * s - textHeight;
-    draw->AddRectFilled(ImVec2(left - l.pad, top - l.pad), ImVec2(l.right, l.bottom), kBox, 4 * s);
-    float y = top;
-    for (int i = 0; i < 4; ++i) {
-        draw->AddText(font, size, ImVec2(left, y), lines[i].colour, lines[i].text->c_str(), nullptr, l.textWidth);
-        y += sizes[i].y + 2 * s;
+        if (g.compact && !lines[i].compact) continue;
+        draw->AddText(font, size, ImVec2(g.left, y), lines[i].colour, lines[i].text->c_str(), nullptr, l.textWidth);
+        y += g.sizes[i].y + 2 * s;
     }
 
     // The ramp: grey level = position, exactly what the shader wrote.
@@ -113,7 +180,7 @@ void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std:
         const float x = l.barX + float(t.position) * l.barWidth;
         draw->AddLine(ImVec2(x, bar1.y), ImVec2(x, bar1.y + 4 * s), kTitle, std::max(1.0f, s));
         const ImVec2 textSize = font->CalcTextSizeA(size, FLT_MAX, 0, t.text.c_str());
-        const float textX = std::clamp(x - textSize.x / 2, left, l.right - l.pad - textSize.x);
+        const float textX = std::clamp(x - textSize.x / 2, g.left, l.right - l.pad - textSize.x);
         if (textX < lastRight + 4 * s) continue;
         draw->AddText(font, size, ImVec2(textX, bar1.y + 4 * s), kText, t.text.c_str());
         lastRight = textX + textSize.x;
@@ -121,6 +188,7 @@ void CaptionLayer::draw(const ViewCaption& caption, bool showCaption, const std:
 
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return placed;
 }
 
 }  // namespace rl

@@ -135,12 +135,20 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
                 if (r.word() != "ui") r.fail("screenshot takes a file and optionally `ui`");
                 c.withUi = true;
             }
+        } else if (verb == "layout") {
+            c.kind = ScriptCommand::Kind::Layout;
+            c.text = r.word();
+            if (c.text.empty()) r.fail("layout needs a file name");
+        } else if (verb == "ui-scale") {
+            c.kind = ScriptCommand::Kind::UiScale;
+            c.value = r.number("a UI scale");
+            if (c.value < 0.5 || c.value > 4) r.fail("ui-scale must be between 0.5 and 4");
         } else if (verb == "quit") {
             c.kind = K::Quit;
         } else {
             r.fail(
                 "unknown command '" + verb +
-                "' (expected wait, sleep, wait-reload, drag, slide, scroll, key, view, divider, pick, resize, screenshot or quit)");
+                "' (expected wait, sleep, wait-reload, drag, slide, scroll, key, view, divider, pick, resize, screenshot, layout, ui-scale or quit)");
         }
         r.end();
         out.push_back(c);

@@ -25,6 +25,9 @@
 //                               metallic (of spheres[0]) or exposure
 //   resize 320 240              set the window size (screen coordinates)
 //   screenshot out.png [ui]     write the picture (or, with `ui`, the whole window)
+//   layout out.json             write the rectangles of this frame's widgets and of the
+//                               spheres on screen (view/layout_report.h), with the broken rules
+//   ui-scale 2                  set the UI scale (as the panel's slider; 0.5 .. 4)
 //   quit                        exit now (status 0, or 1 while an error is shown)
 //
 // Script input goes to the picture, never to the panel.
@@ -38,16 +41,16 @@
 namespace rl {
 
 struct ScriptCommand {
-    enum class Kind { Wait, Sleep, WaitReload, Drag, Slide, Scroll, Key, View, Divider, Pick, Resize, Screenshot, Quit };
+    enum class Kind { Wait, Sleep, WaitReload, Drag, Slide, Scroll, Key, View, Divider, Pick, Resize, Screenshot, Layout, UiScale, Quit };
     Kind kind = Kind::Wait;
     int line = 0;                   // in the script file, for messages
     int count = 0;                  // Wait: frames; Drag: steps; Scroll: steps
     double seconds = 0;             // Sleep, WaitReload
-    double value = 0;               // Divider; Slide: the end value
+    double value = 0;               // Divider, UiScale; Slide: the end value
     double startValue = 0;          // Slide
     glm::dvec2 from{0.0}, to{0.0};  // Drag; Resize uses `to` as the size, Pick as the pixel
     int button = 0;                 // Drag: 0 left, 1 right, 2 middle (GLFW's numbering)
-    std::string text;               // Key: the key name; View: the view name; Screenshot: the file; Slide: the value
+    std::string text;               // Key: the key name; View: the view name; Screenshot, Layout: the file; Slide: the value
     bool withUi = false;            // Screenshot
 };
 

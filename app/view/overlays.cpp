@@ -95,53 +95,85 @@ void drawHelpOverlay(bool& open) {
     ImGui::End();
 }
 
-void drawErrorOverlay(const std::vector<std::string>& errors, float uiScale) {
-    if (errors.empty()) return;
+LayoutRect drawErrorOverlay(const std::vector<std::string>& errors, float uiScale, LayoutRect area, bool atTop) {
+    if (errors.empty()) return {};
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float margin = kMargin * uiScale;
-    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + margin, viewport->Pos.y + viewport->Size.y - margin),
-                            ImGuiCond_Always, ImVec2(0.0f, 1.0f));  // pivot: its bottom-left corner
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
-                                        ImVec2(viewport->Size.x - 2 * margin, viewport->Size.y * kMaxErrorHeight));
+    if (area.empty()) area = {margin, margin, viewport->Size.x - margin, viewport->Size.y - margin};
+    const float maxHeight = std::min(area.y1 - area.y0, viewport->Size.y * kMaxErrorHeight);
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + area.x0, viewport->Pos.y + (atTop ? area.y0 : area.y1)),
+                            ImGuiCond_Always, ImVec2(0.0f, atTop ? 0.0f : 1.0f));  // pivot: the corner it hangs from
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(area.x1 - area.x0, std::max(1.0f, maxHeight)));
     ImGui::SetNextWindowBgAlpha(kReadableAlpha);
+    LayoutRect box;
     if (ImGui::Begin("##errors", nullptr, kOverlayFlags)) {
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        box = {pos.x - viewport->Pos.x, pos.y - viewport->Pos.y, pos.x - viewport->Pos.x + size.x,
+               pos.y - viewport->Pos.y + size.y};
         ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-        ImGui::PushTextWrapPos(viewport->Size.x - 4 * margin);  // inside the box's own margin and padding
+        // Wrapped inside the box's padding (local coordinates of the window).
+        ImGui::PushTextWrapPos(area.x1 - area.x0 - ImGui::GetStyle().WindowPadding.x);
         for (const std::string& e : errors) ImGui::TextUnformatted(e.c_str());
+        ImGui::TextDisabled("The last good picture stays on screen; saving a fix reloads it.");
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
-        ImGui::TextDisabled("The last good picture stays on screen; saving a fix reloads it.");
     }
     ImGui::End();
+    return box;
 }
 
-void drawWipeOverlay(float dividerX, float windowHeight, const std::string& left, const std::string& right,
-                     float uiScale) {
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the picture, under the panel and help
-    draw->AddLine(ImVec2(dividerX, 0), ImVec2(dividerX, windowHeight), IM_COL32(255, 255, 255, 220),
-                  kDividerWidth * uiScale);
+WipeLabels wipeLabelBoxes(float dividerX, float windowWidth, float minX, float leftWidth, float rightWidth,
+                          float textHeight, float uiScale) {
     const float pad = kLabelPad * uiScale;
-    const ImVec2 leftSize = ImGui::CalcTextSize(left.c_str());
-    const ImVec2 rightSize = ImGui::CalcTextSize(right.c_str());
-    const float top = 2 * pad;  // at the top, clear of the error box at the bottom
-    const float nextRow = top + ImGui::GetFontSize() + 3 * pad;
-    auto label = [&](float x, float y, const ImVec2& size, const std::string& text) {
-        draw->AddRectFilled(ImVec2(x - pad, y - pad), ImVec2(x + size.x + pad, y + size.y + pad),
-                            IM_COL32(0, 0, 0, 170));
-        draw->AddText(ImVec2(x, y), IM_COL32(255, 255, 255, 255), text.c_str());
+    const float top = pad;  // at the top, clear of the error box and the caption below
+    const float rowHeight = textHeight + 2 * pad;
+    const float left0 = std::max(minX, 0.0f) + pad;  // right of the panel
+    auto box = [&](float x, float y, float width) { return LayoutRect{x, y, x + width + 2 * pad, y + rowHeight}; };
+    // Beside the divider, each on its own side, in the first row.
+    WipeLabels out;
+    out.left = box(dividerX - leftWidth - 3 * pad, top, leftWidth);
+    out.right = box(std::max(dividerX + pad, left0), top, rightWidth);
+    const float nextRow = top + rowHeight + pad;
+    if (out.left.x0 < left0) out.left = box(left0, nextRow, leftWidth);  // no room left of the divider: below, at the edge
+    if (out.right.x1 > windowWidth - pad)
+        out.right = box(std::max(left0, windowWidth - pad - rightWidth - 2 * pad), nextRow, rightWidth);
+    // Both in one row and in each other's way: the right one a row lower.
+    if (out.left.overlaps(out.right)) {
+        out.right.y0 = std::max(out.left.y1, out.right.y0) + pad;
+        out.right.y1 = out.right.y0 + rowHeight;
+    }
+    return out;
+}
+
+std::vector<LayoutRect> dividerPieces(float dividerX, float windowHeight, float uiScale,
+                                      const std::vector<LayoutRect>& avoid) {
+    const float half = 0.5f * kDividerWidth * uiScale, gap = 2 * uiScale;
+    std::vector<std::pair<float, float>> cuts;
+    for (const LayoutRect& a : avoid)
+        if (!a.empty() && a.x0 < dividerX + half && dividerX - half < a.x1) cuts.push_back({a.y0 - gap, a.y1 + gap});
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<LayoutRect> out;
+    float y = 0;
+    for (const auto& [y0, y1] : cuts) {
+        if (y0 > y) out.push_back({dividerX - half, y, dividerX + half, y0});
+        y = std::max(y, y1);
+    }
+    if (y < windowHeight) out.push_back({dividerX - half, y, dividerX + half, windowHeight});
+    return out;
+}
+
+void drawWipeOverlay(const std::vector<LayoutRect>& divider, const WipeLabels& boxes, const std::string& left,
+                     const std::string& right, float uiScale) {
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();  // over the picture, under the panel and help
+    for (const LayoutRect& piece : divider)
+        draw->AddRectFilled(ImVec2(piece.x0, piece.y0), ImVec2(piece.x1, piece.y1), IM_COL32(255, 255, 255, 220));
+    const float pad = kLabelPad * uiScale;
+    auto label = [&](const LayoutRect& box, const std::string& text) {
+        draw->AddRectFilled(ImVec2(box.x0, box.y0), ImVec2(box.x1, box.y1), IM_COL32(0, 0, 0, 170));
+        draw->AddText(ImVec2(box.x0 + pad, box.y0 + pad), IM_COL32(255, 255, 255, 255), text.c_str());
     };
-    // Beside the divider; a name too long for its side moves to the window's
-    // edge one row lower, so the two never overlap and neither leaves the window.
-    const float windowWidth = ImGui::GetMainViewport()->Size.x;
-    const float leftX = dividerX - leftSize.x - 2 * pad, rightX = dividerX + 2 * pad;
-    if (leftX >= pad)
-        label(leftX, top, leftSize, left);
-    else
-        label(pad, nextRow, leftSize, left);
-    if (rightX + rightSize.x + pad <= windowWidth)
-        label(rightX, top, rightSize, right);
-    else
-        label(std::max(pad, windowWidth - rightSize.x - pad), nextRow, rightSize, right);
+    label(boxes.left, left);
+    label(boxes.right, right);
 }
 
 void drawToast(const std::string& message, float uiScale) {

@@ -4,6 +4,8 @@
 // the picture (P); all of it is in a screenshot of the window (F12).
 #pragma once
 
+#include "view/layout_report.h"
+
 #include <string>
 #include <vector>
 
@@ -12,13 +14,32 @@ namespace rl {
 // Every key and mouse action, from key_bindings.h, centred on the window.
 void drawHelpOverlay(bool& open);
 
-// One box at the bottom of the window, red, with every current error
-// (already formatted: "exercises: shaders/x.glsl:12: error: ...").
-void drawErrorOverlay(const std::vector<std::string>& errors, float uiScale);
+// One box, red, with every current error (already formatted:
+// "exercises: shaders/x.glsl:12: error: ..."), inside `area` (window units):
+// at its bottom-left corner, or its top-left with `atTop`; taller content
+// scrolls. An empty area: the whole window less the margins. Returns the
+// box drawn (window units), empty when there is no error.
+LayoutRect drawErrorOverlay(const std::vector<std::string>& errors, float uiScale, LayoutRect area = {},
+                            bool atTop = false);
 
-// The wipe's divider at `dividerX` window pixels and the two labels.
-void drawWipeOverlay(float dividerX, float windowHeight, const std::string& left, const std::string& right,
-                     float uiScale);
+// The wipe's two names, top-left corners in window units, placed by
+// wipeLabelBoxes(): beside the divider at the top, right of `minX` (the
+// panel's edge); a name that does not fit beside it goes to the next row,
+// at the edge of its side.
+struct WipeLabels {
+    LayoutRect left, right;  // their dark boxes
+};
+WipeLabels wipeLabelBoxes(float dividerX, float windowWidth, float minX, float leftWidth, float rightWidth,
+                          float textHeight, float uiScale);
+
+// The divider's pieces at `dividerX`: the whole height less where it would
+// cross a box of `avoid` (the caption, the errors, the names, the panel).
+std::vector<LayoutRect> dividerPieces(float dividerX, float windowHeight, float uiScale,
+                                      const std::vector<LayoutRect>& avoid);
+
+// Draws the divider's pieces and the two names in their boxes (window units).
+void drawWipeOverlay(const std::vector<LayoutRect>& divider, const WipeLabels& boxes, const std::string& left,
+                     const std::string& right, float uiScale);
 
 // A message at the top right, e.g. "saved raylab-20240131-142501.png".
 void drawToast(const std::string& message, float uiScale);

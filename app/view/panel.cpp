@@ -7,8 +7,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <iterator>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -67,7 +70,13 @@ void frameSection(ViewState& state, const PanelInfo& info) {
     ImGui::TextDisabled("%s", info.device.c_str());
 }
 
-void viewSection(ViewState& state, const Scene& scene, ViewRequests& out) {
+LayoutRect itemRect() {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const ImVec2 o = ImGui::GetMainViewport()->Pos;
+    return {a.x - o.x, a.y - o.y, b.x - o.x, b.y - o.y};
+}
+
+void viewSection(ViewState& state, const Scene& scene, ViewRequests& out, PanelRects* rects) {
     if (!ImGui::CollapsingHeader("Teaching view", ImGuiTreeNodeFlags_DefaultOpen)) return;
     static std::vector<std::string> names;  // "1  D, GGX normal distribution (key light)"
     if (names.empty())
@@ -78,7 +87,30 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out) {
                 names.push_back(std::string(b.keys) + "  " + what);
             }
     int current = int(state.view);
-    if (ImGui::BeginCombo("view", names[std::size_t(current)].c_str())) {
+    // The whole width of the panel, its label above: at UI scale 3 on 1280
+    // pixels the widget column beside a label held 9 characters, "3  F(v.h"
+    // (issue 26); the list opens as wide as its longest name.
+    ImGui::TextUnformatted("view");
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    // The whole name where it fits, else the key and the short name ("3  F(v.h)").
+    static const char* const kShortNames[] = {"final picture", "D", "G", "F(v.h)", "diffuse", "specular",
+                                              "n.l", "shadow", "normals", "bounce k", "F(n.v)"};
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().FramePadding.x;
+    std::string preview = names[std::size_t(current)];
+    if (ImGui::CalcTextSize(preview.c_str()).x > room && current < int(std::size(kShortNames)))
+        preview = preview.substr(0, preview.find("  ") + 2) + kShortNames[current];
+    const char* shown = preview.c_str();
+    const bool open = ImGui::BeginCombo("##view", shown);
+    if (rects) {
+        const LayoutRect frame = itemRect();
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float arrow = ImGui::GetFrameHeight();
+        rects->viewCombo = {frame.x0, frame.y0, frame.x1 - arrow, frame.y1};
+        const ImVec2 text = ImGui::CalcTextSize(shown);
+        rects->viewText = {frame.x0 + style.FramePadding.x, frame.y0 + style.FramePadding.y,
+                           frame.x0 + style.FramePadding.x + text.x, frame.y0 + style.FramePadding.y + text.y};
+    }
+    if (open) {
         for (int i = 0; i < int(names.size()); ++i)
             if (ImGui::Selectable(names[std::size_t(i)].c_str(), i == current)) {
                 state.view = View(i);
@@ -154,7 +186,7 @@ void modelSection(Scene& scene, ViewRequests& out) {
     }
 }
 
-void pickedSection(ViewState& state) {
+void pickedSection(ViewState& state, PanelRects* rects) {
     if (state.pickedText.empty()) return;
     if (state.revealPicked) ImGui::SetNextItemOpen(true);
     if (!ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)")) return;
@@ -163,6 +195,7 @@ void pickedSection(ViewState& state) {
                       ImGuiWindowFlags_HorizontalScrollbar);
     ImGui::TextUnformatted(state.pickedText.c_str());
     ImGui::EndChild();
+    if (rects) rects->askedPixel = itemRect();
 }
 
 void materialsSection(Scene& scene, ViewState& state, ViewRequests& out) {
@@ -297,15 +330,21 @@ PanelRect panelRect(float windowWidth, float windowHeight, float uiScale) {
 }
 
 namespace {
+LayoutRect windowRect() {
+    const ImVec2 p = ImGui::GetWindowPos(), size = ImGui::GetWindowSize(), o = ImGui::GetMainViewport()->Pos;
+    return {p.x - o.x, p.y - o.y, p.x - o.x + size.x, p.y - o.y + size.y};
+}
+
 // The presenter's strip: the panel folded to one column of buttons at the
 // left edge (the views by key, unfold), so the picture has the room.
-void drawStrip(ViewState& state, float s, ViewRequests& out) {
+void drawStrip(ViewState& state, float s, ViewRequests& out, PanelRects* rects) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 10 * s, viewport->Pos.y + 10 * s), ImGuiCond_Always);
     ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(viewport->Size.x, viewport->Size.y - 20 * s));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove;
     if (ImGui::Begin("##strip", nullptr, flags)) {
+        if (rects) rects->panel = windowRect();
         if (ImGui::Button(">>")) state.panelStrip = false;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("unfold the panel");
         for (const KeyBinding& b : keyBindings()) {
@@ -324,11 +363,13 @@ void drawStrip(ViewState& state, float s, ViewRequests& out) {
 }
 }  // namespace
 
-ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info) {
+ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info,
+                       PanelRects* rects) {
     ViewRequests out;
+    if (rects) *rects = {};
     if (!state.showPanel) return out;
     if (state.panelStrip) {
-        drawStrip(state, info.uiScale, out);
+        drawStrip(state, info.uiScale, out, rects);
         return out;
     }
     const float s = info.uiScale;
@@ -345,7 +386,25 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
     state.panelLayoutHeight = viewport->Size.y;
     ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + rect.x, viewport->Pos.y + rect.y), when);
     ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height), when);
-    if (ImGui::Begin("raylab  (H: keys, Tab: hide)", &state.showPanel)) {
+    // The title says the two keys in words where they fit, in keys where
+    // not (at UI scale 3 on 1280 pixels the words were cut at "Tab:"); the
+    // ### part keeps the window's identity whatever the text.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float titleRoom = rect.width - 2 * style.FramePadding.x - ImGui::GetFontSize() - style.ItemInnerSpacing.x -
+                            ImGui::GetFontSize() - style.ItemInnerSpacing.x;  // collapse arrow, close button
+    const char* title = "raylab  (H: keys, Tab: hide)";
+    if (ImGui::CalcTextSize(title).x > titleRoom) title = "raylab (H, Tab)";
+    const std::string titleId = std::string(title) + "###raylab-panel";
+    if (ImGui::Begin(titleId.c_str(), &state.showPanel)) {
+        if (rects) {
+            rects->panel = windowRect();
+            const LayoutRect& p = rects->panel;
+            const float arrow = ImGui::GetFontSize() + style.ItemInnerSpacing.x;  // the collapse arrow
+            const float x0 = p.x0 + style.FramePadding.x + arrow;
+            rects->titleBar = {x0, p.y0, p.x1 - style.FramePadding.x - arrow, p.y0 + ImGui::GetFrameHeight()};
+            const ImVec2 text = ImGui::CalcTextSize(title);
+            rects->title = {x0, p.y0 + style.FramePadding.y, x0 + text.x, p.y0 + style.FramePadding.y + text.y};
+        }
         // Widgets take what is left after a label column of ~9 characters,
         // and never less than 6 characters (at UI scale 3 on 1280 px the
         // panel is 576 px: 351 for the labels, 200 for the widgets).
@@ -354,12 +413,12 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         ImGui::PushItemWidth(std::max(6.0f * ImGui::GetFontSize(),
                                       ImGui::GetContentRegionAvail().x - 9.0f * ImGui::GetFontSize()));
         frameSection(state, info);
-        viewSection(state, scene, out);
+        viewSection(state, scene, out, rects);
         compareSection(state, info, out);
         displaySection(scene, out);
         renderSection(scene, out);
         modelSection(scene, out);
-        pickedSection(state);
+        pickedSection(state, rects);
         materialsSection(scene, state, out);
         state.revealPicked = false;
         lightsSection(scene, out);

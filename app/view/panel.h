@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/scene.h"
+#include "view/layout_report.h"
 #include "view/view_state.h"
 
 #include <filesystem>
@@ -35,7 +36,18 @@ struct PanelRect {
 };
 PanelRect panelRect(float windowWidth, float windowHeight, float uiScale);
 
+// Where the panel's parts went this frame, window units (empty: not shown).
+struct PanelRects {
+    LayoutRect panel;       // the panel's window (or the strip)
+    LayoutRect title;       // its title text, whole (cut when wider than the title bar)
+    LayoutRect titleBar;    // the room for it: the title bar less the close button
+    LayoutRect viewCombo;   // the teaching view's dropdown: the room for its text
+    LayoutRect viewText;    // the current view's name in it, whole
+    LayoutRect askedPixel;  // the asked pixel's box
+};
+
 // Draws the panel (when state.showPanel) and returns what the user asked for.
-ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info);
+ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, const PanelInfo& info,
+                       PanelRects* rects = nullptr);
 
 }  // namespace rl

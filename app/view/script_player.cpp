@@ -34,7 +34,9 @@ void ScriptPlayer::step(ScriptTarget& target) {
         ++next_;
         // A screenshot or a resize shows in this frame's picture: the next
         // command waits for the next frame.
-        if (kind == ScriptCommand::Kind::Screenshot || kind == ScriptCommand::Kind::Resize) return;
+        if (kind == ScriptCommand::Kind::Screenshot || kind == ScriptCommand::Kind::Resize ||
+            kind == ScriptCommand::Kind::Layout || kind == ScriptCommand::Kind::UiScale)
+            return;
     }
 }
 
@@ -64,6 +66,8 @@ bool ScriptPlayer::start(ScriptTarget& target) {
         case K::Pick: target.scriptPick(c.to); return true;
         case K::Resize: target.scriptResize(int(c.to.x), int(c.to.y)); return true;
         case K::Screenshot: target.scriptScreenshot(c.text, c.withUi); return true;
+        case K::Layout: target.scriptLayout(c.text); return true;
+        case K::UiScale: target.scriptUiScale(c.value); return true;
         case K::Quit: target.scriptQuit(); return true;
     }
     return true;

@@ -26,6 +26,8 @@ public:
     virtual void scriptPick(glm::dvec2 pixel) = 0;
     virtual void scriptResize(int width, int height) = 0;
     virtual void scriptScreenshot(const std::string& file, bool withUi) = 0;
+    virtual void scriptLayout(const std::string& file) = 0;  // written at the end of this frame
+    virtual void scriptUiScale(double scale) = 0;
     virtual void scriptQuit() = 0;
     // Hot reloads applied so far (shaders and scene, good or bad).
     virtual int reloadCount() const = 0;

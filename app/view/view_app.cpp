@@ -195,15 +195,39 @@ void ViewApp::frame() {
     picture_->present(fbWidth_, fbHeight_);
     const std::vector<OverlaySegment> rays = pickedRays();
     const std::vector<OverlayLabel> labels = sideBySideLabels();
+    // What the caption keeps clear of: the spheres, the panel, the wipe's names.
+    layout_ = LayoutReport{fbWidth_, fbHeight_, ui_->scale(), {}};
+    std::vector<LayoutRect> avoid;
+    for (const auto& [name, rect] : subjectRects()) {
+        layout_.add(name, LayoutBox::Kind::Subject, rect);
+        avoid.push_back(rect);
+    }
+    const LayoutRect panel = panelPixels();
+    if (!panel.empty()) avoid.push_back(panel);
+    float topReserved = 0;
+    WipeLabels wipeLabels;
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
+    if (wipeActive()) {  // placed before the caption, which stays below them
+        const float s = ui_->scale(), fontSize = 13 * s;  // ImGui's default font at the UI scale (window units)
+        wipeLabels = wipeLabelBoxes(float(dividerPixel() / perUnit.x), float(fbWidth_ / perUnit.x),
+                                    state_.showPanel ? panel.x1 / float(perUnit.x) : 0.0f,
+                                    captions_->textWidth(sides_[0].program->label(), fontSize),
+                                    captions_->textWidth(sides_[1].program->label(), fontSize), fontSize, s);
+        topReserved = std::max(wipeLabels.left.y1, wipeLabels.right.y1) * float(perUnit.y);
+    }
+    captionPlaced_ = {};
     if (state_.showCaptions || !rays.empty() || !labels.empty())
-        captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_, ui_->scale());
+        captionPlaced_ = captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_,
+                                         ui_->scale(), avoid, topReserved);
     if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
     pendingShot_.clear();
 
     ViewRequests requests;
-    drawUi(requests);
+    drawUi(requests, wipeLabels);
     if (!pendingUiShot_.empty()) writeScreenshot(pendingUiShot_, true);
     pendingUiShot_.clear();
+    if (!pendingLayout_.empty()) writeLayout(pendingLayout_);
+    pendingLayout_.clear();
     glfwSwapBuffers(window_->window());
     if (rendered) {
         const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
@@ -357,7 +381,7 @@ void ViewApp::renderPicture(bool fullResolution) {
     dirty_ = false;
 }
 
-void ViewApp::drawUi(ViewRequests& requests) {
+void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     ui_->beginFrame();
     const float scale = ui_->scale();
     PanelInfo info;
@@ -376,19 +400,154 @@ void ViewApp::drawUi(ViewRequests& requests) {
     info.currentPreset = currentPreset();
     info.uiScale = scale;
     info.status = status_;
-    requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info);
+    requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info, &panelRects_);
     drawHelpOverlay(state_.showHelp);
+
+    // Window units from here (ImGui's); the report in framebuffer pixels.
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();
+    auto toUnits = [&](LayoutRect r) {
+        return LayoutRect{float(r.x0 / perUnit.x), float(r.y0 / perUnit.y), float(r.x1 / perUnit.x), float(r.y1 / perUnit.y)};
+    };
+    auto toPixels = [&](LayoutRect r) {
+        return LayoutRect{float(r.x0 * perUnit.x), float(r.y0 * perUnit.y), float(r.x1 * perUnit.x), float(r.y1 * perUnit.y)};
+    };
+    const float windowWidth = float(fbWidth_ / perUnit.x), windowHeight = float(fbHeight_ / perUnit.y);
+    const float margin = 10 * scale;
+
+    // The errors: in the columns right of the panel, in the tallest band of
+    // rows that neither the spheres, the caption nor the names take.
+    std::vector<LayoutRect> taken;  // window units
+    for (const LayoutBox& b : layout_.boxes) taken.push_back(toUnits(b.rect));  // the subject
+    if (!captionPlaced_.box.empty()) taken.push_back(toUnits(captionPlaced_.box));
+    for (const LayoutRect& l : captionPlaced_.labels) taken.push_back(toUnits(l));
     if (wipeActive()) {
-        int windowWidth = 0, windowHeight = 0;
-        glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
-        const float toWindow =
-            fbWidth_ > 0 ? float(windowWidth) / float(fbWidth_) : 1.0f;  // ImGui works in window units
-        drawWipeOverlay(float(dividerPixel()) * toWindow, float(windowHeight), sides_[0].program->label(),
-                        sides_[1].program->label(), scale);
+        taken.push_back(wipeLabels.left);
+        taken.push_back(wipeLabels.right);
     }
-    drawErrorOverlay(errors(), scale);
+    const float x0 = panelRects_.panel.empty() ? margin : panelRects_.panel.x1 + margin, x1 = windowWidth - margin;
+    std::vector<std::pair<float, float>> blocked;
+    for (const LayoutRect& t : taken)
+        if (t.x0 < x1 && x0 < t.x1) blocked.push_back({t.y0 - margin, t.y1 + margin});
+    std::sort(blocked.begin(), blocked.end());
+    LayoutRect errorArea{x0, margin, x1, margin};
+    float y = margin;
+    auto consider = [&](float y0, float y1) {
+        if (y1 - y0 > errorArea.y1 - errorArea.y0) errorArea = {x0, y0, x1, y1};
+    };
+    for (const auto& [b0, b1] : blocked) {
+        if (b0 > y) consider(y, b0);
+        y = std::max(y, b1);
+    }
+    if (windowHeight - margin > y) consider(y, windowHeight - margin);
+    if (errorArea.y1 - errorArea.y0 < 2 * 13 * scale || x1 - x0 < 10 * 13 * scale)
+        errorArea = {};  // no band: the whole window (the error matters more than what it covers)
+    const LayoutRect errorBox = drawErrorOverlay(errors(), scale, errorArea);
+    if (!errorBox.empty()) layout_.add("errors", LayoutBox::Kind::Widget, toPixels(errorBox));
+
+    if (wipeActive()) {
+        std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel};
+        if (!captionPlaced_.box.empty()) clear.push_back(toUnits(captionPlaced_.box));
+        const std::vector<LayoutRect> divider =
+            dividerPieces(float(dividerPixel() / perUnit.x), windowHeight, scale, clear);
+        drawWipeOverlay(divider, wipeLabels, sides_[0].program->label(), sides_[1].program->label(), scale);
+        for (const LayoutRect& piece : divider) layout_.add("divider", LayoutBox::Kind::Line, toPixels(piece));
+        layout_.add("wipe left name", LayoutBox::Kind::Widget, toPixels(wipeLabels.left));
+        layout_.add("wipe right name", LayoutBox::Kind::Widget, toPixels(wipeLabels.right));
+    }
     if (Clock::now() < toastUntil_) drawToast(toast_, scale);
     ui_->endFrame();
+
+    if (!captionPlaced_.box.empty()) layout_.add("caption", LayoutBox::Kind::Widget, captionPlaced_.box);
+    for (std::size_t i = 0; i < captionPlaced_.labels.size(); ++i)
+        layout_.add(i == 0 ? "left name" : "right name", LayoutBox::Kind::Widget, captionPlaced_.labels[i]);
+    const PanelRects& p = panelRects_;
+    if (!p.panel.empty()) {
+        layout_.add("panel", LayoutBox::Kind::Tool, toPixels(p.panel));
+        if (!p.titleBar.empty()) {
+            layout_.add("panel title bar", LayoutBox::Kind::Part, toPixels(p.titleBar), "panel");
+            layout_.add("panel title", LayoutBox::Kind::Part, toPixels(p.title), "panel title bar");
+        }
+        if (!p.viewCombo.empty()) {
+            layout_.add("view dropdown", LayoutBox::Kind::Part, toPixels(p.viewCombo), "panel");
+            layout_.add("view name", LayoutBox::Kind::Part, toPixels(p.viewText), "view dropdown");
+        }
+        if (!p.askedPixel.empty()) layout_.add("asked pixel", LayoutBox::Kind::Part, toPixels(p.askedPixel), "panel");
+    }
+}
+
+LayoutRect ViewApp::panelPixels() const {
+    if (!state_.showPanel) return {};
+    const glm::dvec2 perUnit = 1.0 / toWindowUnits();
+    LayoutRect r = panelRects_.panel;
+    if (r.empty() && !state_.panelStrip) {  // not drawn yet: where it will be
+        const PanelRect p = panelRect(float(fbWidth_ / perUnit.x), float(fbHeight_ / perUnit.y), ui_->scale());
+        r = {p.x, p.y, p.x + p.width, p.y + p.height};
+    }
+    return {float(r.x0 * perUnit.x), float(r.y0 * perUnit.y), float(r.x1 * perUnit.x), float(r.y1 * perUnit.y)};
+}
+
+std::vector<std::pair<std::string, LayoutRect>> ViewApp::subjectRects() const {
+    std::vector<std::pair<std::string, LayoutRect>> out;
+    if (fbWidth_ <= 0 || fbHeight_ <= 0) return out;
+    const Scene& scene = scene_.scene();
+    const Camera camera = trackball_->camera();
+    const glm::dvec3 f = glm::normalize(camera.target - camera.position);
+    const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
+    const glm::dvec3 u = glm::cross(r, f);
+    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
+    const int halves = sideBySideActive() ? 2 : 1;
+    for (int half = 0; half < halves; ++half) {
+        int x0 = 0, width = fbWidth_, y0 = 0, height = fbHeight_;
+        pictureColumns(sideBySideActive() ? half : -1, x0, width);
+        pictureRows(sideBySideActive() ? half : -1, y0, height);
+        const double aspect = double(width) / std::max(height, 1);
+        for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+            const glm::dvec3 c = scene.spheres[i].center - camera.position;
+            const double radius = scene.spheres[i].radius, d = glm::length(c);
+            if (d <= radius * 1.0001) continue;  // the camera is inside it
+            // The silhouette: a circle of radius rho about q, across the line of sight.
+            const glm::dvec3 w = c / d;
+            const glm::dvec3 q = w * (d - radius * radius / d);
+            const double rho = radius * std::sqrt(d * d - radius * radius) / d;
+            const glm::dvec3 a = glm::normalize(std::abs(w.x) < 0.9 ? glm::cross(w, glm::dvec3(1, 0, 0))
+                                                                     : glm::cross(w, glm::dvec3(0, 1, 0)));
+            const glm::dvec3 b = glm::cross(w, a);
+            double minX = 1e30, minY = 1e30, maxX = -1e30, maxY = -1e30;
+            bool behind = false;
+            constexpr int kSamples = 90;  // 4 degrees apart: the box is short by at most 0.25% of the radius
+            for (int k = 0; k < kSamples && !behind; ++k) {
+                const double t = 2 * M_PI * k / kSamples;
+                const glm::dvec3 p = q + rho * (std::cos(t) * a + std::sin(t) * b);
+                const double z = glm::dot(p, f);
+                if (z <= 1e-6) {
+                    behind = true;  // wraps round the camera: a backdrop
+                    break;
+                }
+                const double x = x0 + (glm::dot(p, r) / (z * tanHalf * aspect) + 1.0) * 0.5 * width;
+                const double y = y0 + (1.0 - glm::dot(p, u) / (z * tanHalf)) * 0.5 * height;
+                minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+            }
+            if (behind) continue;
+            const LayoutRect box{float(std::max<double>(minX, x0)), float(std::max<double>(minY, y0)),
+                                 float(std::min<double>(maxX, x0 + width)), float(std::min<double>(maxY, y0 + height))};
+            if (box.empty()) continue;  // off the picture
+            if ((maxX - minX) * (maxY - minY) > 0.25 * double(width) * height) continue;  // the ground, a backdrop
+            out.push_back({"sphere " + std::to_string(i) + (halves == 2 ? (half == 0 ? " left" : " right") : ""), box});
+        }
+    }
+    return out;
+}
+
+void ViewApp::writeLayout(const std::string& file) {
+    try {
+        writeFileAtomic(file, layoutJson(layout_), WriteOptions{"the layout report"});
+        const std::vector<std::string> problems = layoutProblems(layout_);
+        std::cout << "raylab: layout " << fs::absolute(file).lexically_normal().string() << " (" << problems.size()
+                  << " problem" << (problems.size() == 1 ? "" : "s") << ")" << std::endl;
+        for (const std::string& p : problems) std::cout << "raylab: layout: " << p << "\n";
+    } catch (const Error& e) {
+        std::cerr << "raylab: error: " << e.what() << std::endl;
+    }
 }
 
 void ViewApp::handleRequests(const ViewRequests& r) {
@@ -545,14 +704,14 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
 std::vector<OverlayLabel> ViewApp::sideBySideLabels() const {
     if (!sideBySideActive()) return {};
     const float s = ui_->scale(), margin = 10 * s;
-    // Framebuffer pixels per window unit (the panel is laid out in window units).
-    const glm::dvec2 perUnit = 1.0 / toWindowUnits();
-    (void)perUnit;
     int x0 = 0, width = 0, x1 = 0;
     pictureColumns(0, x0, width);
     pictureColumns(1, x1, width);
-    return {{float(x0) + margin, margin, sides_[0].program->label()},
-            {float(x1) + margin, margin, sides_[1].program->label()}};
+    // Each name wraps inside its own half (issue 26: at UI scale 3 on
+    // 1280x720 the two ran into each other).
+    const float wrap = std::max(1.0f, float(width) - 2 * margin);
+    return {{float(x0) + margin, margin, sides_[0].program->label(), wrap},
+            {float(x1) + margin, margin, sides_[1].program->label(), wrap}};
 }
 
 std::string ViewApp::windowTitle() const {

@@ -16,8 +16,11 @@
 #include "view/gpu_timer.h"
 #include "view/imgui_layer.h"
 #include "view/live_program.h"
+#include "view/layout_report.h"
 #include "view/live_scene.h"
 #include "view/named_cameras.h"
+#include "view/overlays.h"
+#include "view/panel.h"
 #include "view/script_player.h"
 #include "view/split_picture.h"
 #include "view/view_options.h"
@@ -70,7 +73,7 @@ private:
     void selectProgram(Side& side);
     void sceneChanged(bool cameraMayHaveChanged);
     void renderPicture(bool fullResolution);
-    void drawUi(ViewRequests& requests);
+    void drawUi(ViewRequests& requests, const WipeLabels& wipeLabels);
     void handleRequests(const ViewRequests& requests);
     void writeScreenshot(const std::string& file, bool withUi);
     // Writes the edited scene to state_.savePath; a bundled scene only when `confirmed`.
@@ -85,6 +88,15 @@ private:
     std::string windowTitle() const;
     std::vector<OverlaySegment> pickedRays() const;
     std::vector<OverlayLabel> sideBySideLabels() const;  // the two names, clear of the panel  // the asked pixel's rays, projected by the current camera  // "raylab view - SCENE - IMPLEMENTATIONS"
+    // The spheres on screen ("sphere N", framebuffer pixels, side by side
+    // one per half): the subject the caption, errors and names keep clear of.
+    // A sphere the camera is in, or one whose rectangle covers more than a
+    // quarter of its picture (the ground, the backdrop), is no subject.
+    std::vector<std::pair<std::string, LayoutRect>> subjectRects() const;
+    // The panel's rectangle (framebuffer pixels) as last drawn; before it
+    // was drawn, where panelRect() puts it. Empty when hidden.
+    LayoutRect panelPixels() const;
+    void writeLayout(const std::string& file);
     int bounceViewLimit() const;  // max bounces + 1: one past the limit shows black
 
     // -- input and actions (view_app_input.cpp)
@@ -125,6 +137,8 @@ private:
     void scriptPick(glm::dvec2 pixel) override;
     void scriptResize(int width, int height) override;
     void scriptScreenshot(const std::string& file, bool withUi) override;
+    void scriptLayout(const std::string& file) override { pendingLayout_ = file; }
+    void scriptUiScale(double scale) override;
     void scriptQuit() override;
     int reloadCount() const override { return reloads_; }
 
@@ -169,6 +183,10 @@ private:
     std::string runtimeError_;   // a GL error while drawing, shown like a shader error
     std::string pendingShot_;    // picture screenshot to write this frame
     std::string pendingUiShot_;  // window screenshot to write this frame
+    std::string pendingLayout_;  // layout report to write this frame
+    LayoutReport layout_;        // this frame's rectangles, framebuffer pixels
+    PanelRects panelRects_;      // the panel's parts as last drawn, window units
+    CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window

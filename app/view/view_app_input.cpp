@@ -420,6 +420,7 @@ void ViewApp::scriptDivider(double fraction) {
 }
 void ViewApp::scriptPick(glm::dvec2 pixel) { pickPixel(pixel); }
 void ViewApp::scriptResize(int width, int height) { glfwSetWindowSize(window_->window(), width, height); }
+void ViewApp::scriptUiScale(double scale) { ui_->setScale(float(scale)); }
 void ViewApp::scriptScreenshot(const std::string& file, bool withUi) {
     (withUi ? pendingUiShot_ : pendingShot_) = file;
 }

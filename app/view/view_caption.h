@@ -55,10 +55,12 @@ struct CaptionLayout {
 };
 CaptionLayout captionLayout(int width, int height, float uiScale);
 
-// A name over the picture (side by side), top-left corner at (x, y) framebuffer pixels.
+// A name over the picture (side by side), top-left corner at (x, y) framebuffer pixels;
+// `wrap` > 0: its box is at most that wide, the text wrapped onto more lines.
 struct OverlayLabel {
     float x, y;
     std::string text;
+    float wrap = 0;
 };
 
 // A line drawn over the picture (the asked pixel's rays), framebuffer pixels.
