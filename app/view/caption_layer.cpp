@@ -56,7 +56,8 @@ CaptionLayer::~CaptionLayer() {
 CaptionLayer::Placement CaptionLayer::draw(const ViewCaption& caption, bool showCaption,
                                            const std::vector<OverlaySegment>& rays,
                                            const std::vector<OverlayLabel>& labels, int width, int height,
-                                           float uiScale, const std::vector<LayoutRect>& avoid, float topReserved) {
+                                           float uiScale, const std::vector<LayoutRect>& avoid, float topReserved,
+                                           bool yieldWhenNoRoom) {
     Placement placed;
     if (width <= 0 || height <= 0) return placed;
     ContextScope scope(context_);
@@ -152,6 +153,11 @@ CaptionLayer::Placement CaptionLayer::draw(const ViewCaption& caption, bool show
                 Geometry g = geometry(scale, compact, atTop);
                 if (fits(g)) chosen = g;
             }
+    if (!chosen && yieldWhenNoRoom) {
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        return placed;
+    }
     if (!chosen) chosen = geometry(smallest, true, false);  // nothing fits: the smallest at its usual place
     const Geometry& g = *chosen;
     const CaptionLayout& l = g.l;

@@ -41,9 +41,11 @@ public:
     // at the bottom right where it fits, else at the top right, else without
     // its model and scale lines, else at a smaller scale (never below 1 or
     // half the UI scale); captionLayout() is where it goes with nothing to avoid.
+    // Where nothing fits it is drawn small at the bottom right, or with
+    // `yieldWhenNoRoom` (an error box has the room) not at all.
     Placement draw(const ViewCaption& caption, bool showCaption, const std::vector<OverlaySegment>& rays,
                    const std::vector<OverlayLabel>& labels, int width, int height, float uiScale,
-                   const std::vector<LayoutRect>& avoid = {}, float topReserved = 0);
+                   const std::vector<LayoutRect>& avoid = {}, float topReserved = 0, bool yieldWhenNoRoom = false);
 
     // The size of `text` in the default font at `fontSize` pixels (the font
     // the panel and the wipe's names use too), for placing boxes before drawing.

@@ -215,10 +215,46 @@ void ViewApp::frame() {
                                     captions_->textWidth(sides_[1].program->label(), fontSize), fontSize, s);
         topReserved = std::max(wipeLabels.left.y1, wipeLabels.right.y1) * float(perUnit.y);
     }
+    // The errors come first: the tallest band of rows right of the panel
+    // that neither the spheres nor the names take; the caption keeps clear
+    // of the box's part of it, and yields where it then finds no room.
+    errorArea_ = {};
+    const bool showErrors = !errors().empty();
+    if (showErrors) {
+        const float margin = 10 * ui_->scale() * float(perUnit.x);
+        std::vector<LayoutRect> taken = avoid;  // the spheres (and the panel, left of the band anyway)
+        if (wipeActive()) {
+            taken.push_back({0, 0, float(fbWidth_), topReserved});
+        } else if (sideBySideActive()) {  // the names in the bar above the pictures
+            int y0 = 0, rows = 0;
+            pictureRows(0, y0, rows);
+            taken.push_back({0, 0, float(fbWidth_), float(y0)});
+        }
+        const float x0 = panel.empty() ? margin : panel.x1 + margin, x1 = float(fbWidth_) - margin;
+        std::vector<std::pair<float, float>> blocked;
+        for (const LayoutRect& t : taken)
+            if (t.x0 < x1 && x0 < t.x1) blocked.push_back({t.y0 - margin, t.y1 + margin});
+        std::sort(blocked.begin(), blocked.end());
+        float y = margin;
+        auto consider = [&](float y0, float y1) {
+            if (y1 - y0 > errorArea_.y1 - errorArea_.y0) errorArea_ = {x0, y0, x1, y1};
+        };
+        for (const auto& [b0, b1] : blocked) {
+            if (b0 > y) consider(y, b0);
+            y = std::max(y, b1);
+        }
+        if (float(fbHeight_) - margin > y) consider(y, float(fbHeight_) - margin);
+        // Less than two lines: the whole window (the error matters more than what it covers).
+        if (errorArea_.y1 - errorArea_.y0 < 2 * 13 * ui_->scale() * float(perUnit.y) || x1 - x0 < 10 * 13 * ui_->scale())
+            errorArea_ = {margin, margin, float(fbWidth_) - margin, float(fbHeight_) - margin};
+        const float height = errorBoxHeight_ > 0 ? std::min(errorBoxHeight_, errorArea_.y1 - errorArea_.y0)
+                                                 : errorArea_.y1 - errorArea_.y0;
+        avoid.push_back({errorArea_.x0, errorArea_.y1 - height, errorArea_.x1, errorArea_.y1});
+    }
     captionPlaced_ = {};
     if (state_.showCaptions || !rays.empty() || !labels.empty())
         captionPlaced_ = captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_,
-                                         ui_->scale(), avoid, topReserved);
+                                         ui_->scale(), avoid, topReserved, showErrors);
     if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
     pendingShot_.clear();
 
@@ -411,37 +447,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     auto toPixels = [&](LayoutRect r) {
         return LayoutRect{float(r.x0 * perUnit.x), float(r.y0 * perUnit.y), float(r.x1 * perUnit.x), float(r.y1 * perUnit.y)};
     };
-    const float windowWidth = float(fbWidth_ / perUnit.x), windowHeight = float(fbHeight_ / perUnit.y);
-    const float margin = 10 * scale;
+    const float windowHeight = float(fbHeight_ / perUnit.y);
 
-    // The errors: in the columns right of the panel, in the tallest band of
-    // rows that neither the spheres, the caption nor the names take.
-    std::vector<LayoutRect> taken;  // window units
-    for (const LayoutBox& b : layout_.boxes) taken.push_back(toUnits(b.rect));  // the subject
-    if (!captionPlaced_.box.empty()) taken.push_back(toUnits(captionPlaced_.box));
-    for (const LayoutRect& l : captionPlaced_.labels) taken.push_back(toUnits(l));
-    if (wipeActive()) {
-        taken.push_back(wipeLabels.left);
-        taken.push_back(wipeLabels.right);
-    }
-    const float x0 = panelRects_.panel.empty() ? margin : panelRects_.panel.x1 + margin, x1 = windowWidth - margin;
-    std::vector<std::pair<float, float>> blocked;
-    for (const LayoutRect& t : taken)
-        if (t.x0 < x1 && x0 < t.x1) blocked.push_back({t.y0 - margin, t.y1 + margin});
-    std::sort(blocked.begin(), blocked.end());
-    LayoutRect errorArea{x0, margin, x1, margin};
-    float y = margin;
-    auto consider = [&](float y0, float y1) {
-        if (y1 - y0 > errorArea.y1 - errorArea.y0) errorArea = {x0, y0, x1, y1};
-    };
-    for (const auto& [b0, b1] : blocked) {
-        if (b0 > y) consider(y, b0);
-        y = std::max(y, b1);
-    }
-    if (windowHeight - margin > y) consider(y, windowHeight - margin);
-    if (errorArea.y1 - errorArea.y0 < 2 * 13 * scale || x1 - x0 < 10 * 13 * scale)
-        errorArea = {};  // no band: the whole window (the error matters more than what it covers)
-    const LayoutRect errorBox = drawErrorOverlay(errors(), scale, errorArea);
+    const LayoutRect errorBox = drawErrorOverlay(errors(), scale, toUnits(errorArea_));
+    errorBoxHeight_ = (errorBox.y1 - errorBox.y0) * float(perUnit.y);
     if (!errorBox.empty()) layout_.add("errors", LayoutBox::Kind::Widget, toPixels(errorBox));
 
     if (wipeActive()) {
@@ -457,7 +466,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     if (Clock::now() < toastUntil_) drawToast(toast_, scale);
     ui_->endFrame();
 
-    if (!captionPlaced_.box.empty()) layout_.add("caption", LayoutBox::Kind::Widget, captionPlaced_.box);
+    if (!captionPlaced_.box.empty()) {
+        layout_.add("caption", LayoutBox::Kind::Widget, captionPlaced_.box);
+        layout_.add("colour bar", LayoutBox::Kind::Part, captionPlaced_.bar, "caption");
+    }
     for (std::size_t i = 0; i < captionPlaced_.labels.size(); ++i)
         layout_.add(i == 0 ? "left name" : "right name", LayoutBox::Kind::Widget, captionPlaced_.labels[i]);
     const PanelRects& p = panelRects_;
@@ -572,7 +584,7 @@ void ViewApp::writeScreenshot(const std::string& file, bool withUi) {
         const std::string shown = fs::absolute(file).lexically_normal().string();
         std::cout << "raylab: screenshot " << shown << (withUi ? " (window)" : "") << std::endl;
         status_ = "saved " + shown;
-        toast("saved " + file);
+        if (!scriptedShot_) toast("saved " + file);
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
         status_ = e.what();

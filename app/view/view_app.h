@@ -184,9 +184,14 @@ private:
     std::string pendingShot_;    // picture screenshot to write this frame
     std::string pendingUiShot_;  // window screenshot to write this frame
     std::string pendingLayout_;  // layout report to write this frame
+    // The pending screenshot is a script's: no "saved" toast, which would sit
+    // in the script's next screenshots (the terminal says it; the panel's status too).
+    bool scriptedShot_ = false;
     LayoutReport layout_;        // this frame's rectangles, framebuffer pixels
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
+    LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
+    float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window

@@ -369,8 +369,14 @@ void ViewApp::perform(Action action, int argument) {
             dirty_ = true;
             break;
         case Action::ToggleFullscreen: window_->toggleFullscreen(); break;
-        case Action::Screenshot: pendingShot_ = timestampedScreenshotName(); break;
-        case Action::ScreenshotWithUi: pendingUiShot_ = timestampedScreenshotName(); break;
+        case Action::Screenshot:
+            pendingShot_ = timestampedScreenshotName();
+            scriptedShot_ = false;
+            break;
+        case Action::ScreenshotWithUi:
+            pendingUiShot_ = timestampedScreenshotName();
+            scriptedShot_ = false;
+            break;
         case Action::UiScaleDown: ui_->setScale(ui_->scale() / kUiScaleStep); break;
         case Action::UiScaleUp: ui_->setScale(ui_->scale() * kUiScaleStep); break;
         case Action::SaveScene: saveScene(); break;
@@ -423,6 +429,7 @@ void ViewApp::scriptResize(int width, int height) { glfwSetWindowSize(window_->w
 void ViewApp::scriptUiScale(double scale) { ui_->setScale(float(scale)); }
 void ViewApp::scriptScreenshot(const std::string& file, bool withUi) {
     (withUi ? pendingUiShot_ : pendingShot_) = file;
+    scriptedShot_ = true;
 }
 void ViewApp::scriptQuit() { quit_ = true; }
 

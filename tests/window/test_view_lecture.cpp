@@ -50,28 +50,6 @@ constexpr int kRampTolerance = 4;
 
 std::string lectureScene() { return (sourceRoot() / "scenes" / "lecture.json").string(); }
 
-// Screenshots wider than 640 pixels are halved (2x2 box filter) until they
-// are not: the repository keeps them small.
-void maybeUpdateDocImage(const fs::path& shot, const std::string& name) {
-    const char* update = std::getenv("RAYLAB_UPDATE_DOC_IMAGES");
-    if (!update || std::string(update) != "1") return;
-    const fs::path dir = sourceRoot() / "docs" / "images" / "lecture";
-    fs::create_directories(dir);
-    DisplayImage image = readPng(shot.string());
-    while (image.width > 640) {
-        DisplayImage half{image.width / 2, image.height / 2,
-                          std::vector<std::uint8_t>(std::size_t(image.width / 2) * (image.height / 2) * 3)};
-        for (int y = 0; y < half.height; ++y)
-            for (int x = 0; x < half.width; ++x)
-                for (int c = 0; c < 3; ++c)
-                    half.at(x, y)[c] = std::uint8_t((image.at(2 * x, 2 * y)[c] + image.at(2 * x + 1, 2 * y)[c] +
-                                                     image.at(2 * x, 2 * y + 1)[c] + image.at(2 * x + 1, 2 * y + 1)[c] + 2) /
-                                                    4);
-        image = half;
-    }
-    writePng((dir / name).string(), image);
-}
-
 int grey(const DisplayImage& image, int x, int y) { return image.at(x, y)[0]; }
 
 // The ramp of the colour bar is where captionLayout() says, black to white.

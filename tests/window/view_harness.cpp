@@ -203,4 +203,24 @@ DisplayImage columns(const DisplayImage& image, int x0, int x1) {
     return out;
 }
 
+void maybeUpdateDocImage(const std::filesystem::path& shot, const std::string& name) {
+    const char* update = std::getenv("RAYLAB_UPDATE_DOC_IMAGES");
+    if (!update || std::string(update) != "1") return;
+    const std::filesystem::path dir = sourceRoot() / "docs" / "images" / "lecture";
+    std::filesystem::create_directories(dir);
+    DisplayImage image = readPng(shot.string());
+    while (image.width > 640) {
+        DisplayImage half{image.width / 2, image.height / 2,
+                          std::vector<std::uint8_t>(std::size_t(image.width / 2) * (image.height / 2) * 3)};
+        for (int y = 0; y < half.height; ++y)
+            for (int x = 0; x < half.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    half.at(x, y)[c] = std::uint8_t((image.at(2 * x, 2 * y)[c] + image.at(2 * x + 1, 2 * y)[c] +
+                                                     image.at(2 * x, 2 * y + 1)[c] + image.at(2 * x + 1, 2 * y + 1)[c] + 2) /
+                                                    4);
+        image = half;
+    }
+    writePng((dir / name).string(), image);
+}
+
 }  // namespace rl::wintest

@@ -89,4 +89,9 @@ PictureDiff comparePictures(const DisplayImage& a, const DisplayImage& b);
 // The columns [x0, x1) of `image`.
 DisplayImage columns(const DisplayImage& image, int x0, int x1);
 
+// With RAYLAB_UPDATE_DOC_IMAGES=1: copies the screenshot `shot` to
+// docs/images/lecture/NAME, halved (2x2 box filter) until it is at most 640
+// pixels wide, so the repository keeps them small. Otherwise nothing.
+void maybeUpdateDocImage(const std::filesystem::path& shot, const std::string& name);
+
 }  // namespace rl::wintest
