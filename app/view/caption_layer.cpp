@@ -78,10 +78,27 @@ CaptionLayer::Placement CaptionLayer::draw(const ViewCaption& caption, bool show
     }
     for (const OverlayLabel& label : labels) {
         const float wrap = label.wrap > 0 ? std::max(1.0f, label.wrap - 2 * base.pad) : 0.0f;
-        const ImVec2 size = font->CalcTextSizeA(base.fontSize, FLT_MAX, wrap, label.text.c_str());
+        // Wrapped between words, never inside one ("Blinn-Phon / g"): a word
+        // wider than the room makes the label's text smaller, down to UI
+        // scale 1 (or half the UI scale).
+        float fontSize = base.fontSize;
+        if (wrap > 0) {
+            float widestWord = 0;
+            std::size_t start = 0;
+            while (start < label.text.size()) {
+                std::size_t end = label.text.find(' ', start);
+                if (end == std::string::npos) end = label.text.size();
+                const std::string word = label.text.substr(start, end - start);
+                widestWord = std::max(widestWord, font->CalcTextSizeA(fontSize, FLT_MAX, 0, word.c_str()).x);
+                start = end + 1;
+            }
+            const float floor = std::min(base.fontSize, 13.0f * std::max(1.0f, 0.5f * base.scale));
+            if (widestWord > wrap) fontSize = std::max(floor, fontSize * wrap / widestWord);
+        }
+        const ImVec2 size = font->CalcTextSizeA(fontSize, FLT_MAX, wrap, label.text.c_str());
         const LayoutRect box{label.x, label.y, label.x + size.x + 2 * base.pad, label.y + size.y + 2 * base.pad};
         draw->AddRectFilled(ImVec2(box.x0, box.y0), ImVec2(box.x1, box.y1), kBox, 4 * base.scale);
-        draw->AddText(font, base.fontSize, ImVec2(label.x + base.pad, label.y + base.pad), kTitle, label.text.c_str(),
+        draw->AddText(font, fontSize, ImVec2(label.x + base.pad, label.y + base.pad), kTitle, label.text.c_str(),
                       nullptr, wrap);
         placed.labels.push_back(box);
         topReserved = std::max(topReserved, box.y1);  // the caption stays below the names
