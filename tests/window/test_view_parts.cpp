@@ -120,6 +120,17 @@ TEST(InputScript, ErrorsNameFileAndLine) {
     EXPECT_EQ(message("divider 2\n"), "s.txt:1: divider must be between 0 and 1");
     EXPECT_EQ(message("quit now\n"), "s.txt:1: unexpected 'now' at the end of the line");
     EXPECT_EQ(message("drag 1 2 3 4 sideways\n"), "s.txt:1: drag button must be left, right or middle, not 'sideways'");
+    EXPECT_EQ(message("layout\n"), "s.txt:1: layout needs a file name");
+    EXPECT_EQ(message("ui-scale 9\n"), "s.txt:1: ui-scale must be between 0.5 and 4");
+}
+
+TEST(InputScript, ParsesTheLayoutCommands) {
+    auto script = parseScriptText("ui-scale 2.5\nlayout out.json\n", "s.txt");
+    ASSERT_EQ(script.size(), 2u);
+    EXPECT_EQ(script[0].kind, ScriptCommand::Kind::UiScale);
+    EXPECT_DOUBLE_EQ(script[0].value, 2.5);
+    EXPECT_EQ(script[1].kind, ScriptCommand::Kind::Layout);
+    EXPECT_EQ(script[1].text, "out.json");
 }
 
 TEST(KeyBindings, EveryKeyIsDocumentedUniqueAndNamedForScripts) {
