@@ -27,7 +27,8 @@ struct LayoutBox {
         Line,     // the wipe's divider: clear of widgets, crosses the subject (that is its job)
         Part,     // inside `parent` (a widget), e.g. the asked-pixel box in the panel, a text in its frame
         Subject,  // a sphere on screen: what the widgets must leave visible
-        Tool,     // the panel: clear of widgets and inside the window; the lecturer shows or hides it
+        Tool,     // the panel, a toast: clear of widgets and inside the window; may cover spheres
+                  // (the lecturer shows or hides the panel; a toast goes after 3 s)
     };
     std::string name;  // "caption", "errors", "panel", "sphere 3", ...
     Kind kind = Kind::Widget;

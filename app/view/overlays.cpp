@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <utility>
 #include <vector>
 
@@ -176,15 +177,32 @@ void drawWipeOverlay(const std::vector<LayoutRect>& divider, const WipeLabels& b
     label(boxes.right, right);
 }
 
-void drawToast(const std::string& message, float uiScale) {
-    if (message.empty()) return;
+LayoutRect drawToast(const std::string& message, float uiScale, float top, float maxWidth) {
+    if (message.empty()) return {};
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float margin = kMargin * uiScale;
-    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - margin, viewport->Pos.y + margin),
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x - margin, viewport->Pos.y + std::max(top, margin)),
                             ImGuiCond_Always, ImVec2(1.0f, 0.0f));  // pivot: its top-right corner
+    if (maxWidth <= 0) maxWidth = viewport->Size.x - 2 * margin;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(maxWidth, FLT_MAX));
     ImGui::SetNextWindowBgAlpha(kToastAlpha);
-    if (ImGui::Begin("##toast", nullptr, kOverlayFlags)) ImGui::TextUnformatted(message.c_str());
+    LayoutRect box;
+    if (ImGui::Begin("##toast", nullptr, kOverlayFlags)) {
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        box = {pos.x - viewport->Pos.x, pos.y - viewport->Pos.y, pos.x - viewport->Pos.x + size.x,
+               pos.y - viewport->Pos.y + size.y};
+        // One line where a smaller text (down to UI scale 1) makes it fit; wrapped beyond.
+        const float padding = 2 * ImGui::GetStyle().WindowPadding.x;
+        ImGui::SetWindowFontScale(1.0f);  // measured at the UI scale (the window keeps last frame's factor)
+        const float width = ImGui::CalcTextSize(message.c_str()).x;
+        if (width + padding > maxWidth)
+            ImGui::SetWindowFontScale(std::max(1.0f / std::max(uiScale, 1.0f), (maxWidth - padding) / width));
+        ImGui::PushTextWrapPos(maxWidth - padding / 2);
+        ImGui::TextUnformatted(message.c_str());
+        ImGui::PopTextWrapPos();
+    }
     ImGui::End();
+    return box;
 }
 
 }  // namespace rl

@@ -41,7 +41,10 @@ std::vector<LayoutRect> dividerPieces(float dividerX, float windowHeight, float 
 void drawWipeOverlay(const std::vector<LayoutRect>& divider, const WipeLabels& boxes, const std::string& left,
                      const std::string& right, float uiScale);
 
-// A message at the top right, e.g. "saved raylab-20240131-142501.png".
-void drawToast(const std::string& message, float uiScale);
+// A message at the top right, e.g. "saved raylab-20240131-142501.png",
+// its top `top` window units down (below the wipe's names or a caption
+// there; 0: the margin), at most `maxWidth` wide (0: the window less the
+// margins; longer text wraps). Returns its box (window units).
+LayoutRect drawToast(const std::string& message, float uiScale, float top = 0, float maxWidth = 0);
 
 }  // namespace rl

@@ -453,8 +453,21 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     errorBoxHeight_ = (errorBox.y1 - errorBox.y0) * float(perUnit.y);
     if (!errorBox.empty()) layout_.add("errors", LayoutBox::Kind::Widget, toPixels(errorBox));
 
+    // The toast ("saved ..."), for 3 s: right of the panel, below the wipe's
+    // names (and the caption when it went to the top); clear of the
+    // overlays, but it may cover spheres for those seconds.
+    LayoutRect toastBox;
+    if (Clock::now() < toastUntil_) {
+        float top = wipeActive() ? std::max(wipeLabels.left.y1, wipeLabels.right.y1) + 10 * scale : 0.0f;
+        for (const LayoutRect& l : captionPlaced_.labels) top = std::max(top, toUnits(l).y1 + 10 * scale);
+        if (!captionPlaced_.box.empty() && captionPlaced_.box.y0 < 0.5f * fbHeight_)
+            top = std::max(top, toUnits(captionPlaced_.box).y1 + 10 * scale);
+        const float left = panelRects_.panel.empty() ? 0.0f : panelRects_.panel.x1;
+        toastBox = drawToast(toast_, scale, top, float(fbWidth_ / perUnit.x) - left - 20 * scale);
+        if (!toastBox.empty()) layout_.add("toast", LayoutBox::Kind::Tool, toPixels(toastBox));
+    }
     if (wipeActive()) {
-        std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel};
+        std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel, toastBox};
         if (!captionPlaced_.box.empty()) clear.push_back(toUnits(captionPlaced_.box));
         const std::vector<LayoutRect> divider =
             dividerPieces(float(dividerPixel() / perUnit.x), windowHeight, scale, clear);
@@ -463,7 +476,6 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         layout_.add("wipe left name", LayoutBox::Kind::Widget, toPixels(wipeLabels.left));
         layout_.add("wipe right name", LayoutBox::Kind::Widget, toPixels(wipeLabels.right));
     }
-    if (Clock::now() < toastUntil_) drawToast(toast_, scale);
     ui_->endFrame();
 
     if (!captionPlaced_.box.empty()) {

@@ -132,6 +132,7 @@ void checkSize(int w, int h) {
         script += "pick " + std::to_string(int(0.70 * w)) + " " + std::to_string(int(0.48 * h)) + "\n" +
                   shot(std::string("pick") + tag);
     }
+    script += "key P\n" + shot("toast");  // "saved raylab-....png" for 3 s, at UI scale 3
     script += "key X\n";
     for (int s : {1, 2, 3}) script += "ui-scale " + std::to_string(s) + "\n" + shot("side-" + std::to_string(s));
     script += "key X\n";
@@ -187,6 +188,11 @@ void checkSize(int w, int h) {
                 EXPECT_GT(image.at(int(b.x0 + 0.95f * (b.x1 - b.x0)), y)[0], 215) << what << ": the bar's light end";
             }
         }
+    {  // The toast of a screenshot taken with P: clear of the overlays, inside the window.
+        const LayoutReport report = parseLayoutJson(readText(dir / "toast.json"), "toast.json");
+        EXPECT_NE(find(report, "toast"), nullptr) << size << ": P shows a toast";
+        for (const std::string& p : layoutProblems(report)) ADD_FAILURE() << size << " at UI scale 3, toast: " << p;
+    }
     // The six main screenshots (an asked pixel over the wipe, the caption,
     // the panel) and the errors at the tightest setting.
     for (int s : {1, 2, 3})
