@@ -245,7 +245,7 @@ void ViewApp::frame() {
         }
         if (float(fbHeight_) - margin > y) consider(y, float(fbHeight_) - margin);
         // Less than two lines: the whole window (the error matters more than what it covers).
-        if (errorArea_.y1 - errorArea_.y0 < 2 * 13 * ui_->scale() * float(perUnit.y) || x1 - x0 < 10 * 13 * ui_->scale())
+        if (errorArea_.y1 - errorArea_.y0 < 2 * 13 * ui_->scale() * float(perUnit.y) || x1 - x0 < 10 * 13 * ui_->scale() * float(perUnit.x))
             errorArea_ = {margin, margin, float(fbWidth_) - margin, float(fbHeight_) - margin};
         const float height = errorBoxHeight_ > 0 ? std::min(errorBoxHeight_, errorArea_.y1 - errorArea_.y0)
                                                  : errorArea_.y1 - errorArea_.y0;
