@@ -194,8 +194,20 @@ CaptionLayer::Placement CaptionLayer::draw(const ViewCaption& caption, bool show
 
     // The ramp: grey level = position, exactly what the shader wrote.
     const ImVec2 bar0(l.barX, l.barY), bar1(l.barX + l.barWidth, l.barY + l.barHeight);
-    draw->AddRectFilledMultiColor(bar0, bar1, IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
-                                  IM_COL32(255, 255, 255, 255), IM_COL32(0, 0, 0, 255));
+    if (caption.scale.swatches && !caption.scale.ticks.empty()) {
+        // One swatch per value, in the grey the shader writes for it (the
+        // tick sits at the swatch's centre: position (i + 0.5) / n).
+        const float w = l.barWidth / float(caption.scale.ticks.size());
+        for (size_t i = 0; i < caption.scale.ticks.size(); ++i) {
+            const int grey = caption.scale.ticks.size() == 1 ? 255 : int(255 * i / (caption.scale.ticks.size() - 1));
+            draw->AddRectFilled(ImVec2(bar0.x + w * float(i), bar0.y), ImVec2(bar0.x + w * float(i + 1), bar1.y),
+                                IM_COL32(grey, grey, grey, 255));
+        }
+        draw->AddRect(bar0, bar1, kTitle, 0, 0, std::max(1.0f, s));
+    } else {
+        draw->AddRectFilledMultiColor(bar0, bar1, IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
+                                      IM_COL32(255, 255, 255, 255), IM_COL32(0, 0, 0, 255));
+    }
     // Ticks below the ramp (never over it: the ramp stays a clean ramp);
     // a label that would overlap the previous one is left out.
     float lastRight = -FLT_MAX;

@@ -166,7 +166,7 @@ ViewCaption viewCaption(View view, int bounce, const Scene& scene, const Shading
         case View::Shadow:
             c.title = "7  shadow of the key light";
             c.formula = "1 where the shadow ray from p reaches the key light, 0 where a sphere blocks it";
-            c.scale = {"two values", {{0, "0 shadow"}, {1, "1 lit"}}};
+            c.scale = {"two values, nothing between", {{0.25, "0 shadow"}, {0.75, "1 lit"}}, true};
             break;
         case View::Normals:
             c.title = "8  normals";

@@ -23,6 +23,9 @@ struct ColourScale {
     };
     std::string label;  // "log scale: 0.01 .. 1"
     std::vector<Tick> ticks;
+    // A view of a few values (the shadow view: 0 or 1) gets one swatch per
+    // tick instead of a ramp: a gradient would show greys it never draws.
+    bool swatches = false;
 };
 
 struct ViewCaption {

@@ -206,3 +206,26 @@ void checkSize(int w, int h) {
 TEST(ProjectorLayout, NothingOverlapsAt720pOnAnyScale) { checkSize(1280, 720); }
 
 TEST(ProjectorLayout, NothingOverlapsAt1080pOnAnyScale) { checkSize(1920, 1080); }
+
+// The shadow view draws only 0 and 1: its caption's bar is two swatches,
+// black then white, with nothing between (a ramp would show greys the view
+// never draws; at 40% a ramp is grey 102, which fails the first check).
+TEST(ProjectorLayout, TheShadowViewsBarIsTwoSwatches) {
+    Xvfb x(640, 360);
+    const auto env = windowEnv(x);
+    TempDir dir;
+    writeText(dir / "script.txt", "view shadow\nwait 1\nscreenshot shadow.png ui\nlayout shadow.json\nquit\n");
+    Process view({RAYLAB_BINARY, "view", (sourceRoot() / "scenes" / "lecture.json").string(), "--size", "640x360",
+                  "--script", "script.txt"},
+                 env, dir.path());
+    const RunResult r = view.wait(kFinish);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const LayoutReport report = parseLayoutJson(readText(dir / "shadow.json"), "shadow.json");
+    const LayoutBox* bar = find(report, "colour bar");
+    ASSERT_NE(bar, nullptr);
+    const DisplayImage image = readPng((dir / "shadow.png").string());
+    const LayoutRect& b = bar->rect;
+    const int y = int(0.5f * (b.y0 + b.y1));
+    for (float f : {0.1f, 0.4f}) EXPECT_LT(image.at(int(b.x0 + f * (b.x1 - b.x0)), y)[0], 20) << "0: shadow, at " << f;
+    for (float f : {0.6f, 0.9f}) EXPECT_GT(image.at(int(b.x0 + f * (b.x1 - b.x0)), y)[0], 235) << "1: lit, at " << f;
+}
