@@ -161,7 +161,23 @@ void pickedSection(ViewState& state) {
     // Its own scrolling box: two lights and two bounces are ~25 lines.
     ImGui::BeginChild("##picked", ImVec2(0, 12 * ImGui::GetTextLineHeightWithSpacing()), true,
                       ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(state.pickedText.c_str());
+    // The pixel debugger's table (render/pixel_debugger.h): the first value
+    // that differs from the reference (">>") and its verdict in red, the
+    // values after it that differ too ("!") in orange.
+    std::size_t start = 0;
+    const std::string& text = state.pickedText;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        if (line.rfind(">>", 0) == 0 || line.rfind("first difference", 0) == 0)
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", line.c_str());
+        else if (line.rfind(" !", 0) == 0)
+            ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", line.c_str());
+        else
+            ImGui::TextUnformatted(line.c_str());
+        start = end + 1;
+    }
     ImGui::EndChild();
 }
 
