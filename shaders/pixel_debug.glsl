@@ -15,7 +15,9 @@ const int DBG_HIT = 11;            // t, sphere (02 through closestHit)
 const int DBG_POINT = 12;          // p (relative to the anchor, scene units)
 const int DBG_NORMAL = 13;         // n
 const int DBG_MISS = 14;           // the ray leaves the scene: the background
-const int DBG_ANGLES = 20;         // n.l (clamped), n.h, v.h: the framework's inputs of 05-08
+const int DBG_LIGHT_DIR = 18;      // l: the framework's inputs of 03-08 ...
+const int DBG_HALF = 19;           // h
+const int DBG_ANGLES = 20;         // n.l, n.v (both clamped as 08 clamps them), v.h
 const int DBG_IRRADIANCE = 21;     // 03 pointLightIrradiance
 const int DBG_LAMBERT = 22;        // 03 Fd_Lambert(albedo)
 const int DBG_VISIBILITY = 23;     // 04 lightVisibility: 1 lit, 0 shadowed, -1 not asked (no light)
@@ -59,7 +61,9 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
         vec3 h = normalize(l + v);
         float NoL = clamp(dot(hit.n, l), 0.0, 1.0);
         float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
-        debugRecord(DBG_ANGLES, bounce, i, vec3(NoL, dot(hit.n, h), dot(v, h)));
+        debugRecord(DBG_LIGHT_DIR, bounce, i, l);
+        debugRecord(DBG_HALF, bounce, i, h);
+        debugRecord(DBG_ANGLES, bounce, i, vec3(NoL, NoV, dot(v, h)));
         debugRecord(DBG_IRRADIANCE, bounce, i, E);
         debugRecord(DBG_LAMBERT, bounce, i, Fd_Lambert(m.albedo));
         float visibility = -1.0;

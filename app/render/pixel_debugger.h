@@ -29,7 +29,7 @@ namespace rl {
 enum class PixelValueKind {
     SampleOffset = 1, CameraRay = 2,
     Ray = 10, Hit = 11, Point = 12, Normal = 13, Miss = 14,
-    Angles = 20, Irradiance = 21, Lambert = 22, Visibility = 23, D = 24, G = 25, F = 26, Alpha = 27, F0 = 28,
+    LightDir = 18, Half = 19, Angles = 20, Irradiance = 21, Lambert = 22, Visibility = 23, D = 24, G = 25, F = 26, Alpha = 27, F0 = 28,
     Diffuse = 29, Specular = 30, Brdf = 31, Shaded = 32,
     Weight = 40, Radiance = 41, Display = 50,
 };
