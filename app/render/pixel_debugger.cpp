@@ -133,9 +133,11 @@ std::pair<double, double> tolerance(K kind) {
     }
 }
 
-bool within(const PixelValue& v) {
+// Sets v.toleranceUsed; true when every component is within tolerance.
+bool within(PixelValue& v) {
     if (!v.reference) return false;
     const auto [abs, rel] = tolerance(v.kind);
+    v.toleranceUsed = 0;
     for (int c = 0; c < v.components; ++c) {
         const double g = v.gl[c], r = (*v.reference)[c];
         if (!std::isfinite(g)) return false;
@@ -143,9 +145,9 @@ bool within(const PixelValue& v) {
             if (g != r) return false;  // another sphere
             continue;
         }
-        if (std::abs(g - r) > abs + rel * std::abs(r)) return false;
+        v.toleranceUsed = std::max(v.toleranceUsed, std::abs(g - r) / (abs + rel * std::abs(r)));
     }
-    return true;
+    return v.toleranceUsed <= 1.0;
 }
 
 using Key = std::tuple<int, int, int>;  // kind, bounce, light

@@ -43,7 +43,8 @@ struct PixelValue {
     int components = 3;
     int exercise = 0;       // the course exercise whose function gives it; 0: the framework
     std::string function;   // "D_GGX(n, h, alpha)"
-    bool differs = false;   // beyond the tolerance (pixel_debugger.cpp, valueTolerance)
+    bool differs = false;   // beyond the tolerance (pixel_debugger.cpp, tolerance())
+    double toleranceUsed = 0;  // max over components of |gl - reference| / tolerance (differs: > 1)
     std::string name() const;  // "bounce 1, lights[0]: D"
 };
 
