@@ -321,8 +321,10 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
     // A value the reference's path has and the program's does not (a path
     // that stops early): missing on screen, the program's side empty.
     if (out.firstDifference < 0 && !out.loopRanAway) {
-        for (const auto& [key, value] : expected) {
-            const bool present = std::any_of(out.values.begin(), out.values.end(), [&](const PixelValue& v) {
+        for (const auto& entry : expected) {
+            const Key& key = entry.first;  // not a structured binding: C++17 lambdas cannot capture those (clang)
+            const dvec3& value = entry.second;
+            const bool present = std::any_of(out.values.begin(), out.values.end(), [&key](const PixelValue& v) {
                 return std::tuple(int(v.kind), v.bounce, v.light) == key;
             });
             if (present) continue;
