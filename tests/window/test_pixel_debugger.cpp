@@ -7,6 +7,7 @@
 
 #include "checks/probe_cases.h"
 #include "checks/probe_runner.h"
+#include "core/float_range.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -15,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -154,10 +156,11 @@ TEST(PixelDebugger, SolutionsAgreeWithTheReferenceEverywhere) {
     }
 }
 
-// The program's values are its exercise functions' own: the recorded D, G,
-// F and Lambert equal a probe of the same functions (checks/probe_runner.h)
-// on the inputs the program recorded beside them, for the solutions and the
-// mutants of 05, 06 and 07.
+// The program's values are its exercise functions' own: the recorded E and
+// Lambert (03), D (05), G (06), F (07), diffuse and specular (08) and the
+// display colour (10) equal a probe of the same functions
+// (checks/probe_runner.h) on the inputs the program recorded beside them,
+// for the solutions and the mutants of 05, 06, 07, 08 and 10.
 TEST(PixelDebugger, RecordedValuesEqualAProbeOfTheSameInputs) {
     auto context = createHeadlessContext(Backend::Auto);
     TempDir dir;
@@ -166,7 +169,9 @@ TEST(PixelDebugger, RecordedValuesEqualAProbeOfTheSameInputs) {
     const std::vector<Folder> folders = {{"", sourceRoot() / "solutions"},
                                          {"05-ggx", mutantFolder(dir.path(), "05-ggx", "missing-pi")},
                                          {"06-geometry", mutantFolder(dir.path(), "06-geometry", "ibl-k")},
-                                         {"07-fresnel", mutantFolder(dir.path(), "07-fresnel", "one-plus-f0")}};
+                                         {"07-fresnel", mutantFolder(dir.path(), "07-fresnel", "one-plus-f0")},
+                                         {"08-cook-torrance", mutantFolder(dir.path(), "08-cook-torrance", "missing-four")},
+                                         {"10-display", mutantFolder(dir.path(), "10-display", "gamma-before-tonemap")}};
     for (const Folder& folder : folders) {
         const Implementation impl{folder.dir, {}};
         const PixelDebug d = debugPixel(buildPixelDebugProgram(impl, scene), scene, scene.camera, 64, 48, 12, 23,
@@ -197,6 +202,50 @@ TEST(PixelDebugger, RecordedValuesEqualAProbeOfTheSameInputs) {
                      PixelValueKind::F, 3},
                     {"Fd_Lambert", 3, {float(m.albedo.x), float(m.albedo.y), float(m.albedo.z), 0}, PixelValueKind::Lambert, 3},
                 };
+                // 03's irradiance, 08's BRDF and 10's display step on the recorded
+                // inputs: p relative to the anchor as the shader holds it, v = -ray.
+                const PixelValue* p = value(PixelValueKind::Point, bounce, -1);
+                const PixelValue* ray = value(PixelValueKind::Ray, bounce, -1);
+                const PixelValue* l = value(PixelValueKind::LightDir, bounce, light);
+                const PixelValue* E = value(PixelValueKind::Irradiance, bounce, light);
+                const PixelValue* visibility = value(PixelValueKind::Visibility, bounce, light);
+                ASSERT_TRUE(p && ray && l && E && visibility);
+                const glm::dvec3 anchor = sceneAnchor(scene);
+                const glm::vec3 pShader = shaderPosition(p->gl, anchor, 1.0),
+                                lightShader = shaderPosition(scene.lights[std::size_t(light)].position, anchor, 1.0);
+                const glm::dvec3 I = scene.lights[std::size_t(light)].color * scene.lights[std::size_t(light)].intensity;
+                const glm::vec3 nf(n->gl), vf(-glm::vec3(ray->gl)), lf(l->gl);
+                const std::array<float, 24> brdfIn = {float(m.albedo.x), float(m.albedo.y), float(m.albedo.z), float(m.roughness),
+                                                      float(m.metallic), float(m.ao), 0, 0, nf.x, nf.y, nf.z, 0, vf.x, vf.y, vf.z, 0,
+                                                      lf.x, lf.y, lf.z, 0};
+                struct Wide { const char* name; int exercise; std::array<float, 24> in; PixelValueKind kind; bool timesE; };
+                const std::vector<Wide> wide = {
+                    {"pointLightIrradiance", 3, {pShader.x, pShader.y, pShader.z, 0, nf.x, nf.y, nf.z, 0, lightShader.x,
+                                                 lightShader.y, lightShader.z, 0, float(I.x), float(I.y), float(I.z), 0},
+                     PixelValueKind::Irradiance, false},
+                    {"diffuseBRDF", 8, brdfIn, PixelValueKind::Diffuse, true},
+                    {"specularBRDF", 8, brdfIn, PixelValueKind::Specular, true},
+                };
+                for (const Wide& w : wide) {
+                    const PixelValue* recorded = value(w.kind, bounce, light);
+                    ASSERT_NE(recorded, nullptr) << w.name;
+                    if (w.timesE && visibility->gl.x <= 0) continue;  // recorded as 0: nothing to compare
+                    const ShaderProgram probe(assembleShader("fullscreen.vert", impl, {}),
+                                              assembleShader("probe.frag", impl,
+                                                             {{"RL_PROBE_EXERCISE", std::to_string(w.exercise)}}));
+                    ProbeSpec spec(w.name, w.name, 3);
+                    ProbeCase c;
+                    c.in = w.in;
+                    spec.cases.push_back(c);
+                    const std::vector<std::array<float, 4>> out = runProbe(probe, spec, nullptr);
+                    for (int k = 0; k < 3; ++k) {
+                        // As above; times E: one more float32 product.
+                        const double got = w.timesE ? double(out[0][std::size_t(k)] * float(E->gl[k])) : out[0][std::size_t(k)];
+                        EXPECT_NEAR(got, recorded->gl[k], 1e-6 * std::abs(recorded->gl[k]) + 1e-12)
+                            << folder.dir.filename() << " " << w.name << " " << recorded->name();
+                    }
+                    ++compared;
+                }
                 for (const Probe& p : probes) {
                     const PixelValue* recorded = value(p.kind, bounce, light);
                     ASSERT_NE(recorded, nullptr) << p.name;
@@ -217,7 +266,27 @@ TEST(PixelDebugger, RecordedValuesEqualAProbeOfTheSameInputs) {
                     ++compared;
                 }
             }
-        EXPECT_GE(compared, 4) << folder.dir.filename() << ": the pixel must hit a lit sphere";
+        // 10's display step on the recorded radiance (the scene's exposure, tone map, gamma).
+        {
+            const PixelValue* radiance = value(PixelValueKind::Radiance, 0, -1);
+            const PixelValue* display = value(PixelValueKind::Display, 0, -1);
+            ASSERT_TRUE(radiance && display);
+            const RenderSettings& r = scene.render;
+            const ShaderProgram probe(assembleShader("fullscreen.vert", impl, {}),
+                                      assembleShader("probe.frag", impl, {{"RL_PROBE_EXERCISE", "10"}}));
+            ProbeSpec spec("displayEncode", "displayEncode", 3);
+            ProbeCase c;
+            c.in = {float(radiance->gl.x), float(radiance->gl.y), float(radiance->gl.z), float(r.exposure),
+                    float(int(r.tonemap)), r.srgb ? 0.0f : float(r.gamma)};
+            spec.cases.push_back(c);
+            const std::vector<std::array<float, 4>> out = runProbe(probe, spec, nullptr);
+            for (int k = 0; k < 3; ++k)
+                EXPECT_NEAR(std::clamp(double(out[0][std::size_t(k)]), 0.0, 1.0), display->gl[k],
+                            1e-6 * std::abs(display->gl[k]) + 1e-12)
+                    << folder.dir.filename() << " displayEncode";
+            ++compared;
+        }
+        EXPECT_GE(compared, 8) << folder.dir.filename() << ": the pixel must hit a lit sphere";
         if (!folder.unit.empty()) {
             ASSERT_NE(d.first(), nullptr) << folder.unit;
             EXPECT_EQ(d.first()->exercise, std::stoi(folder.unit.substr(0, 2))) << pixelDebugVerdict(d);
