@@ -230,9 +230,6 @@ ShaderProgram buildPixelDebugProgram(const Implementation& impl, const Scene& sc
 
 std::vector<std::array<float, 4>> recordPixelValues(const ShaderProgram& program, const Scene& scene,
                                                     const FrameSettings& frame, int i, int j) {
-    // An error another part left pending (the live view's panel) is not this draw's.
-    for (int k = 0; k < 16 && gl::GetError() != GL_NO_ERROR; ++k) {
-    }
     GLuint target = 0, framebuffer = 0, vertexArray = 0;
     GLint previousFramebuffer = 0, previousViewport[4] = {0, 0, 0, 0};
     gl::GetIntegerv(GL_FRAMEBUFFER_BINDING, &previousFramebuffer);
@@ -268,6 +265,7 @@ std::vector<std::array<float, 4>> recordPixelValues(const ShaderProgram& program
     gl::DeleteVertexArrays(1, &vertexArray);
     gl::DeleteFramebuffers(1, &framebuffer);
     gl::DeleteTextures(1, &target);
+    gl::UseProgram(0);  // no program of ours stays current (see checks/pixel_hint.cpp)
     gl::BindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
     gl::Viewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
     if (error != GL_NO_ERROR) throw Error("OpenGL error while asking a pixel: " + gl::errorName(error));

@@ -177,7 +177,8 @@ private:
     std::string implementationsTitle_;
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window
     // The pixel debugger's program of each side (render/pixel_debugger.h),
-    // built at the first pick after the side's program or model changed.
+    // built at the first pick after the side's files (rebuild()), program
+    // or model changed.
     struct DebugProgram {
         const ShaderProgram* liveProgram = nullptr;  // the side's program it was built beside
         ShaderDefines defines;

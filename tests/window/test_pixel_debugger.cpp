@@ -318,3 +318,27 @@ TEST(PixelDebuggerWindow, BothHalvesOfASideBySideAnswerForTheirOwnCode) {
     EXPECT_NE(leftAnswer.find("checker, 05-ggx's probes on this code: D_GGX"), std::string::npos) << leftAnswer;
     EXPECT_NE(rightAnswer.find("every value within float32 tolerance"), std::string::npos) << rightAnswer;
 }
+
+// The student fixes the file while the window is open: the next pick asks
+// the new code (the debugger's program is built again after the reload).
+TEST(PixelDebuggerWindow, APickAfterAReloadAsksTheNewCode) {
+    Xvfb x;
+    TempDir dir;
+    const fs::path impl = mutantFolder(dir.path(), "05-ggx", "missing-pi");
+    writeText(dir / "script.txt",
+              "wait 1\npick 32 22\nwait 1\nscreenshot asked.png\nwait-reload 60\nwait 1\npick 32 22\nwait 1\nquit\n");
+    Process view({RAYLAB_BINARY, "view", "--size", "64x48", "--no-panel", "--no-captions", "--impl", impl.string(),
+                  "--script", "script.txt"},
+                 windowEnv(x), dir.path());
+    ASSERT_TRUE(waitForFile(dir / "asked.png", std::chrono::seconds(90)));
+    writeText(impl / "05-ggx.glsl.new", rl::test::readText(sourceRoot() / "solutions" / "05-ggx.glsl"));
+    fs::rename(impl / "05-ggx.glsl.new", impl / "05-ggx.glsl");  // one step, as editors save
+    const RunResult r = view.wait(std::chrono::seconds(120));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::size_t reloaded = r.out.find("raylab: reloaded");
+    ASSERT_NE(reloaded, std::string::npos) << r.out;
+    EXPECT_NE(r.out.substr(0, reloaded).find("first difference: primary hit, lights[0]: D = D_GGX"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("every value within float32 tolerance", reloaded), std::string::npos) << r.out.substr(reloaded);
+    EXPECT_EQ(r.out.find("first difference", reloaded), std::string::npos) << r.out.substr(reloaded);
+}
