@@ -342,3 +342,18 @@ TEST(PixelDebuggerWindow, APickAfterAReloadAsksTheNewCode) {
     EXPECT_NE(r.out.find("every value within float32 tolerance", reloaded), std::string::npos) << r.out.substr(reloaded);
     EXPECT_EQ(r.out.find("first difference", reloaded), std::string::npos) << r.out.substr(reloaded);
 }
+
+// A pixel outside the picture, a malformed --ask and --ask with --cpu: one
+// line naming the option, exit 1, no table.
+TEST(PixelDebugger, RefusesAPixelItCannotAsk) {
+    TempDir dir;
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"render", "--ask", "64,10", "--size", "64x48"},
+          std::vector<std::string>{"render", "--ask", "ten,ten"}, std::vector<std::string>{"render", "--ask", "1,1", "--cpu"}}) {
+        const RunResult r = runRaylab(args, {}, dir.path());
+        EXPECT_EQ(r.status, 1) << args[2];
+        EXPECT_EQ(r.err.rfind("raylab: error: --ask: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.out.find("first difference"), std::string::npos) << r.out;
+    }
+}
