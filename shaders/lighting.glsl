@@ -104,15 +104,26 @@ bool keepThisBounce() {
 // "light" in course/*/unit.json; exercises.glsl defines unitLight()).
 vec3 shadeHit(Hit hit, vec3 v) {
     if (!keepThisBounce()) return vec3(0.0);
+#ifdef RL_PIXEL_DEBUG  // pixel_debug.glsl: this bounce's weight, or its values recorded
+    if (g_debugUnitWeight) return vec3(1.0);
+    if (g_debugRecording) debugRecordHit(hit, v, sphereMaterial(hit.sphere), g_bounceCounter - 1);
+#endif
     Material m = sphereMaterial(hit.sphere);
     vec3 radiance = directLight(hit, v, m) + u_ambient * m.albedo * m.ao;
 #ifdef RL_UNIT_LIGHT
     radiance += unitLight(hit, v, m);
+#endif
+#ifdef RL_PIXEL_DEBUG
+    if (g_debugRecording) debugRecord(DBG_SHADED, g_bounceCounter - 1, -1, radiance);
 #endif
     return radiance;
 }
 
 // The radiance of a ray that leaves the scene.
 vec3 backgroundRadiance() {
+#ifdef RL_PIXEL_DEBUG  // pixel_debug.glsl
+    if (g_debugRecording) debugRecord(DBG_MISS, g_bounceCounter, -1, u_background);
+    if (g_debugUnitWeight) return keepThisBounce() ? vec3(1.0) : vec3(0.0);
+#endif
     return keepThisBounce() ? u_background : vec3(0.0);
 }

@@ -12,6 +12,9 @@
 #ifdef RL_MODEL_VARIANTS  // a scene "model" other than the reference (app/render/define_table.cpp)
 #include "model_variants.glsl"
 #endif
+#ifdef RL_PIXEL_DEBUG  // the pixel debugger's program (pixel_debug.frag)
+#include "pixel_debug.glsl"
+#endif
 #include "lighting.glsl"
 #include "trace.glsl"
 #include "camera.glsl"

@@ -319,10 +319,37 @@ function canvasPixel(event) {
   const rect = $('live').getBoundingClientRect();
   return {x: (event.clientX - rect.left) * live.width / rect.width, y: (event.clientY - rect.top) * live.height / rect.height};
 }
+// The pixel debugger (docs/lecture.md, "Ask a pixel"): the table with the
+// first value that differs from the reference marked, its verdict and the
+// checker's hint. Returns the worker's answer (the tests read it).
+async function askPixel(x, y) {
+  const out = $('asked-pixel');
+  out.textContent = 'asking pixel (' + x + ', ' + y + ')…';
+  const r = await painter.call('askPixel', {x, y});
+  if (r.error) { out.textContent = 'ask a pixel: ' + r.error; return r; }
+  out.textContent = '';
+  for (const line of r.text.split('\n')) {
+    const span = document.createElement('span');
+    span.textContent = line + '\n';
+    if (/^>>|^first difference/.test(line)) span.className = 'first';
+    else if (/^ !/.test(line)) span.className = 'differs';
+    else if (/^every value/.test(line)) span.className = 'agree';
+    else if (/^checker,/.test(line)) span.className = 'hint';
+    out.appendChild(span);
+  }
+  const first = out.querySelector('.first');
+  if (first) out.scrollTop = Math.max(0, first.offsetTop - out.offsetTop - 40);
+  return r;
+}
 function wireTrackball() {
   const canvas = $('live');
   canvas.addEventListener('contextmenu', (e) => e.preventDefault());
   canvas.addEventListener('pointerdown', (e) => {
+    if (e.button === 0 && (e.ctrlKey || $('ask-mode').checked)) {  // ask the pixel; the camera stays
+      const p = canvasPixel(e);
+      askPixel(Math.floor(p.x), Math.floor(p.y));
+      return;
+    }
     canvas.setPointerCapture(e.pointerId);
     const p = canvasPixel(e);
     // Left drag orbits (Trackball::Mode::Rotate = 0), right or shift drag pans (Pan = 1).
@@ -431,6 +458,7 @@ window.raylab = {
   setFile(name, text) { if (state.current === name) state.editor.setValue(text); else { save(name, text); markTab(name); } },
   pageStub, pageReportText, showFile,
   compareLive: () => painter.call('compareLive'),
+  askPixel,
   liveFrame: () => painter.call('liveFrame', {view: $('view').value}),
 };
 start().catch((e) => { setStatus('failed: ' + e.message); document.body.dataset.ready = 'failed'; console.error(e); });

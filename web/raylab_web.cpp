@@ -9,6 +9,7 @@
 // The student's files are written to /raylab/exercises/ before each call.
 #include "camera/trackball.h"
 #include "checks/checker.h"
+#include "checks/pixel_hint.h"
 #include "course/exercise_registry.h"
 #include "core/error.h"
 #include "core/image.h"
@@ -19,6 +20,7 @@
 #include "render/gl_renderer.h"
 #include "render/scene_uniforms.h"
 #include "render/define_table.h"
+#include "render/pixel_debugger.h"
 #include "shader/shader_library.h"
 
 #include <emscripten/bind.h>
@@ -195,6 +197,31 @@ std::string compareLiveWithReference() {
         .dump();
 }
 
+// The pixel debugger (render/pixel_debugger.h) at pixel (x, y) from the top
+// left of the live picture, for the files in the editor (/raylab/exercises)
+// and the trackball's camera: the table, the verdict, the checker's hint and
+// the first difference, as JSON for the page.
+std::string askPixel(int x, int y) {
+    Live& l = live();
+    try {
+        if (!l.trackball) return json{{"error", "no picture yet"}}.dump();
+        const int w = l.scene.render.width, h = l.scene.render.height;
+        if (x < 0 || y < 0 || x >= w || y >= h) return json{{"error", "outside the picture"}}.dump();
+        const Implementation impl{exercisesDir(), {}};
+        const ShaderProgram program = buildPixelDebugProgram(impl, l.scene);
+        PixelDebug d = debugPixel(program, l.scene, l.trackball->camera(), w, h, x, h - 1 - y, "your files");
+        addProbeHint(d, impl);
+        json out{{"text", formatPixelDebug(d)}, {"verdict", pixelDebugVerdict(d)}, {"hint", d.hint},
+                 {"values", int(d.values.size())}};
+        if (const PixelValue* f = d.first())
+            out["first"] = {{"name", f->name()}, {"exercise", f->exercise}, {"function", f->function}};
+        return out.dump();
+    } catch (const std::exception& e) {
+        const std::string text = e.what();
+        return json{{"error", text}}.dump();
+    }
+}
+
 std::string contextDescription() {
     try {
         return createHeadlessContext(Backend::Auto)->description();
@@ -237,6 +264,7 @@ EMSCRIPTEN_BINDINGS(raylab) {
     emscripten::function("trackballZoom", &trackballZoom);
     emscripten::function("trackballReset", &trackballReset);
     emscripten::function("compareLiveWithReference", &compareLiveWithReference);
+    emscripten::function("askPixel", &askPixel);
     emscripten::function("contextDescription", &contextDescription);
     emscripten::function("exerciseList", &exerciseList);
 }

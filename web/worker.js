@@ -94,6 +94,8 @@ const ops = {
     return {};
   },
   compareLive() { return JSON.parse(raylab.compareLiveWithReference()); },
+  // The pixel debugger at (x, y) from the top left of the live picture (the files of the last liveCompile).
+  askPixel(msg) { return JSON.parse(raylab.askPixel(msg.x, msg.y)); },
 };
 
 self.onmessage = async (event) => {

@@ -1,5 +1,7 @@
 // raylab render [SCENE] -o out.png [--hdr out.pfm] [--size WxH] [--spp N]
 //               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu] [--view NAME]
+// raylab render [SCENE] --ask X,Y [--impl DIR] [--size WxH]: the pixel debugger's
+//               table for pixel (X, Y) from the top left, no picture written
 #include "commands/commands.h"
 
 #include "core/error.h"
@@ -7,14 +9,17 @@
 #include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
+#include "checks/pixel_hint.h"
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/course_program.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
+#include "render/pixel_debugger.h"
 #include "shader/shader_library.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -34,7 +39,33 @@ struct RenderOptions {
     std::string view = "final";
     bool cpu = false;
     bool generic = false;
+    std::string ask;  // "X,Y": the pixel debugger instead of a picture
 };
+
+// --ask X,Y: the pixel debugger's table (render/pixel_debugger.h) for the
+// implementation of --impl, with the checker's hint for the first exercise
+// whose value differs from the CPU reference's. Exit 0 either way: the
+// table is the answer (a test reads its verdict line).
+void runAsk(const RenderOptions& o) {
+    int x = -1, y = -1;
+    char rest = 0;
+    if (std::sscanf(o.ask.c_str(), "%d,%d%c", &x, &y, &rest) != 2)
+        throw Error("--ask: expected X,Y (a pixel from the top left, e.g. 120,80), got '" + o.ask + "'");
+    Scene scene = sceneForCommand(o.scene, o.size);
+    if (o.spp != 0) scene.render.spp = o.spp;
+    const int w = scene.render.width, h = scene.render.height;
+    if (x < 0 || y < 0 || x >= w || y >= h)
+        throw Error("--ask: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                    std::to_string(w) + "x" + std::to_string(h) + " picture");
+    Implementation impl{o.impl.empty() ? defaultImplementationDir() : std::filesystem::path(o.impl), {}};
+    std::error_code ec;
+    if (!std::filesystem::is_directory(impl.dir, ec)) throw Error("--impl: " + impl.dir.string() + " is not a directory");
+    auto context = createHeadlessContext(parseBackend(o.backend));
+    const ShaderProgram program = buildPixelDebugProgram(impl, scene);
+    PixelDebug debug = debugPixel(program, scene, scene.camera, w, h, x, h - 1 - y, impl.dir.string());
+    addProbeHint(debug, impl);
+    std::cout << formatPixelDebug(debug) << std::flush;
+}
 
 // The PNG and the PFM of one render, both replaced or neither: each is
 // written in full beside its destination first (a full disk fails there,
@@ -69,6 +100,10 @@ void writeRenderOutputs(const std::string& png, const std::string& pfm, const Re
 }
 
 void runRender(const RenderOptions& o) {
+    if (!o.ask.empty()) {
+        if (o.cpu) throw Error("--ask: the pixel debugger asks the GL program; --cpu has no program to ask");
+        return runAsk(o);
+    }
     requireOutputPath(o.png, "PNG");
     if (!o.pfm.empty()) requireOutputPath(o.pfm, "PFM");
     if (!o.pfm.empty()) {
@@ -142,6 +177,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");
+    cmd->add_option("--ask", options->ask,
+                    "Pixel debugger: X,Y from the top left; prints the program's values beside the CPU reference's (no picture)")
+        ->check(notEmpty());
     cmd->add_flag("--generic", options->generic, "Use the generic shader, not one specialised to the scene");
     cmd->callback([options] { runRender(*options); });
 }

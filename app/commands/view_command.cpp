@@ -6,6 +6,8 @@
 // (main.cpp says so otherwise). docs/lecture.md is the user's guide.
 #include "commands/commands.h"
 
+#include "checks/pixel_hint.h"
+
 #include "view/view_app.h"
 #include "view/view_options.h"
 
@@ -54,6 +56,7 @@ void addViewCommand(CLI::App& app) {
             options->width = s.width;
             options->height = s.height;
         }
+        options->probeHint = addProbeHint;  // the checker's hint for an asked pixel (checks/pixel_hint.h)
         ViewApp viewer(*options);
         const int status = viewer.run();
         if (status != 0) throw CLI::RuntimeError(status);

@@ -239,6 +239,7 @@ std::string glslName(const DefineRow& row) { return row.name.substr(0, row.name.
 const std::vector<const char*>& nonSpecialisationNames() {
     static const std::vector<const char*> names = {
         "RL_PROBE_EXERCISE",    // probe.frag: the exercise the checker probes (checks/checker.cpp)
+        "RL_PIXEL_DEBUG",       // pixel_debug.frag: the pixel debugger's recorder (render/pixel_debugger.cpp)
         "RL_MAX_SPHERES",       // scene.glsl: the uniform block's size, its own default
         "RL_MAX_LIGHTS",        // scene.glsl: the same for the lights
         "RL_LOOP_LIMIT",        // loop_guard.glsl: a constant of the runaway-loop guard (per run of a loop)

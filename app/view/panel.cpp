@@ -190,10 +190,44 @@ void pickedSection(ViewState& state, PanelRects* rects) {
     if (state.pickedText.empty()) return;
     if (state.revealPicked) ImGui::SetNextItemOpen(true);
     if (!ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)")) return;
+    // The answer first, wrapped to the panel: the first difference (or that
+    // there is none) and the checker's hint; the table below scrolls.
+    const std::string& all = state.pickedText;
+    for (std::size_t at = 0; at < all.size();) {
+        std::size_t end = all.find('\n', at);
+        if (end == std::string::npos) end = all.size();
+        const std::string line = all.substr(at, end - at);
+        at = end + 1;
+        const bool bad = line.rfind("first difference", 0) == 0 || line.rfind("a loop of", 0) == 0 ||
+                         line.rfind("the pixel debugger cannot", 0) == 0;
+        if (!bad && line.rfind("every value", 0) != 0 && line.rfind("checker,", 0) != 0) continue;
+        ImGui::PushStyleColor(ImGuiCol_Text, bad ? ImVec4(1.0f, 0.35f, 0.35f, 1.0f) : ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
+        if (line.rfind("checker,", 0) == 0) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.5f, 1.0f));
+        ImGui::TextWrapped("%s", line.c_str());
+        ImGui::PopStyleColor(line.rfind("checker,", 0) == 0 ? 2 : 1);
+    }
     // Its own scrolling box: two lights and two bounces are ~25 lines.
     ImGui::BeginChild("##picked", ImVec2(0, 12 * ImGui::GetTextLineHeightWithSpacing()), true,
                       ImGuiWindowFlags_HorizontalScrollbar);
-    ImGui::TextUnformatted(state.pickedText.c_str());
+    // The pixel debugger's table (render/pixel_debugger.h): the first value
+    // that differs from the reference (">>") and its verdict in red, the
+    // values after it that differ too ("!") in orange.
+    std::size_t start = 0;
+    const std::string& text = state.pickedText;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        if (line.rfind(">>", 0) == 0 || line.rfind("first difference", 0) == 0) {
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", line.c_str());
+            if (state.revealPicked && line.rfind(">>", 0) == 0) ImGui::SetScrollHereY(0.25f);  // in view at once
+        }
+        else if (line.rfind(" !", 0) == 0)
+            ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", line.c_str());
+        else
+            ImGui::TextUnformatted(line.c_str());
+        start = end + 1;
+    }
     ImGui::EndChild();
     if (rects) rects->askedPixel = itemRect();
 }

@@ -316,6 +316,9 @@ void ViewApp::rebuild(Side& side, bool initial) {
     side.facts = implementationFacts(program.implementation());
     program.setDefines(liveDefines(side));
     const bool ok = program.rebuild();
+    // The files changed: the pixel debugger's program of this side is built
+    // again at the next pick (a freed program's address may come back).
+    debugPrograms_[&side - sides_.data()].program.reset();
     side.watcher->watch(program.files());
     if (!initial) ++reloads_;
     if (ok) {

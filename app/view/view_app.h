@@ -119,6 +119,10 @@ private:
     void valueChanged();
     // Ask a pixel: the CPU reference's terms at `pixel` (framebuffer, top-left origin).
     void pickPixel(glm::dvec2 pixel);
+    // The pixel debugger's answer for picture pixel (i, j) (row from the
+    // bottom) of side `side`'s code; the CPU reference's breakdown alone,
+    // with the reason, when the debugger's program does not build.
+    std::string debugPickedPixel(int side, const Scene& scene, const Camera& camera, int width, int height, int i, int j);
     // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
     void pictureColumns(int half, int& x0, int& width) const;
     // Side by side: the rows of the letterboxed half picture (top-left origin).
@@ -195,6 +199,15 @@ private:
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window
+    // The pixel debugger's program of each side (render/pixel_debugger.h),
+    // built at the first pick after the side's files (rebuild()), program
+    // or model changed.
+    struct DebugProgram {
+        const ShaderProgram* liveProgram = nullptr;  // the side's program it was built beside
+        ShaderDefines defines;
+        std::unique_ptr<ShaderProgram> program;
+    };
+    DebugProgram debugPrograms_[2];
     std::optional<ref::PixelTerms> picked_;  // the last asked pixel, its rays drawn over the picture  // the implementations' part of the window title
     std::string toast_;
     Clock::time_point toastUntil_{};

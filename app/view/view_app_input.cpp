@@ -2,6 +2,9 @@
 // handful of functions, and the actions of the key table (key_bindings.h).
 #include "view/view_app.h"
 
+#include "render/define_table.h"
+#include "render/pixel_debugger.h"
+
 #include "core/error.h"
 #include "view/screenshot.h"
 
@@ -217,13 +220,44 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
             return;
         }
         picked_ = ref::explainPixel(scene, camera, width, height, i - x0, height - 1 - (row - y0));
-        state_.pickedText = ref::formatPixelTerms(scene, *picked_);
+        // The code on screen at that pixel: side by side the half's, in the
+        // wipe the side of the divider it is on.
+        int side = pickedHalf_ < 0 ? 0 : pickedHalf_;
+        if (wipeActive() && i >= dividerPixel()) side = 1;
+        if (wipeActive()) where = std::string(" (") + sides_[std::size_t(side)].program->label() + ", " +
+                                  (side == 0 ? "left" : "right") + " of the divider)";
+        state_.pickedText = debugPickedPixel(side, scene, camera, width, height, i - x0, height - 1 - (row - y0));
         state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
         state_.revealPicked = true;
         std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row - y0 << ") from the top left" << where << "\n"
                   << state_.pickedText << std::flush;
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
+    }
+}
+
+std::string ViewApp::debugPickedPixel(int side, const Scene& scene, const Camera& camera, int width, int height, int i,
+                                      int j) {
+    Side& s = sides_[std::size_t(side)];
+    const Implementation& impl = s.program->implementation();
+    DebugProgram& debug = debugPrograms_[side];
+    try {
+        ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::Generic);
+        if (!debug.program || debug.liveProgram != s.program->program() || debug.defines != defines) {
+            debug.program.reset();
+            debug.program = std::make_unique<ShaderProgram>(buildPixelDebugProgram(impl, scene));
+            debug.liveProgram = s.program->program();
+            debug.defines = defines;
+        }
+        PixelDebug answer = debugPixel(*debug.program, scene, camera, width, height, i, j, s.program->label());
+        if (options_.probeHint) options_.probeHint(answer, impl);
+        // Then the reference's whole breakdown (material, l, h, E per light):
+        // what the right-hand column was computed from.
+        return formatPixelDebug(answer) + "\n" + ref::formatPixelTerms(scene, *picked_);
+    } catch (const Error& e) {  // the debugger's program did not build: the reference's terms, and why
+        const std::string text = e.what();
+        return "the pixel debugger cannot run this code (" + text.substr(0, text.find('\n')) +
+               "); the CPU reference alone:\n" + ref::formatPixelTerms(scene, *picked_);
     }
 }
 

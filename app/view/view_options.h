@@ -1,6 +1,10 @@
 // The command line of `raylab view` (app/commands/view_command.cpp).
 #pragma once
 
+#include "render/pixel_debugger.h"
+#include "shader/shader_library.h"
+
+#include <functional>
 #include <string>
 
 namespace rl {
@@ -23,6 +27,10 @@ struct ViewOptions {
     bool hideCaptions = false;   // start without the caption and colour bar on the picture
     float uiScale = 0;           // 0 = the monitor's content scale
     bool generic = false;        // draw with the generic program (model defines only), as before the live specialisation
+    // The asked pixel's checker hint (checks/pixel_hint.h, a layer above the
+    // view: view_command.cpp hands it in); unset: the debugger names the
+    // exercise and its handout only.
+    std::function<void(PixelDebug&, const Implementation&)> probeHint;
 };
 
 }  // namespace rl

@@ -2,7 +2,7 @@
 // case a run, against the native checker (./raylab check) run in the same test.
 //   node tests/browser/browser_test.js BACKEND CASE PAGE RAYLAB
 // BACKEND: swiftshader (Chromium's CPU GL) | mesa (Mesa through ANGLE's GL-EGL)
-// CASE:    solutions | stubs | mutants | compile-error | storage | runaway | handout
+// CASE:    solutions | stubs | mutants | compile-error | storage | runaway | handout | debugger
 // Exit 0 when every assertion holds; each failure is one line on stderr.
 // No network: every request other than file:, data: and blob: fails the test.
 'use strict';
@@ -292,6 +292,56 @@ const cases = {
     const zipped = await page.evaluate(async () => new Uint8Array(await window.raylab.exercisesZip().arrayBuffer()).length);
     expect(zipped > 0, 'no zip');
     console.log('handout 05-ggx: NOT STARTED, FAIL (textbook), PASS (the hints), marks followed');
+  },
+  // The pixel debugger (docs/lecture.md, "Ask a pixel") in the page: for three
+  // mutants the first differing value is in the mutated exercise, the same
+  // value `./raylab render --ask` names natively for the same scene, size and
+  // pixel; the solutions agree; a Ctrl+click on the picture shows the table.
+  async debugger(page) {
+    const x = 160, y = 120;  // the lecture scene at 320x240: a lit sphere
+    const nativeAsk = (dir) => {
+      const run = spawnSync(raylab, ['render', path.join(root, 'scenes/lecture.json'), '--size', '320x240',
+                                     '--ask', x + ',' + y, '--impl', dir], {cwd: root, encoding: 'utf8'});
+      return (run.stdout.match(/^(first difference: [^=]*=|every value)/m) || [''])[0];
+    };
+    await setFiles(page, solutions);
+    await page.evaluate(() => window.raylab.compileLive());
+    let r = await page.evaluate(([x, y]) => window.raylab.askPixel(x, y), [x, y]);
+    expect(!r.error && !r.first && /^every value within float32 tolerance/.test(r.verdict),
+           'solutions: ' + (r.error || r.verdict));
+    for (const m of ['03-lambert--missing-pi', '05-ggx--missing-pi', '10-display--gamma-before-tonemap']) {
+      const unit = m.split('--')[0];
+      const text = fs.readFileSync(mutantPath(m), 'utf8');
+      await setFiles(page, {[unit + '.glsl']: text});
+      await page.evaluate(() => window.raylab.compileLive());
+      r = await page.evaluate(([x, y]) => window.raylab.askPixel(x, y), [x, y]);
+      expect(!r.error && r.first && r.first.exercise === Number(unit.slice(0, 2)),
+             m + ': first difference ' + JSON.stringify(r.first || r.error));
+      expect(r.verdict.includes(' in ' + unit + ' (course/' + unit + '/handout.md)'), m + ': ' + r.verdict);
+      expect(r.hint.startsWith('checker, ' + unit + "'s probes on this code: ") && !r.hint.includes('every case passes'),
+             m + ': hint ' + r.hint);
+      const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'rl-ask-'));
+      for (const [f, t] of Object.entries(solutions)) fs.writeFileSync(path.join(dir, f), t);
+      fs.writeFileSync(path.join(dir, unit + '.glsl'), text);
+      const native = nativeAsk(dir);
+      fs.rmSync(dir, {recursive: true, force: true});
+      expect(native && r.verdict.startsWith(native), m + ': native says "' + native + '", the page "' + r.verdict + '"');
+      await setFiles(page, {[unit + '.glsl']: solutions[unit + '.glsl']});
+    }
+    // A Ctrl+click on the picture asks that pixel, the camera stays.
+    await setFiles(page, {'05-ggx.glsl': fs.readFileSync(mutantPath('05-ggx--missing-pi'), 'utf8')});
+    await page.evaluate(() => window.raylab.compileLive());
+    const box = await page.locator('#live').boundingBox();
+    await page.keyboard.down('Control');
+    await page.mouse.click(box.x + (x + 0.5) * box.width / 320, box.y + (y + 0.5) * box.height / 240);
+    await page.keyboard.up('Control');
+    await page.waitForFunction(() => /first difference|every value|ask a pixel:/.test(
+        document.getElementById('asked-pixel').textContent), null, {timeout: 120000});
+    const shown = await page.evaluate(() => [document.getElementById('asked-pixel').textContent,
+                                             document.querySelector('#asked-pixel .first') !== null]);
+    expect(/first difference: primary hit, lights\[0\]: D = D_GGX/.test(shown[0]) && shown[1],
+           'Ctrl+click: ' + shown[0].slice(0, 300));
+    console.log('debugger: solutions agree; 03, 05, 10 mutants named as natively; Ctrl+click shows the table');
   },
   // A loop that never ends: TIMEOUT (the loop guard ends it), and the page still checks afterwards.
   async runaway(page) {

@@ -1,0 +1,85 @@
+// pixel_debug.glsl: the pixel debugger's recorder (pixel_debug.frag,
+// app/render/pixel_debugger.h). The ray tracer of the implementation on
+// screen traces ONE pixel's centre ray again in every fragment of a 1xN
+// target; along the way each value of an exercise function is "recorded":
+// the k-th value goes to the fragment of column k, as (value, key). Nothing
+// but a draw and a float read-back: the same in WebGL2 (no SSBO, no atomics).
+// Included by raytracer.glsl before lighting.glsl only with RL_PIXEL_DEBUG;
+// lighting.glsl's shadeHit() and backgroundRadiance() call it.
+
+// What a value is (the host's PixelValueKind, app/render/pixel_debugger.h).
+const int DBG_SAMPLE_OFFSET = 1;   // 01 sampleOffset(0, n), n
+const int DBG_CAMERA_RAY = 2;      // 01 cameraRayDirection at the pixel's centre
+const int DBG_RAY = 10;            // the direction of the ray that made this hit (09 for a bounce)
+const int DBG_HIT = 11;            // t, sphere (02 through closestHit)
+const int DBG_POINT = 12;          // p (relative to the anchor, scene units)
+const int DBG_NORMAL = 13;         // n
+const int DBG_MISS = 14;           // the ray leaves the scene: the background
+const int DBG_LIGHT_DIR = 18;      // l: the framework's inputs of 03-08 ...
+const int DBG_HALF = 19;           // h
+const int DBG_ANGLES = 20;         // n.l, n.v (both clamped as 08 clamps them), v.h
+const int DBG_IRRADIANCE = 21;     // 03 pointLightIrradiance
+const int DBG_LAMBERT = 22;        // 03 Fd_Lambert(albedo)
+const int DBG_VISIBILITY = 23;     // 04 lightVisibility: 1 lit, 0 shadowed, -1 not asked (no light)
+const int DBG_D = 24;              // 05 D_GGX(n, h, ggxAlpha(roughness))
+const int DBG_G = 25;              // 06 G_SchlickGGX(NoV, NoL, roughness)
+const int DBG_F = 26;              // 07 F_Schlick(baseReflectance, v.h)
+const int DBG_ALPHA = 27;          // 08 ggxAlpha(roughness)
+const int DBG_F0 = 28;             // 08 baseReflectance(m)
+const int DBG_DIFFUSE = 29;        // 08 diffuseBRDF * E (0 in shadow)
+const int DBG_SPECULAR = 30;       // 08 specularBRDF * E (0 in shadow)
+const int DBG_BRDF = 31;           // 08 cookTorranceBRDF * E (0 in shadow): what the picture adds
+const int DBG_SHADED = 32;         // shadeHit: every light + ambient
+const int DBG_WEIGHT = 40;         // 09 traceRay's weight of bounce k (its throughput there)
+const int DBG_RADIANCE = 41;       // 09 traceRay: the centre ray's radiance
+const int DBG_DISPLAY = 50;        // 10 displayEncode, clamped: the display colour of that radiance
+
+int g_debugSlot = -1;              // the value this fragment writes: its column
+int g_debugCount = 0;              // values recorded so far
+vec4 g_debugValue = vec4(0.0);     // key 0: past the last value
+bool g_debugRecording = false;     // shadeHit() records its hit
+bool g_debugUnitWeight = false;    // shadeHit() and backgroundRadiance() return 1 (at g_onlyBounce only)
+
+// The key: kind + 100 * bounce + 10000 * (light + 1), exact in float32.
+void debugRecord(int kind, int bounce, int light, vec3 value) {
+    if (g_debugCount == g_debugSlot) g_debugValue = vec4(value, float(kind + 100 * bounce + 10000 * (light + 1)));
+    ++g_debugCount;
+}
+
+float shadowVisibility(Hit hit, vec3 lightPosition);  // lighting.glsl
+
+// Everything the exercises compute at one hit, light by light, with the
+// same inputs as the picture's shadeHit().
+void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
+    debugRecord(DBG_RAY, bounce, -1, -v);
+    debugRecord(DBG_HIT, bounce, -1, vec3(hit.t, float(hit.sphere), 0.0));
+    debugRecord(DBG_POINT, bounce, -1, hit.p);
+    debugRecord(DBG_NORMAL, bounce, -1, hit.n);
+    for (int i = 0; i < lightCount(); ++i) {
+        vec3 E = pointLightIrradiance(hit.p, hit.n, lightPosition(i), lightIntensity(i));
+        vec3 l = normalize(lightPosition(i) - hit.p);
+        vec3 h = normalize(l + v);
+        float NoL = clamp(dot(hit.n, l), 0.0, 1.0);
+        float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
+        debugRecord(DBG_LIGHT_DIR, bounce, i, l);
+        debugRecord(DBG_HALF, bounce, i, h);
+        debugRecord(DBG_ANGLES, bounce, i, vec3(NoL, NoV, dot(v, h)));
+        debugRecord(DBG_IRRADIANCE, bounce, i, E);
+        debugRecord(DBG_LAMBERT, bounce, i, Fd_Lambert(m.albedo));
+        float visibility = -1.0;
+        if (E != vec3(0.0)) {  // as lightTerm(): no shadow ray where the light adds nothing
+            g_shadowLight = i;
+            visibility = shadowVisibility(hit, lightPosition(i));
+        }
+        debugRecord(DBG_VISIBILITY, bounce, i, vec3(visibility, 0.0, 0.0));
+        debugRecord(DBG_D, bounce, i, vec3(D_GGX(hit.n, h, ggxAlpha(m.roughness)), 0.0, 0.0));
+        debugRecord(DBG_G, bounce, i, vec3(G_SchlickGGX(NoV, NoL, m.roughness), 0.0, 0.0));
+        debugRecord(DBG_F, bounce, i, F_Schlick(baseReflectance(m), dot(h, v)));
+        debugRecord(DBG_ALPHA, bounce, i, vec3(ggxAlpha(m.roughness), 0.0, 0.0));
+        debugRecord(DBG_F0, bounce, i, baseReflectance(m));
+        vec3 lit = visibility > 0.0 ? E : vec3(0.0);
+        debugRecord(DBG_DIFFUSE, bounce, i, diffuseBRDF(hit.n, v, l, m) * lit);
+        debugRecord(DBG_SPECULAR, bounce, i, specularBRDF(hit.n, v, l, m) * lit);
+        debugRecord(DBG_BRDF, bounce, i, cookTorranceBRDF(hit.n, v, l, m) * lit);
+    }
+}
