@@ -238,6 +238,15 @@ Measurement describe(const Variant& v) {
     return m;
 }
 
+// The course's program for the frames the bench draws with it: its cost
+// model weighs compiles against them (render/course_program.h; `raylab
+// render` draws one).
+CourseProgramOptions benchCourseOptions(const Options& o) {
+    CourseProgramOptions course;
+    course.frames = o.warmup + o.frames;
+    return course;
+}
+
 // One renderer per size, so that no timed frame reallocates its targets.
 GlRenderer& rendererFor(std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>>& renderers, const Scene& scene) {
     auto& r = renderers[{scene.render.width, scene.render.height}];
@@ -283,7 +292,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     // exercise file is the course's own (render/course_program.h).
                     if (purpose == Purpose::Picture && !v.exerciseApi && v.withDefines.empty() &&
                         v.withoutDefines.empty() && v.overrides.empty() && courseProgramApplies(v.scene, facts))
-                        programs[i] = buildCoursePicture(v.scene);
+                        programs[i] = buildCoursePicture(v.scene, benchCourseOptions(o));
                     else
                         programs[i] = buildPictureProgram(impl, defines);
                 }

@@ -36,6 +36,17 @@ struct CourseProgramOptions {
     bool screenRects = false;       // camera rays: per-sphere pixel bounds around the test: costs 0-8%
     bool bounceGroups = false;      // bounce rays: bounding spheres of clusters around the tests: costs 0-8%
     bool shadowLists = false;       // per-(light, receiver) candidate lists walked by a loop: 1.6-2.5x slower (gathers)
+    // Per-tile programs: screen tiles grouped by the spheres their camera rays
+    // may hit and the spheres that may shadow those hits, each group drawn
+    // (scissored) by a program with only those tests at the first hit. How
+    // many programs: a cost model weighs the draw time saved over `frames`
+    // frames against the compiles (one frame, as `raylab render` draws, pays
+    // for none at 640x480); 0 frames: never.
+    int frames = 1;
+    int tileSize = 16;  // pixels a side
+    // The tiles' occluders as uniform lists in the one program instead (no
+    // extra compile): each group drawn with its list bounds set.
+    bool tileLists = true;
 };
 
 // Whether `raylab render` may draw `scene` with the generated program: the
