@@ -243,6 +243,7 @@ Measurement describe(const Variant& v) {
 // render` draws one).
 CourseProgramOptions benchCourseOptions(const Options& o) {
     CourseProgramOptions course;
+    course.tilePrograms = true;
     course.frames = o.warmup + o.frames;
     return course;
 }

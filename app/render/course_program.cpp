@@ -12,9 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <iostream>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -435,7 +432,7 @@ std::string programText(const Scene& scene, const Facts& f, const CourseProgramO
         } else {
             // The tile's first hit is one of its candidates, shaded with its own
             // occluders; the bounces after it as in the loop form.
-            const std::string ID = tile && tile->primary.size() == 1 && !std::getenv("FP_NOCONST") ? std::to_string(tile->primary[0]) : "id";
+            const std::string ID = tile && tile->primary.size() == 1 ? std::to_string(tile->primary[0]) : "id";
             s << "    vec3 no, n;\n    float nd, NoV, x, x5;\n    bool inside;\n    {\n"
               << (tile ? shade(ID, &tile->occluders, &tile->primary, false) : shade("id", nullptr, nullptr, false, true))
               << "        sum += c;\n    }\n";
@@ -534,9 +531,13 @@ ShaderProgram compileCourseText(const std::string& text) {
 // "Per-tile programs"): a pixel of a tile costs, beyond what every program
 // pays, one unit per camera-ray test and one per shadow test at its first hit
 // (the bounces' shading is the same in every program), kUnitNs of CPU time a
-// unit; a program costs kCompileMs to compile and generate on llvmpipe.
+// unit; a program costs kCompileMs to compile on llvmpipe (Mesa's shader
+// cache warm; cold it is several times that) and kSwitchMs per frame (the
+// lecture scene measured 5 ms slower a frame with 5 programs whose tests
+// should have saved 1.5 ms).
 constexpr double kUnitNs = 0.6;
 constexpr double kCompileMs = 60.0;
+constexpr double kSwitchMs = 1.0;
 constexpr int kMaxTilePrograms = 12;
 // The list form (one program, each group's occluders in uniform arrays):
 // at most this many groups (draws per rectangle set) and list entries.
@@ -621,11 +622,7 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
     const Facts f = factsOf(scene);
     const RenderSettings& rs = scene.render;
     const int n = f.n, lights = int(f.light.size());
-    int tile = options.tileSize;
-    CourseProgramOptions o2 = options;  // TEMP experiment
-    if (const char* e = std::getenv("FP_FRAMES")) o2.frames = std::atoi(e);
-    if (const char* e = std::getenv("FP_TILE")) tile = std::atoi(e);
-    const CourseProgramOptions& opts = o2;
+    const int tile = options.tileSize;
     // Per-tile programs: where the tiles' savings over the frames to draw pay
     // for their compiles (the cost model above), never with more than 64 spheres.
     bool lightsOutside = true;  // the list form's test needs every light outside every sphere
@@ -634,8 +631,8 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
             glm::dvec3 oc = f.light[l] - f.c[j];
             lightsOutside = lightsOutside && glm::dot(oc, oc) - f.r[j] * f.r[j] > 0;
         }
-    const bool lists = options.tileLists && options.branchFreeShadows && lightsOutside && !std::getenv("FP_NOLISTS");
-    if ((opts.frames > 0 || lists) && tile > 0 && n > 0 && n <= 64 && sky) {
+    const bool lists = options.tileLists && options.branchFreeShadows && lightsOutside;
+    if (((options.tilePrograms && options.frames > 0) || lists) && tile > 0 && n > 0 && n <= 64 && sky) {
         const Camera& cam = scene.camera;
         const glm::dvec3 fw = glm::normalize(cam.target - cam.position);
         const glm::dvec3 right = glm::normalize(glm::cross(fw, cam.up));
@@ -710,7 +707,7 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
         // are more programs than the cap or a merge costs less per frames than
         // a compile.
         auto cost = [](const Cluster& c) { return c.pixels * unitsOf(c); };
-        const double frames = opts.frames;
+        const double frames = options.frames;
         auto entries = [&] {
             std::size_t e = 0;
             for (const Cluster& c : clusters)
@@ -730,10 +727,9 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
                         bb = b;
                     }
                 }
-            bool pays = bestDelta * kUnitNs * 1e-6 * frames < kCompileMs;
-            if (std::getenv("FP_ONE")) pays = true;
-            int cap = std::getenv("FP_MAX") ? std::atoi(std::getenv("FP_MAX")) : kMaxTilePrograms;
-            if (!lists && int(clusters.size()) <= cap && !pays) break;
+            // A merge pays where its cost per frame is below a program's.
+            const bool pays = bestDelta * kUnitNs * 1e-6 < kSwitchMs + kCompileMs / frames;
+            if (!lists && int(clusters.size()) <= kMaxTilePrograms && !pays) break;
             Cluster m = merged(clusters[ba], clusters[bb]);
             m.tiles = clusters[ba].tiles;
             m.tiles.insert(m.tiles.end(), clusters[bb].tiles.begin(), clusters[bb].tiles.end());
@@ -742,8 +738,7 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
         }
         double tiledUnits = 0;
         for (const Cluster& c : clusters) tiledUnits += cost(c);
-        const double savedMs = (allUnits * pixelsAll - tiledUnits) * kUnitNs * 1e-6 * frames;
-        if (std::getenv("FP_DEBUG")) std::cerr << "tiles: " << clusters.size() << " programs, saved " << savedMs << " ms, all " << allUnits << " units\n";
+        const double savedMs = (allUnits * pixelsAll - tiledUnits) * kUnitNs * 1e-6;  // a frame
         if (lists) {
             std::vector<TileKey> keys;
             for (const Cluster& c : clusters) {
@@ -754,7 +749,6 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
                 keys.push_back(key);
             }
             picture.program = compileCourseText(programText(scene, f, options, nullptr, &keys));
-            if (const char* e = std::getenv("FP_DUMP")) { std::ofstream(std::string(e) + "lists.frag") << programText(scene, f, options, nullptr, &keys); }
             int next = 0;
             for (const Cluster& c : clusters) {
                 std::vector<int> ints;
@@ -767,27 +761,23 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
                 for (int index : c.tiles) chosen[index] = true;
                 picture.tiles.push_back({ShaderProgram(), tileRects(chosen, columns, tile, rs.width, rs.height), ints});
             }
-            if (std::getenv("FP_DEBUG")) std::cerr << "lists: " << clusters.size() << " groups, " << next << " entries\n";
             picture.tiles.push_back({std::move(*sky), tileRects(skyTile, columns, tile, rs.width, rs.height), {}});
             if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
             return picture;
         }
-        if (savedMs > kCompileMs * double(clusters.size() - 1)) {
+        if (savedMs > (kSwitchMs + kCompileMs / frames) * double(clusters.size() - 1)) {
             for (const Cluster& c : clusters) {
                 TileKey key;
                 for (int i = 0; i < n; ++i)
-                    if (c.primary >> i & 1 || std::getenv("FP_ALLPRIM")) key.primary.push_back(i);
+                    if (c.primary >> i & 1) key.primary.push_back(i);
                 key.occluders.assign(lights, std::vector<bool>(n, false));
                 for (int l = 0; l < lights; ++l)
-                    for (int j = 0; j < n; ++j) key.occluders[l][j] = (c.occluders[l] >> j & 1) || std::getenv("FP_ALLOCC");
+                    for (int j = 0; j < n; ++j) key.occluders[l][j] = c.occluders[l] >> j & 1;
                 std::vector<bool> chosen(skyTile.size(), false);
                 for (int index : c.tiles) chosen[index] = true;
-                if (const char* e = std::getenv("FP_DUMP")) { std::ofstream(std::string(e) + std::to_string(picture.tiles.size()) + ".frag") << programText(scene, f, options, &key); }
-                if (std::getenv("FP_SPLIT")) picture.tiles.push_back({buildCourseProgram(original, options), tileRects(chosen, columns, tile, rs.width, rs.height), {}}); else
                 picture.tiles.push_back({compileCourseText(programText(scene, f, options, &key)),
                                          tileRects(chosen, columns, tile, rs.width, rs.height), {}});
             }
-            if (std::getenv("FP_DEBUG")) { for (auto& g : picture.tiles) std::cerr << g.rects.size() << " rects; "; std::cerr << "\n"; }
             picture.tiles.push_back({std::move(*sky), tileRects(skyTile, columns, tile, rs.width, rs.height), {}});
             if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
             return picture;
