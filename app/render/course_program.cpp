@@ -729,7 +729,7 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
                 }
             // A merge pays where its cost per frame is below a program's.
             const bool pays = bestDelta * kUnitNs * 1e-6 < kSwitchMs + kCompileMs / frames;
-            if (!lists && int(clusters.size()) <= kMaxTilePrograms && !pays) break;
+            if (!lists && int(clusters.size()) <= kMaxTilePrograms && (!pays || !options.tileCostModel)) break;
             Cluster m = merged(clusters[ba], clusters[bb]);
             m.tiles = clusters[ba].tiles;
             m.tiles.insert(m.tiles.end(), clusters[bb].tiles.begin(), clusters[bb].tiles.end());
@@ -765,7 +765,7 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
             if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
             return picture;
         }
-        if (savedMs > (kSwitchMs + kCompileMs / frames) * double(clusters.size() - 1)) {
+        if (savedMs > (kSwitchMs + kCompileMs / frames) * double(clusters.size() - 1) || !options.tileCostModel) {
             for (const Cluster& c : clusters) {
                 TileKey key;
                 for (int i = 0; i < n; ++i)

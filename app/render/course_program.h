@@ -48,6 +48,7 @@ struct CourseProgramOptions {
     bool tilePrograms = false;
     int frames = 1;     // frames the program will draw: one for `raylab render`
     int tileSize = 16;  // pixels a side
+    bool tileCostModel = true;  // false: one program per group (up to 12) whatever it costs (tests)
     // The tiles' occluders as uniform lists walked by loops with uniform
     // bounds, in one program: lecture 0.67-0.8x against 1.38x (gathers), off.
     bool tileLists = false;
