@@ -532,12 +532,14 @@ ShaderProgram compileCourseText(const std::string& text) {
 // pays, one unit per camera-ray test and one per shadow test at its first hit
 // (the bounces' shading is the same in every program), kUnitNs of CPU time a
 // unit; a program costs kCompileMs to compile on llvmpipe (Mesa's shader
-// cache warm; cold it is several times that) and kSwitchMs per frame (the
-// lecture scene measured 5 ms slower a frame with 5 programs whose tests
-// should have saved 1.5 ms).
+// cache warm; cold it is several times that), and drawing a frame in tile
+// programs at all costs kTiledNs a pixel of the frame (measured, not
+// explained: the lecture scene was 4-5 ms slower a frame at 640x480 with 2 or
+// 5 programs whose tests should have saved 1.5 ms; random-30 gained 3-5 ms
+// with 12 where they should have saved 21).
 constexpr double kUnitNs = 0.6;
 constexpr double kCompileMs = 60.0;
-constexpr double kSwitchMs = 1.0;
+constexpr double kTiledNs = 16.0;
 constexpr int kMaxTilePrograms = 12;
 // The list form (one program, each group's occluders in uniform arrays):
 // at most this many groups (draws per rectangle set) and list entries.
@@ -727,8 +729,8 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
                         bb = b;
                     }
                 }
-            // A merge pays where its cost per frame is below a program's.
-            const bool pays = bestDelta * kUnitNs * 1e-6 < kSwitchMs + kCompileMs / frames;
+            // A merge pays where its cost per frame is below a program's compile.
+            const bool pays = bestDelta * kUnitNs * 1e-6 < kCompileMs / frames;
             if (!lists && int(clusters.size()) <= kMaxTilePrograms && (!pays || !options.tileCostModel)) break;
             Cluster m = merged(clusters[ba], clusters[bb]);
             m.tiles = clusters[ba].tiles;
@@ -765,7 +767,8 @@ PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOpti
             if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
             return picture;
         }
-        if (savedMs > (kSwitchMs + kCompileMs / frames) * double(clusters.size() - 1) || !options.tileCostModel) {
+        const double overheadMs = kTiledNs * 1e-6 * rs.width * rs.height + kCompileMs / frames * double(clusters.size() - 1);
+        if (savedMs > overheadMs || !options.tileCostModel) {
             for (const Cluster& c : clusters) {
                 TileKey key;
                 for (int i = 0; i < n; ++i)
