@@ -238,6 +238,17 @@ Measurement describe(const Variant& v) {
     return m;
 }
 
+// The course's program in the form a use that draws many frames gets (the
+// bench reports draw time, the compile in compile_ms): its cost model weighs
+// compiles against frames (render/course_program.h; `raylab render` draws
+// one and gets the one-program form).
+CourseProgramOptions benchCourseOptions(const Options&) {
+    CourseProgramOptions course;
+    course.tilePrograms = true;
+    course.frames = 1000;
+    return course;
+}
+
 // One renderer per size, so that no timed frame reallocates its targets.
 GlRenderer& rendererFor(std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>>& renderers, const Scene& scene) {
     auto& r = renderers[{scene.render.width, scene.render.height}];
@@ -283,7 +294,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     // exercise file is the course's own (render/course_program.h).
                     if (purpose == Purpose::Picture && !v.exerciseApi && v.withDefines.empty() &&
                         v.withoutDefines.empty() && v.overrides.empty() && courseProgramApplies(v.scene, facts))
-                        programs[i] = buildCoursePicture(v.scene);
+                        programs[i] = buildCoursePicture(v.scene, benchCourseOptions(o));
                     else
                         programs[i] = buildPictureProgram(impl, defines);
                 }

@@ -3,13 +3,17 @@
 #include "course/exercise_registry.h"
 
 #include "render/scene_facts.h"
+#include "render/sky_tiles.h"
 #include "shader/shader_library.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -76,9 +80,11 @@ bool courseProgramApplies(const Scene& scene, const ImplementationFacts& facts) 
            facts.courseFiles.size() == allExercises().size();
 }
 
-std::string courseProgramSource(const Scene& original, const CourseProgramOptions& options) {
-    // A sphere equal to an earlier one (centre and radius) is never the
-    // nearest hit (ties go to the first) and blocks what that one blocks.
+namespace {
+
+// A sphere equal to an earlier one (centre and radius) is never the
+// nearest hit (ties go to the first) and blocks what that one blocks.
+Scene withoutDuplicates(const Scene& original) {
     Scene scene = original;
     scene.spheres.clear();
     for (const Sphere& s : original.spheres) {
@@ -86,7 +92,21 @@ std::string courseProgramSource(const Scene& original, const CourseProgramOption
         for (const Sphere& kept : scene.spheres) duplicate = duplicate || (kept.center == s.center && kept.radius == s.radius);
         if (!duplicate) scene.spheres.push_back(s);
     }
-    const Facts f = factsOf(scene);
+    return scene;
+}
+
+// What a group of screen tiles needs: the spheres its camera rays may hit
+// (ascending ids) and, per light, the spheres that may block it for the
+// points of those spheres seen through the tiles.
+struct TileKey {
+    std::vector<int> primary;
+    std::vector<std::vector<bool>> occluders;  // [light][sphere]
+};
+
+// The program's text for `scene` (duplicates dropped), for the whole frame
+// (tile == nullptr) or for one group of tiles.
+std::string programText(const Scene& scene, const Facts& f, const CourseProgramOptions& options, const TileKey* tile,
+                        const std::vector<TileKey>* groups = nullptr) {
     const RenderSettings& rs = scene.render;
     const int n = f.n, lights = int(f.light.size());
     std::ostringstream s;
@@ -166,6 +186,7 @@ std::string courseProgramSource(const Scene& original, const CourseProgramOption
     } else {
         s << "    float best = INF, m, disc, t, sq;\n    int id = -1;\n    vec3 q;\n    bool h;\n";
         for (int i = 0; i < n; ++i) {
+            if (tile && !std::binary_search(tile->primary.begin(), tile->primary.end(), i)) continue;
             SphereBounds box{};
             const bool bounded = options.screenRects &&
                                  pixelRect(f.c[i], f.r[i], right, up, fw, t, aspect, rs.width, rs.height, box);
@@ -191,133 +212,165 @@ std::string courseProgramSource(const Scene& original, const CourseProgramOption
         }
         s << "    if (id < 0) return " << vec(bg) << ";\n";
         s << "    vec3 p = best * d, sum = vec3(0.0)" << (rs.maxBounces > 0 ? ", T = vec3(1.0)" : "") << ";\n";
-        if (rs.maxBounces > 0) s << "    for (int bounce = 0;; ++bounce) {\n";
-        else s << "    {\n";
-        const char* T = rs.maxBounces > 0 ? "T * " : "";
-        s << "        vec3 no = (p - SC[id]) * SIR[id];\n"
-             "        float nd = dot(no, d);\n"
-             "        bool inside = nd > 0.0;\n"
-             "        vec3 n = inside ? -no : no, v = -d;\n"
-             "        float NoV = clamp(abs(nd), 1e-4, 1.0);\n"
-             "        vec3 c = SAMB[id], F0 = SF0[id], KD = SKD[id];\n"
-             "        float a2 = SA2[id], k1 = SK[id], gv = 0.25 / (NoV * (1.0 - k1) + k1), x, x5;\n";
-        if (lights > 0) s << "        vec3 lu, s, F;\n        float d2, il, NoL, E, ss, ns, den;\n        bool blk;\n";
-        for (int l = 0; l < lights; ++l) {
-            const Light& light = scene.lights[l];
-            // The model's d2 <= 1e-12 (a light on the surface adds nothing), in
-            // the scene's units: a light within 1e-6 of every surface point is
-            // left out; the test is written only where some point is that close.
-            double nearest = 1e300, farthest = 0;
-            for (int k = 0; k < n; ++k) {
-                double dc = glm::length(f.light[l] - f.c[k]) / f.scale, r = f.r[k] / f.scale;
-                nearest = std::min(nearest, std::abs(dc - r));
-                farthest = std::max(farthest, dc + r);
-            }
-            if (farthest * farthest <= 1e-12) continue;
-            const std::string onSurface =
-                nearest * nearest <= 1e-12 * (1 + 1e-6) ? " && d2 > " + num(1e-12 * f.scale * f.scale) : "";
-            s << "        lu = " << vec(f.light[l]) << " - p; d2 = dot(lu, lu); il = inversesqrt(d2); NoL = dot(n, lu) * il;\n";
-            // Lights behind the surface skip everything, whole pixel groups at a time.
-            s << "        if (NoL > 0.0" << onSurface << (f.simple ? "" : " && !(inside && LOUT" + std::to_string(l) + "[id])") << ") {\n";
-            s << "            blk = false;\n";
-            // The occluder candidates of (light, receiver) as a list walked by a
-            // loop: llvmpipe runs every `if` body for its whole pixel group (the
-            // condition only masks the writes), but a loop stops when no pixel of
-            // the group needs another turn, so a receiver with 3 candidates of 30
-            // pays for 3 tests, and a group stops at its first blocker.
-            std::vector<std::vector<int>> lists(n);
-            bool listable = options.shadowLists;
-            for (int k = 0; k < n; ++k)
-                for (int j = 0; j < n; ++j)
-                    if (f.may[l][k][j]) {
-                        glm::dvec3 oc = f.light[l] - f.c[j];
-                        if (glm::dot(oc, oc) - f.r[j] * f.r[j] <= 0) listable = false;  // the light inside j
-                        lists[k].push_back(j);
+        // The shading of a hit: with `declare`, the loop form (every local
+        // declared here); without, the outer locals are assigned and the rest
+        // lives in the block around it. `ID` is the hit's id (an expression);
+        // `occluders` (per light, per sphere), where given, the only spheres
+        // that can block a light for the hits it shades, `receivers` the ids
+        // it can be.
+        auto shade = [&](const std::string& ID, const std::vector<std::vector<bool>>* occluders,
+                         const std::vector<int>* receivers, bool declare, bool uniformLists = false) {
+            std::ostringstream s;
+            if (declare)
+                s << "        vec3 no = (p - SC[" << ID << "]) * SIR[" << ID << "];\n"
+                     "        float nd = dot(no, d);\n"
+                     "        bool inside = nd > 0.0;\n"
+                     "        vec3 n = inside ? -no : no, v = -d;\n"
+                     "        float NoV = clamp(abs(nd), 1e-4, 1.0);\n";
+            else
+                s << "        no = (p - SC[" << ID << "]) * SIR[" << ID << "];\n"
+                     "        nd = dot(no, d);\n"
+                     "        inside = nd > 0.0;\n"
+                     "        n = inside ? -no : no; vec3 v = -d;\n"
+                     "        NoV = clamp(abs(nd), 1e-4, 1.0);\n";
+            s << "        vec3 c = SAMB[" << ID << "], F0 = SF0[" << ID << "], KD = SKD[" << ID << "];\n"
+                 "        float a2 = SA2[" << ID << "], k1 = SK[" << ID << "], gv = 0.25 / (NoV * (1.0 - k1) + k1)"
+              << (declare ? ", x, x5" : "") << ";\n";
+            if (lights > 0) s << "        vec3 lu, s, F;\n        float d2, il, NoL, E, ss, ns, den;\n        bool blk;\n";
+            for (int l = 0; l < lights; ++l) {
+                const Light& light = scene.lights[l];
+                // The model's d2 <= 1e-12 (a light on the surface adds nothing), in
+                // the scene's units: a light within 1e-6 of every surface point is
+                // left out; the test is written only where some point is that close.
+                double nearest = 1e300, farthest = 0;
+                for (int k = 0; k < n; ++k) {
+                    double dc = glm::length(f.light[l] - f.c[k]) / f.scale, r = f.r[k] / f.scale;
+                    nearest = std::min(nearest, std::abs(dc - r));
+                    farthest = std::max(farthest, dc + r);
+                }
+                if (farthest * farthest <= 1e-12) continue;
+                const std::string onSurface =
+                    nearest * nearest <= 1e-12 * (1 + 1e-6) ? " && d2 > " + num(1e-12 * f.scale * f.scale) : "";
+                s << "        lu = " << vec(f.light[l]) << " - p; d2 = dot(lu, lu); il = inversesqrt(d2); NoL = dot(n, lu) * il;\n";
+                // Lights behind the surface skip everything, whole pixel groups at a time.
+                s << "        if (NoL > 0.0" << onSurface
+                  << (f.simple ? "" : " && !(inside && LOUT" + std::to_string(l) + "[" + ID + "])") << ") {\n";
+                s << "            blk = false;\n";
+                // The occluder candidates of (light, receiver) as a list walked by a
+                // loop: llvmpipe runs every `if` body for its whole pixel group (the
+                // condition only masks the writes), but a loop stops when no pixel of
+                // the group needs another turn, so a receiver with 3 candidates of 30
+                // pays for 3 tests, and a group stops at its first blocker.
+                std::vector<std::vector<int>> lists(n);
+                bool listable = options.shadowLists && !occluders;
+                for (int k = 0; k < n; ++k)
+                    for (int j = 0; j < n; ++j)
+                        if (f.may[l][k][j]) {
+                            glm::dvec3 oc = f.light[l] - f.c[j];
+                            if (glm::dot(oc, oc) - f.r[j] * f.r[j] <= 0) listable = false;  // the light inside j
+                            lists[k].push_back(j);
+                        }
+                std::size_t total = 0;
+                for (auto& list : lists) {
+                    // Likelier blockers first: larger as seen from the light.
+                    std::sort(list.begin(), list.end(), [&](int a, int b) {
+                        return f.r[a] / glm::length(f.light[l] - f.c[a]) > f.r[b] / glm::length(f.light[l] - f.c[b]);
+                    });
+                    total += list.size();
+                }
+                if (listable && total > 0) {
+                    std::vector<int> flat, starts;
+                    for (const auto& list : lists) {
+                        starts.push_back(int(flat.size()));
+                        flat.insert(flat.end(), list.begin(), list.end());
                     }
-            std::size_t total = 0;
-            for (auto& list : lists) {
-                // Likelier blockers first: larger as seen from the light.
-                std::sort(list.begin(), list.end(), [&](int a, int b) {
-                    return f.r[a] / glm::length(f.light[l] - f.c[a]) > f.r[b] / glm::length(f.light[l] - f.c[b]);
-                });
-                total += list.size();
-            }
-            if (listable && total > 0) {
-                std::vector<int> flat, starts;
-                for (const auto& list : lists) {
                     starts.push_back(int(flat.size()));
-                    flat.insert(flat.end(), list.begin(), list.end());
+                    std::vector<int> all(n);
+                    for (int j = 0; j < n; ++j) all[j] = j;
+                    const std::string L = std::to_string(l);
+                    auto ints = [](int v) { return std::to_string(v); };
+                    globals << "const int SLJ" << L << "[" << flat.size() << "] = " << array("int", flat, ints) << ";\n";
+                    globals << "const int SLS" << L << "[" << starts.size() << "] = " << array("int", starts, ints) << ";\n";
+                    globals << "const vec4 SLC" << L << "[" << n << "] = " << array("vec4", all, [&](int j) {
+                        glm::dvec3 oc = f.light[l] - f.c[j];
+                        return "vec4(" + num(oc.x) + ", " + num(oc.y) + ", " + num(oc.z) + ", " +
+                               num(glm::dot(oc, oc) - f.r[j] * f.r[j]) + ")";
+                    }) << ";\n";
+                    s << "            for (int q = SLS" << L << "[id], e = SLS" << L << "[id + 1]; q < e && !blk; ++q) {"
+                      << " vec4 o = SLC" << L << "[SLJ" << L << "[q]]; E = dot(o.xyz, lu); blk = E > 0.0 && E * E >= d2 * o.w";
+                    if (f.simple) s << " && E < d2; }\n";
+                    else s << " && (E < d2 || d2 - 2.0 * E + o.w <= 0.0); }\n";
                 }
-                starts.push_back(int(flat.size()));
-                std::vector<int> all(n);
-                for (int j = 0; j < n; ++j) all[j] = j;
-                const std::string L = std::to_string(l);
-                auto ints = [](int v) { return std::to_string(v); };
-                globals << "const int SLJ" << L << "[" << flat.size() << "] = " << array("int", flat, ints) << ";\n";
-                globals << "const int SLS" << L << "[" << starts.size() << "] = " << array("int", starts, ints) << ";\n";
-                globals << "const vec4 SLC" << L << "[" << n << "] = " << array("vec4", all, [&](int j) {
+                if (uniformLists) {
+                    // The tile group's occluders of this light: a loop whose
+                    // bounds are uniforms, so every pixel turns the same times.
+                    s << "            for (int q = u_tile[" << 2 * l << "], e = u_tile[" << 2 * l + 1
+                      << "]; q < e; ++q) { vec4 o = TOC[q]; E = dot(o.xyz, lu); blk = blk || (id != TJ[q] && E > 0.0 && "
+                         "E * E >= d2 * o.w";
+                    if (f.simple) s << " && E < d2); }\n";
+                    else s << " && (E < d2 || d2 - 2.0 * E + o.w <= 0.0)); }\n";
+                }
+                bool any = false;
+                for (int j = 0; j < n && !(listable && total > 0) && !uniformLists; ++j) {
+                    bool used = false;
+                    if (occluders) used = (*occluders)[l][j];
+                    else
+                        for (int k = 0; k < n; ++k) used = used || f.may[l][k][j];
+                    if (!used) continue;
+                    if (!any) {
+                        s << "            uint m0 = M" << l << "_0[" << ID << "]"
+                          << (n > 32 ? ", m1 = M" + std::to_string(l) + "_1[" + ID + "]" : "") << ";\n";
+                        any = true;
+                    }
                     glm::dvec3 oc = f.light[l] - f.c[j];
-                    return "vec4(" + num(oc.x) + ", " + num(oc.y) + ", " + num(oc.z) + ", " +
-                           num(glm::dot(oc, oc) - f.r[j] * f.r[j]) + ")";
-                }) << ";\n";
-                s << "            for (int q = SLS" << L << "[id], e = SLS" << L << "[id + 1]; q < e && !blk; ++q) {"
-                  << " vec4 o = SLC" << L << "[SLJ" << L << "[q]]; E = dot(o.xyz, lu); blk = E > 0.0 && E * E >= d2 * o.w";
-                if (f.simple) s << " && E < d2; }\n";
-                else s << " && (E < d2 || d2 - 2.0 * E + o.w <= 0.0); }\n";
+                    double cl = glm::dot(oc, oc) - f.r[j] * f.r[j];
+                    if (cl > 0 && options.branchFreeShadows) {
+                        // Branch-free (llvmpipe runs an `if` body for the whole group
+                        // anyway): the receiver itself by its id; a sphere outside the
+                        // (light, receiver) mask fails the test by geometry (the mask's
+                        // margins are far above float32's error of E).
+                        const bool mayReceive =
+                            !receivers || std::find(receivers->begin(), receivers->end(), j) != receivers->end();
+                        s << "            E = dot(" << vec(oc) << ", lu); blk = blk || ("
+                          << (mayReceive ? ID + " != " + std::to_string(j) + " && " : "") << "E > 0.0 && E * E >= d2 * "
+                          << num(cl);
+                        if (f.simple) s << " && E < d2);\n";
+                        else s << " && (E < d2 || d2 - 2.0 * E + " << num(cl) << " <= 0.0));\n";
+                        continue;
+                    }
+                    s << "            if (!blk && (m" << j / 32 << " & " << bit(j) << ") != 0u) {";
+                    if (cl > 0) {
+                        // From the light's side: the segment L -> p enters sphere j
+                        // before p. E = (L - c).(p - L) negated; no square root.
+                        s << " E = dot(" << vec(oc) << ", lu); blk = E > 0.0 && E * E >= d2 * " << num(cl);
+                        if (f.simple) s << " && E < d2;";
+                        else s << " && (E < d2 || d2 - 2.0 * E + " << num(cl) << " <= 0.0);";
+                    } else {  // the light inside j: blocked where p is outside j
+                        s << " vec3 w = p - " << vec(f.c[j]) << "; blk = dot(w, w) > " << num(f.r[j] * f.r[j]) << ";";
+                    }
+                    s << " }\n";
+                }
+                // P / d2 with d2 in the scaled units: P scaled by scale^2.
+                const glm::dvec3 power = light.color * light.intensity * (f.scale * f.scale);
+                s << "            if (!blk) {\n"
+                     "                s = lu * il + v; ss = dot(s, s); ns = dot(n, s); vec3 cx = cross(n, s);\n"
+                     // D = a2 / (pi ((n.h)^2 (a2 - 1) + 1)^2) with h = s/|s|, 1 - (n.h)^2 = |n x s|^2/|s|^2
+                     "                den = a2 * ns * ns + dot(cx, cx);\n"
+                     "                x = 1.0 - min(0.5 * sqrt(ss), 1.0); x5 = x * x; x5 *= x5 * x;\n"
+                     "                F = F0 + (1.0 - F0) * x5;\n"
+                     // G / (4 NoL NoV) = gv / (NoL (1 - k) + k)
+                     "                c += ((1.0 - F) * KD + F * (a2 * ss * ss / ("
+                  << num(kPi) << " * den * den) * gv / (NoL * (1.0 - k1) + k1))) * (" << vec(power)
+                  << " * (NoL / d2));\n"
+                     "            }\n        }\n";
             }
-            bool any = false;
-            for (int j = 0; j < n && !(listable && total > 0); ++j) {
-                bool used = false;
-                for (int k = 0; k < n; ++k) used = used || f.may[l][k][j];
-                if (!used) continue;
-                if (!any) {
-                    s << "            uint m0 = M" << l << "_0[id]" << (n > 32 ? ", m1 = M" + std::to_string(l) + "_1[id]" : "")
-                      << ";\n";
-                    any = true;
-                }
-                glm::dvec3 oc = f.light[l] - f.c[j];
-                double cl = glm::dot(oc, oc) - f.r[j] * f.r[j];
-                if (cl > 0 && options.branchFreeShadows) {
-                    // Branch-free (llvmpipe runs an `if` body for the whole group
-                    // anyway): the receiver itself by its id; a sphere outside the
-                    // (light, receiver) mask fails the test by geometry (the mask's
-                    // margins are far above float32's error of E).
-                    s << "            E = dot(" << vec(oc) << ", lu); blk = blk || (id != " << j
-                      << " && E > 0.0 && E * E >= d2 * " << num(cl);
-                    if (f.simple) s << " && E < d2);\n";
-                    else s << " && (E < d2 || d2 - 2.0 * E + " << num(cl) << " <= 0.0));\n";
-                    continue;
-                }
-                s << "            if (!blk && (m" << j / 32 << " & " << bit(j) << ") != 0u) {";
-                if (cl > 0) {
-                    // From the light's side: the segment L -> p enters sphere j
-                    // before p. E = (L - c).(p - L) negated; no square root.
-                    s << " E = dot(" << vec(oc) << ", lu); blk = E > 0.0 && E * E >= d2 * " << num(cl);
-                    if (f.simple) s << " && E < d2;";
-                    else s << " && (E < d2 || d2 - 2.0 * E + " << num(cl) << " <= 0.0);";
-                } else {  // the light inside j: blocked where p is outside j
-                    s << " vec3 w = p - " << vec(f.c[j]) << "; blk = dot(w, w) > " << num(f.r[j] * f.r[j]) << ";";
-                }
-                s << " }\n";
-            }
-            // P / d2 with d2 in the scaled units: P scaled by scale^2.
-            const glm::dvec3 power = light.color * light.intensity * (f.scale * f.scale);
-            s << "            if (!blk) {\n"
-                 "                s = lu * il + v; ss = dot(s, s); ns = dot(n, s); vec3 cx = cross(n, s);\n"
-                 // D = a2 / (pi ((n.h)^2 (a2 - 1) + 1)^2) with h = s/|s|, 1 - (n.h)^2 = |n x s|^2/|s|^2
-                 "                den = a2 * ns * ns + dot(cx, cx);\n"
-                 "                x = 1.0 - min(0.5 * sqrt(ss), 1.0); x5 = x * x; x5 *= x5 * x;\n"
-                 "                F = F0 + (1.0 - F0) * x5;\n"
-                 // G / (4 NoL NoV) = gv / (NoL (1 - k) + k)
-                 "                c += ((1.0 - F) * KD + F * (a2 * ss * ss / ("
-              << num(kPi) << " * den * den) * gv / (NoL * (1.0 - k1) + k1))) * (" << vec(power)
-              << " * (NoL / d2));\n"
-                 "            }\n        }\n";
-        }
-        s << "        sum += " << T << "c;\n";
-        if (rs.maxBounces > 0) {
-            s << "        if (bounce == " << rs.maxBounces << ") break;\n"
-                 "        x = 1.0 - NoV; x5 = x * x; x5 *= x5 * x;\n";
+            return s.str();
+        };
+        // The next ray: the mirror direction from the hit (id, p, n), its
+        // nearest hit; leaves the loop where it finds none.
+        auto bounceRay = [&] {
+            std::ostringstream s;
+            s << "        x = 1.0 - NoV; x5 = x * x; x5 *= x5 * x;\n";
             s << "        T *= SF0[id] + SFR[id] * x5;\n"
                  "        d += (2.0 * abs(nd)) * n;\n"
                  "        int k = id;\n        best = INF; id = -1;\n        vec3 oc; float b, cq;\n";
@@ -367,8 +420,52 @@ std::string courseProgramSource(const Scene& original, const CourseProgramOption
                 s << "        if (inside) { t = S2R[k] * dot(n, d); if (t < best) { best = t; id = k; } }\n";
             s << "        if (id < 0) { " << (blackSky ? "" : "sum += T * " + vec(bg) + "; ") << "break; }\n"
                  "        p += best * d;\n";
+            return s.str();
+        };
+        if (!tile && !groups) {
+            if (rs.maxBounces > 0) s << "    for (int bounce = 0;; ++bounce) {\n";
+            else s << "    {\n";
+            s << shade("id", nullptr, nullptr, true);
+            s << "        sum += " << (rs.maxBounces > 0 ? "T * " : "") << "c;\n";
+            if (rs.maxBounces > 0) s << "        if (bounce == " << rs.maxBounces << ") break;\n" << bounceRay();
+            s << "    }\n";
+        } else {
+            // The tile's first hit is one of its candidates, shaded with its own
+            // occluders; the bounces after it as in the loop form.
+            const std::string ID = tile && tile->primary.size() == 1 ? std::to_string(tile->primary[0]) : "id";
+            s << "    vec3 no, n;\n    float nd, NoV, x, x5;\n    bool inside;\n    {\n"
+              << (tile ? shade(ID, &tile->occluders, &tile->primary, false) : shade("id", nullptr, nullptr, false, true))
+              << "        sum += c;\n    }\n";
+            if (groups) {  // the groups' occluder lists, one after the other, light by light
+                std::vector<int> js, ls;
+                for (const TileKey& g : *groups)
+                    for (int l = 0; l < lights; ++l)
+                        for (int j = 0; j < n; ++j)
+                            if (g.occluders[l][j]) {
+                                js.push_back(j);
+                                ls.push_back(l);
+                            }
+                std::vector<int> at(js.size());
+                for (std::size_t q = 0; q < at.size(); ++q) at[q] = int(q);
+                globals << "uniform int u_tile[" << 2 * lights << "];\n";
+                if (!js.empty()) {
+                    globals << "const vec4 TOC[" << js.size() << "] = " << array("vec4", at, [&](int q) {
+                        glm::dvec3 oc = f.light[ls[q]] - f.c[js[q]];
+                        return "vec4(" + num(oc.x) + ", " + num(oc.y) + ", " + num(oc.z) + ", " +
+                               num(glm::dot(oc, oc) - f.r[js[q]] * f.r[js[q]]) + ")";
+                    }) << ";\n";
+                    globals << "const int TJ[" << js.size() << "] = " << array("int", js, [](int j) { return std::to_string(j); })
+                            << ";\n";
+                } else {
+                    globals << "const vec4 TOC[1] = vec4[1](vec4(0.0));\nconst int TJ[1] = int[1](0);\n";
+                }
+            }
+            if (rs.maxBounces > 0)
+                s << "    for (int bounce = 1;; ++bounce) {\n" << bounceRay() << "    {\n"
+                  << shade("id", nullptr, nullptr, false) << "        sum += T * c;\n    }\n"
+                  << "        if (bounce == " << rs.maxBounces << ") break;\n    }\n";
         }
-        s << "    }\n    return sum;\n}\n";
+        s << "    return sum;\n}\n";
     }
 
     // The camera: one pixel-to-direction expression, d = fx A + fy B + C.
@@ -412,28 +509,285 @@ std::string courseProgramSource(const Scene& original, const CourseProgramOption
     return out;
 }
 
-ShaderProgram buildCourseProgram(const Scene& scene, const CourseProgramOptions& options) {
+}  // namespace
+
+std::string courseProgramSource(const Scene& original, const CourseProgramOptions& options) {
+    const Scene scene = withoutDuplicates(original);
+    return programText(scene, factsOf(scene), options, nullptr);
+}
+
+namespace {
+
+ShaderProgram compileCourseText(const std::string& text) {
     AssembledSource fragment;
-    std::istringstream lines(shaderPrelude({}) + courseProgramSource(scene, options));
+    std::istringstream lines(shaderPrelude({}) + text);
     int number = 0;
     for (std::string line; std::getline(lines, line);) fragment.append(line, {"<course picture program>", ++number});
     Implementation none;
     return ShaderProgram(assembleShader("fullscreen.vert", none, {}), fragment);
 }
 
+// The cost model of the per-tile programs (docs/performance-history.md,
+// "Per-tile programs"): a pixel of a tile costs, beyond what every program
+// pays, one unit per camera-ray test and one per shadow test at its first hit
+// (the bounces' shading is the same in every program), kUnitNs of CPU time a
+// unit; a program costs kCompileMs to compile on llvmpipe (Mesa's shader
+// cache warm; cold it is several times that), and drawing a frame in tile
+// programs at all costs kTiledNs a pixel of the frame (measured, not
+// explained: the lecture scene was 4-5 ms slower a frame at 640x480 with 2 or
+// 5 programs whose tests should have saved 1.5 ms; random-30 gained 3-5 ms
+// with 12 where they should have saved 21).
+constexpr double kUnitNs = 0.6;
+constexpr double kCompileMs = 60.0;
+constexpr double kTiledNs = 16.0;
+constexpr int kMaxTilePrograms = 12;
+// The list form (one program, each group's occluders in uniform arrays):
+// at most this many groups (draws per rectangle set) and list entries.
+constexpr int kMaxListGroups = 16;
+constexpr std::size_t kMaxListEntries = 1024;
+
+struct Cluster {
+    std::uint64_t primary = 0;
+    std::vector<std::uint64_t> occluders;  // per light
+    double pixels = 0;
+    std::vector<int> tiles;
+};
+
+double unitsOf(const Cluster& c) {
+    double u = __builtin_popcountll(c.primary);
+    for (std::uint64_t o : c.occluders) u += __builtin_popcountll(o);
+    return u;
+}
+
+Cluster merged(const Cluster& a, const Cluster& b) {
+    Cluster m;
+    m.primary = a.primary | b.primary;
+    m.occluders = a.occluders;
+    for (std::size_t l = 0; l < m.occluders.size(); ++l) m.occluders[l] |= b.occluders[l];
+    m.pixels = a.pixels + b.pixels;
+    return m;
+}
+
+// A bounding ball of the points of sphere (c, r) (camera outside it) that a
+// camera ray within `theta` of `axis` can hit: they lie at distances
+// t(m) = m - sqrt(m^2 - cc) along the rays, m = c.d over the cone, so in the
+// truncated cone between the smallest and largest such t.
+void visiblePatch(const glm::dvec3& c, double r, double cc, const glm::dvec3& axis, double theta, glm::dvec3& centre,
+                  double& radius) {
+    const double dist = glm::length(c);
+    const double phi = std::acos(std::clamp(glm::dot(axis, c) / dist, -1.0, 1.0));
+    const double sqc = std::sqrt(cc);
+    const double mMax = dist * std::cos(std::max(0.0, phi - theta));
+    const double mMin = std::max(sqc, dist * std::cos(std::min(kPi, phi + theta)));
+    auto tOf = [&](double m) { return cc / (m + std::sqrt(std::max(0.0, m * m - cc))); };
+    if (mMax < sqc) {  // no ray of the cone meets it: the whole sphere (never used)
+        centre = c;
+        radius = r;
+        return;
+    }
+    // Margins far above float32's rounding of a hit point (relative 1e-7).
+    const double t0 = tOf(mMax) * (1 - 1e-4), t1 = tOf(mMin) * (1 + 1e-4);
+    const double ct = std::cos(std::min(theta, kPi / 2));
+    const double s = 0.5 * (t0 + t1) * ct;
+    const double rho2 = std::max(t0 * t0 + s * s - 2 * t0 * s * ct, t1 * t1 + s * s - 2 * t1 * s * ct);
+    const double rho = std::sqrt(std::max(0.0, rho2)) * (1 + 1e-4) + 1e-6 * (s + dist);
+    if (rho >= r) {
+        centre = c;
+        radius = r;
+    } else {
+        centre = s * axis;
+        radius = rho;
+    }
+}
+
+}  // namespace
+
+ShaderProgram buildCourseProgram(const Scene& scene, const CourseProgramOptions& options) {
+    return compileCourseText(courseProgramSource(scene, options));
+}
+
 }  // namespace rl
 
 namespace rl {
 
-PictureProgram buildCoursePicture(const Scene& scene, const CourseProgramOptions& options) {
-    PictureProgram picture{buildCourseProgram(scene, options), std::nullopt};
-    if (options.skyTiles && !scene.spheres.empty()) {
+PictureProgram buildCoursePicture(const Scene& original, const CourseProgramOptions& options) {
+    PictureProgram picture{ShaderProgram(), std::nullopt, {}};
+    std::optional<ShaderProgram> sky;
+    if (options.skyTiles && !original.spheres.empty()) {
         // The tiles no camera ray can hit a sphere in (render/sky_tiles.h):
         // the same generator with no sphere writes the same background pixel.
-        Scene sky = scene;
-        sky.spheres.clear();
-        picture.sky = buildCourseProgram(sky, options);
+        Scene none = original;
+        none.spheres.clear();
+        sky = buildCourseProgram(none, options);
     }
+    const Scene scene = withoutDuplicates(original);
+    const Facts f = factsOf(scene);
+    const RenderSettings& rs = scene.render;
+    const int n = f.n, lights = int(f.light.size());
+    const int tile = options.tileSize;
+    // Per-tile programs: where the tiles' savings over the frames to draw pay
+    // for their compiles (the cost model above), never with more than 64 spheres.
+    bool lightsOutside = true;  // the list form's test needs every light outside every sphere
+    for (int l = 0; l < lights; ++l)
+        for (int j = 0; j < n; ++j) {
+            glm::dvec3 oc = f.light[l] - f.c[j];
+            lightsOutside = lightsOutside && glm::dot(oc, oc) - f.r[j] * f.r[j] > 0;
+        }
+    const bool lists = options.tileLists && options.branchFreeShadows && lightsOutside;
+    if (((options.tilePrograms && options.frames > 0) || lists) && tile > 0 && n > 0 && n <= 64 && sky) {
+        const Camera& cam = scene.camera;
+        const glm::dvec3 fw = glm::normalize(cam.target - cam.position);
+        const glm::dvec3 right = glm::normalize(glm::cross(fw, cam.up));
+        const glm::dvec3 up = glm::cross(right, fw);
+        const double t = std::tan(cam.fovYDegrees * kPi / 360.0), aspect = double(rs.width) / rs.height;
+        const glm::dvec3 A = right * (2 * t * aspect / rs.width), B = up * (2 * t / rs.height);
+        const glm::dvec3 C = fw - right * (t * aspect) - up * t;
+        const int columns = (rs.width + tile - 1) / tile, rows = (rs.height + tile - 1) / tile;
+        std::vector<Cluster> clusters;
+        std::vector<bool> skyTile(std::size_t(columns) * rows, false);
+        std::map<std::vector<std::uint64_t>, int> byKey;
+        double allUnits = 0, pixelsAll = 0;
+        {
+            Cluster all;
+            all.primary = n == 64 ? ~0ull : (1ull << n) - 1;
+            all.occluders.assign(lights, 0);
+            for (int l = 0; l < lights; ++l)
+                for (int k = 0; k < n; ++k)
+                    for (int j = 0; j < n; ++j)
+                        if (f.may[l][k][j]) all.occluders[l] |= 1ull << j;
+            allUnits = unitsOf(all);
+        }
+        for (int row = 0; row < rows; ++row)
+            for (int column = 0; column < columns; ++column) {
+                // Pixel coordinates (gl_FragCoord's frame) of the tile; every
+                // sample of its pixels lies within.
+                const double x0 = column * tile, x1 = std::min((column + 1) * tile, rs.width);
+                const double y0 = row * tile, y1 = std::min((row + 1) * tile, rs.height);
+                const glm::dvec3 axis = glm::normalize(0.5 * (x0 + x1) * A + 0.5 * (y0 + y1) * B + C);
+                double theta = 0;
+                for (double x : {x0, x1})
+                    for (double y : {y0, y1})
+                        theta = std::max(theta, std::acos(std::clamp(glm::dot(axis, glm::normalize(x * A + y * B + C)), -1.0, 1.0)));
+                theta += 1e-4;  // float32 errs on a camera ray's direction by about 1e-7
+                Cluster c;
+                c.occluders.assign(lights, 0);
+                c.pixels = (x1 - x0) * (y1 - y0);
+                for (int i = 0; i < n; ++i) {
+                    const double dist = glm::length(f.c[i]);
+                    bool may = f.cc[i] <= 0 || dist <= f.r[i] * (1 + 1e-6);
+                    if (!may) {
+                        const double toCentre = std::acos(std::clamp(glm::dot(axis, f.c[i]) / dist, -1.0, 1.0));
+                        may = toCentre <= theta + std::asin(std::min(1.0, f.r[i] / dist)) * (1 + 1e-4) + 1e-4;
+                    }
+                    if (!may) continue;
+                    c.primary |= 1ull << i;
+                    glm::dvec3 q = f.c[i];
+                    double rho = f.r[i];
+                    if (f.simple) visiblePatch(f.c[i], f.r[i], f.cc[i], axis, theta, q, rho);
+                    for (int l = 0; l < lights; ++l)
+                        for (int j = 0; j < n; ++j)
+                            if (f.may[l][i][j] && mayBlock(f.light[l], q, rho, f.c[j], f.r[j])) c.occluders[l] |= 1ull << j;
+                }
+                const int index = row * columns + column;
+                if (c.primary == 0) {
+                    skyTile[index] = true;
+                    continue;
+                }
+                pixelsAll += c.pixels;
+                std::vector<std::uint64_t> key = c.occluders;
+                key.push_back(c.primary);
+                auto [it, fresh] = byKey.emplace(key, int(clusters.size()));
+                if (fresh) {
+                    c.tiles.push_back(index);
+                    clusters.push_back(c);
+                } else {
+                    clusters[it->second].pixels += c.pixels;
+                    clusters[it->second].tiles.push_back(index);
+                }
+            }
+        // Agglomerative: merge the pair whose union costs least, while there
+        // are more programs than the cap or a merge costs less per frames than
+        // a compile.
+        auto cost = [](const Cluster& c) { return c.pixels * unitsOf(c); };
+        const double frames = options.frames;
+        auto entries = [&] {
+            std::size_t e = 0;
+            for (const Cluster& c : clusters)
+                for (std::uint64_t o : c.occluders) e += std::size_t(__builtin_popcountll(o));
+            return e;
+        };
+        while (clusters.size() > 1) {
+            if (lists && int(clusters.size()) <= kMaxListGroups && entries() <= kMaxListEntries) break;
+            double bestDelta = 1e300;
+            std::size_t ba = 0, bb = 0;
+            for (std::size_t a = 0; a < clusters.size(); ++a)
+                for (std::size_t b = a + 1; b < clusters.size(); ++b) {
+                    double delta = cost(merged(clusters[a], clusters[b])) - cost(clusters[a]) - cost(clusters[b]);
+                    if (delta < bestDelta) {
+                        bestDelta = delta;
+                        ba = a;
+                        bb = b;
+                    }
+                }
+            // A merge pays where its cost per frame is below a program's compile.
+            const bool pays = bestDelta * kUnitNs * 1e-6 < kCompileMs / frames;
+            if (!lists && int(clusters.size()) <= kMaxTilePrograms && (!pays || !options.tileCostModel)) break;
+            Cluster m = merged(clusters[ba], clusters[bb]);
+            m.tiles = clusters[ba].tiles;
+            m.tiles.insert(m.tiles.end(), clusters[bb].tiles.begin(), clusters[bb].tiles.end());
+            clusters[ba] = std::move(m);
+            clusters.erase(clusters.begin() + std::ptrdiff_t(bb));
+        }
+        double tiledUnits = 0;
+        for (const Cluster& c : clusters) tiledUnits += cost(c);
+        const double savedMs = (allUnits * pixelsAll - tiledUnits) * kUnitNs * 1e-6;  // a frame
+        if (lists) {
+            std::vector<TileKey> keys;
+            for (const Cluster& c : clusters) {
+                TileKey key;
+                key.occluders.assign(lights, std::vector<bool>(n, false));
+                for (int l = 0; l < lights; ++l)
+                    for (int j = 0; j < n; ++j) key.occluders[l][j] = c.occluders[l] >> j & 1;
+                keys.push_back(key);
+            }
+            picture.program = compileCourseText(programText(scene, f, options, nullptr, &keys));
+            int next = 0;
+            for (const Cluster& c : clusters) {
+                std::vector<int> ints;
+                for (int l = 0; l < lights; ++l) {
+                    ints.push_back(next);
+                    next += __builtin_popcountll(c.occluders[l]);
+                    ints.push_back(next);
+                }
+                std::vector<bool> chosen(skyTile.size(), false);
+                for (int index : c.tiles) chosen[index] = true;
+                picture.tiles.push_back({ShaderProgram(), tileRects(chosen, columns, tile, rs.width, rs.height), ints});
+            }
+            picture.tiles.push_back({std::move(*sky), tileRects(skyTile, columns, tile, rs.width, rs.height), {}});
+            if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
+            return picture;
+        }
+        const double overheadMs = kTiledNs * 1e-6 * rs.width * rs.height + kCompileMs / frames * double(clusters.size() - 1);
+        if (savedMs > overheadMs || !options.tileCostModel) {
+            for (const Cluster& c : clusters) {
+                TileKey key;
+                for (int i = 0; i < n; ++i)
+                    if (c.primary >> i & 1) key.primary.push_back(i);
+                key.occluders.assign(lights, std::vector<bool>(n, false));
+                for (int l = 0; l < lights; ++l)
+                    for (int j = 0; j < n; ++j) key.occluders[l][j] = c.occluders[l] >> j & 1;
+                std::vector<bool> chosen(skyTile.size(), false);
+                for (int index : c.tiles) chosen[index] = true;
+                picture.tiles.push_back({compileCourseText(programText(scene, f, options, &key)),
+                                         tileRects(chosen, columns, tile, rs.width, rs.height), {}});
+            }
+            picture.tiles.push_back({std::move(*sky), tileRects(skyTile, columns, tile, rs.width, rs.height), {}});
+            if (picture.tiles.back().rects.empty()) picture.tiles.pop_back();
+            return picture;
+        }
+    }
+    picture.program = buildCourseProgram(original, options);
+    picture.sky = std::move(sky);
     return picture;
 }
 

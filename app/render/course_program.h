@@ -36,6 +36,22 @@ struct CourseProgramOptions {
     bool screenRects = false;       // camera rays: per-sphere pixel bounds around the test: costs 0-8%
     bool bounceGroups = false;      // bounce rays: bounding spheres of clusters around the tests: costs 0-8%
     bool shadowLists = false;       // per-(light, receiver) candidate lists walked by a loop: 1.6-2.5x slower (gathers)
+    // Per-tile programs (app/render/course_program.cpp): 16x16-pixel screen
+    // tiles grouped by the spheres their camera rays may hit and the spheres
+    // that may shadow those hits (the hits' visible patches, bounded on the
+    // host in double), each group drawn (scissored) by a program whose first
+    // hit tests only those; the bounces as before. A cost model picks how many
+    // programs: draw time saved against compiles over `frames` frames and a
+    // per-program cost per frame. Random-30: 1.40-1.43x the expert against
+    // 1.26x without (12 programs); lecture: 5 programs 0.8-0.9x against
+    // 1.3-1.4x (what costs is not known), so the model keeps it off there.
+    bool tilePrograms = false;
+    int frames = 1;     // frames the program will draw: one for `raylab render`
+    int tileSize = 16;  // pixels a side
+    bool tileCostModel = true;  // false: one program per group (up to 12) whatever it costs (tests)
+    // The tiles' occluders as uniform lists walked by loops with uniform
+    // bounds, in one program: lecture 0.67-0.8x against 1.38x (gathers), off.
+    bool tileLists = false;
 };
 
 // Whether `raylab render` may draw `scene` with the generated program: the

@@ -23,7 +23,7 @@ GlRenderer::~GlRenderer() {
 }
 
 PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines) {
-    PictureProgram picture{buildRayTracer(impl, defines), std::nullopt};
+    PictureProgram picture{buildRayTracer(impl, defines), std::nullopt, {}};
     if (std::optional<ShaderDefines> sky = skyProgramDefines(defines)) picture.sky = buildRayTracer(impl, *sky);
     return picture;
 }
@@ -86,6 +86,24 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
 }
 
 void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame) {
+    if (!picture.tiles.empty()) {
+        gl::Enable(GL_SCISSOR_TEST);
+        for (const PictureProgram::Tiles& group : picture.tiles) {
+            const ShaderProgram& program = group.program.valid() ? group.program : picture.program;
+            if (!group.tileInts.empty()) {
+                gl::UseProgram(program.id());
+                // The elements of a uniform array have consecutive locations.
+                const GLint at = program.uniform("u_tile");
+                for (std::size_t i = 0; i < group.tileInts.size() && at >= 0; ++i) gl::Uniform1i(at + GLint(i), group.tileInts[i]);
+            }
+            for (const PixelRect& r : group.rects) {
+                gl::Scissor(r.x, r.y, r.width, r.height);
+                draw(program, frame);
+            }
+        }
+        gl::Disable(GL_SCISSOR_TEST);
+        return;
+    }
     if (!picture.sky) return draw(picture.program, frame);
     auto sameCamera = [&](const FrameSettings& f) {
         return f.cameraToWorld == frame.cameraToWorld && f.fovYRadians == frame.fovYRadians && f.width == frame.width &&

@@ -22,6 +22,17 @@ namespace rl {
 struct PictureProgram {
     ShaderProgram program;
     std::optional<ShaderProgram> sky;
+    // Where non-empty, the frame drawn tile group by tile group instead: each
+    // program over its rectangles (scissored), together the frame once; for
+    // one camera and size only (render/course_program.h's per-tile programs).
+    // A group's `program` may be empty: `program` above then draws it, with
+    // the int array uniform `u_tile` set to `tileInts` first.
+    struct Tiles {
+        ShaderProgram program;
+        std::vector<PixelRect> rects;
+        std::vector<int> tileInts;
+    };
+    std::vector<Tiles> tiles;
 };
 PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines);
 

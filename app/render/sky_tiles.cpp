@@ -60,6 +60,23 @@ std::vector<PixelRect> mergeRuns(const std::vector<std::vector<std::pair<int, in
 
 }  // namespace
 
+std::vector<PixelRect> tileRects(const std::vector<bool>& chosen, int columns, int tile, int width, int height) {
+    const int rows = columns > 0 ? int(chosen.size()) / columns : 0;
+    std::vector<std::vector<std::pair<int, int>>> runs(rows);
+    for (int row = 0; row < rows; ++row)
+        for (int column = 0; column < columns;) {
+            if (!chosen[std::size_t(row) * columns + column]) {
+                ++column;
+                continue;
+            }
+            int last = column;
+            while (last + 1 < columns && chosen[std::size_t(row) * columns + last + 1]) ++last;
+            runs[row].push_back({column, last});
+            column = last + 1;
+        }
+    return mergeRuns(runs, tile, width, height);
+}
+
 SkyTiles skyTiles(const Scene& scene, const FrameSettings& frame, int tile) {
     SkyTiles out;
     const int width = frame.width, height = frame.height;

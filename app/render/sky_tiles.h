@@ -31,4 +31,9 @@ struct SkyTiles {
 // Tiles of `tile` x `tile` pixels, merged into rectangles row by row.
 SkyTiles skyTiles(const Scene& scene, const FrameSettings& frame, int tile = 16);
 
+// Rectangles covering the tiles marked in `chosen` (row-major, the bottom row
+// first, `columns` tiles of `tile` x `tile` pixels a row, clipped to the
+// frame): runs along each row, joined across rows where their extent agrees.
+std::vector<PixelRect> tileRects(const std::vector<bool>& chosen, int columns, int tile, int width, int height);
+
 }  // namespace rl
