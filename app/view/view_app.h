@@ -70,6 +70,10 @@ private:
     void selectProgram(Side& side);
     void sceneChanged(bool cameraMayHaveChanged);
     void renderPicture(bool fullResolution);
+    // The side's picture program for `frame`: the course generator's
+    // (issue #25) where it applies and its structure is built, else the
+    // side's live program (render/define_table.h).
+    const ShaderProgram* pictureProgram(Side& side, const FrameSettings& frame);
     void drawUi(ViewRequests& requests);
     void handleRequests(const ViewRequests& requests);
     void writeScreenshot(const std::string& file, bool withUi);
@@ -77,6 +81,7 @@ private:
     void saveScene(bool confirmed = false);
     void openPreset(int index);
     bool moving() const;
+    bool generatedPending_ = false;  // a side drew with its defines' program until the hand stops
     std::vector<std::string> errors() const;
     void toast(const std::string& message);
     void printStats() const;
