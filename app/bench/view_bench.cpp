@@ -29,7 +29,7 @@ namespace {
 struct Entry {
     ViewBenchRow row;
     View view = View::Final;
-    ShaderProgram program;
+    PictureProgram program;  // a sky program only for the generated one
     bool generated = false;  // the live view's course program: its values set before each draw
     Rendering picture;
 };
@@ -78,11 +78,11 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             const auto start = std::chrono::steady_clock::now();
             if (e.row.program == "live" && isPictureView(view) && generatedApplies) {
                 e.generated = true;
-                e.program = buildLiveCourseProgram(liveCourseSource(scene, frameFromScene(scene)));
+                e.program = buildLiveCoursePicture(scene, liveCourseSource(scene, frameFromScene(scene)));
             } else {
                 const Purpose purpose =
                     e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic : Purpose::LiveView;
-                e.program = buildRayTracer(impl, definesFor(scene, facts, purpose));
+                e.program.program = buildRayTracer(impl, definesFor(scene, facts, purpose));
             }
             e.row.compileMs = msSince(start);
             entries.push_back(std::move(e));
@@ -97,8 +97,8 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     textbook.row.height = scene.render.height;
     textbook.row.clock = clockName;
     const auto textbookStart = std::chrono::steady_clock::now();
-    textbook.program = buildTextbook();
-    setTextbookUniforms(textbook.program, scene);
+    textbook.program.program = buildTextbook();
+    setTextbookUniforms(textbook.program.program, scene);
     textbook.row.compileMs = msSince(textbookStart);
     entries.push_back(std::move(textbook));
     // The expert yardstick (bench/expert.h), the strongest: the picture only.
@@ -110,7 +110,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         expert.row.height = scene.render.height;
         expert.row.clock = clockName;
         const auto expertStart = std::chrono::steady_clock::now();
-        expert.program = buildExpert(scene);
+        expert.program.program = buildExpert(scene);
         expert.row.compileMs = msSince(expertStart);
         entries.push_back(std::move(expert));
     }
@@ -120,7 +120,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     auto drawOne = [&](Entry& e) {
         FrameSettings frame = frameFromScene(scene);
         frame.view = e.view;
-        if (e.generated) setLiveCourseValues(e.program, scene, frame);  // as the view does every frame
+        if (e.generated) setLiveCourseValues(e.program.program, scene, frame);  // as the view does every frame
         if (clock == Clock::Gpu) return renderer.drawTimed(e.program, frame);
         gl::Finish();
         const double cpu0 = processCpuMs();

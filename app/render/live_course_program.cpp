@@ -235,6 +235,16 @@ ShaderProgram buildLiveCourseProgram(const std::string& source) {
     return ShaderProgram(assembleShader("fullscreen.vert", none, {}), fragment);
 }
 
+PictureProgram buildLiveCoursePicture(const Scene& scene, const std::string& source) {
+    PictureProgram picture{buildLiveCourseProgram(source), std::nullopt};
+    if (!scene.spheres.empty()) {
+        Scene sky = scene;
+        sky.spheres.clear();
+        picture.sky = buildLiveCourseProgram(liveCourseSource(sky, frameFromScene(sky)));
+    }
+    return picture;
+}
+
 void setLiveCourseValues(const ShaderProgram& program, const Scene& original, const FrameSettings& frame) {
     const Seen v = seenFrom(original, frame);
     const Scene& scene = v.scene;

@@ -23,6 +23,7 @@
 #pragma once
 
 #include "core/scene.h"
+#include "render/gl_renderer.h"
 #include "render/implementation_facts.h"
 #include "render/scene_uniforms.h"
 #include "shader/program.h"
@@ -42,6 +43,11 @@ std::string liveCourseSource(const Scene& scene, const FrameSettings& frame);
 
 // Compiles `source` (from liveCourseSource()) with fullscreen.vert.
 ShaderProgram buildLiveCourseProgram(const std::string& source);
+// The same with, where the scene has a sphere, the same generator's program
+// with no sphere for the tiles no camera ray can hit one in (render/sky_tiles.h,
+// GlRenderer::draw(const PictureProgram&, ...)); it reads only the plain
+// uniforms GlRenderer sets (background, exposure, gamma).
+PictureProgram buildLiveCoursePicture(const Scene& scene, const std::string& source);
 
 // Sets every value uniform of a program built from
 // liveCourseSource(scene, frame) (the plain uniforms of setFrameUniforms()

@@ -63,7 +63,7 @@ bool LiveProgram::build() {
     return error_.empty();
 }
 
-const ShaderProgram* LiveProgram::generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built) {
+const PictureProgram* LiveProgram::generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built) {
     built = false;
     // The source depends on the structure only: equal sources, same program.
     std::string source = liveCourseSource(scene, frame);
@@ -71,7 +71,7 @@ const ShaderProgram* LiveProgram::generated(const Scene& scene, const FrameSetti
         if (!mayBuild || source == failedSource_) return nullptr;
         const auto start = std::chrono::steady_clock::now();
         try {
-            generated_ = std::make_unique<ShaderProgram>(buildLiveCourseProgram(source));
+            generated_ = std::make_unique<PictureProgram>(buildLiveCoursePicture(scene, source));
             generatedSource_ = std::move(source);
             ++generatedBuilds_;
             built = true;
@@ -81,7 +81,7 @@ const ShaderProgram* LiveProgram::generated(const Scene& scene, const FrameSetti
         }
         lastBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    setLiveCourseValues(*generated_, scene, frame);
+    setLiveCourseValues(generated_->program, scene, frame);
     return generated_.get();
 }
 

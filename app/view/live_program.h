@@ -10,6 +10,7 @@
 #pragma once
 
 #include "core/scene.h"
+#include "render/gl_renderer.h"
 #include "render/scene_uniforms.h"
 #include "shader/program.h"
 #include "shader/shader_library.h"
@@ -65,7 +66,8 @@ public:
     // draws program() meanwhile and asks again when the hand stops), or when
     // that structure does not build (then program() draws it, and the
     // structure is not tried again). Sets `built` when it compiled one.
-    const ShaderProgram* generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built);
+    // With its sky program (render/sky_tiles.h) for GlRenderer::draw(const PictureProgram&, ...).
+    const PictureProgram* generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built);
     // Generated programs compiled since the start (one per structure met).
     int generatedBuilds() const { return generatedBuilds_; }
 
@@ -79,7 +81,7 @@ private:
     std::vector<std::filesystem::path> files_;
     double lastBuildMs_ = 0;
     std::string generatedSource_, failedSource_;
-    std::unique_ptr<ShaderProgram> generated_;
+    std::unique_ptr<PictureProgram> generated_;
     int generatedBuilds_ = 0;
 };
 

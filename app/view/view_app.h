@@ -70,10 +70,10 @@ private:
     void selectProgram(Side& side);
     void sceneChanged(bool cameraMayHaveChanged);
     void renderPicture(bool fullResolution);
-    // The side's picture program for `frame`: the course generator's
-    // (issue #25) where it applies and its structure is built, else the
-    // side's live program (render/define_table.h).
-    const ShaderProgram* pictureProgram(Side& side, const FrameSettings& frame);
+    // The side's picture for `frame` drawn with the course generator's
+    // program (issue #25) where it applies and its structure is built; else
+    // nullptr, and the side's live program (render/define_table.h) draws it.
+    const PictureProgram* generatedPicture(Side& side, const FrameSettings& frame);
     void drawUi(ViewRequests& requests);
     void handleRequests(const ViewRequests& requests);
     void writeScreenshot(const std::string& file, bool withUi);
