@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -338,13 +339,19 @@ std::string imagePath(const fs::path& dir, const std::string& scene, const std::
     return (dir / (scene + "-" + kind + ".png")).string();
 }
 
+// `shared`: the context of checkExercises()' child, current, kept from one
+// exercise to the next (the driver is loaded once); nullptr: its own.
 ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
-                         const std::vector<CheckScene>& scenes) {
+                         const std::vector<CheckScene>& scenes, GlContext* shared = nullptr) {
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
     fastShaderCompiles();
-    auto context = createHeadlessContext(parseBackend(options.backend));
+    std::unique_ptr<GlContext> context;
+    if (!shared) context = createHeadlessContext(parseBackend(options.backend));
+    else
+        while (gl::GetError() != GL_NO_ERROR) {  // nothing of the exercise before reaches this one's checks
+        }
     const Implementation impl = checkCompanions(exercise, file, options);
     ShaderProgram probe, program;
     setPhase("compiling");
@@ -495,15 +502,19 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
 
 }  // namespace
 
-ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
-                             const std::vector<CheckScene>& scenes) {
-    // Made here, not in the child, so that it is removed when this process ends.
-    if (!hasSolutions()) shippedStubFolder();
+namespace {
+
+// The exercise's file, and its report when no check needs to run (missing,
+// the unchanged stub).
+fs::path exerciseFile(const ExerciseInfo& exercise, const CheckOptions& options) {
+    auto it = options.fileOverride.find(exercise.number);
+    return it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
+}
+
+std::optional<ExerciseReport> withoutCheck(const ExerciseInfo& exercise, const fs::path& file) {
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
-    auto it = options.fileOverride.find(exercise.number);
-    fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
     std::error_code ec;
     if (!fs::exists(file, ec)) {
         report.status = CheckStatus::NotStarted;
@@ -517,6 +528,68 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
         report.hint = "start with the handout: " + exercise.handout();
         return report;
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
+                                           const CheckOptions& options, const std::vector<CheckScene>& scenes) {
+    if (!hasSolutions()) shippedStubFolder();  // made here, not in the child (removed when this process ends)
+    std::vector<ExerciseReport> reports(exercises.size());
+    std::vector<std::size_t> checked;  // those a check runs for
+    for (std::size_t k = 0; k < exercises.size(); ++k) {
+        if (auto report = withoutCheck(*exercises[k], exerciseFile(*exercises[k], options)))
+            reports[k] = *report;
+        else
+            checked.push_back(k);
+    }
+    bool shared = false;
+    if (options.isolate && checked.size() > 1) {
+        // One child for all of them: the work of each one's child, one after
+        // another; each report's seconds its own check's.
+        auto work = [&]() {
+            json all = json::array();
+            setPhase("starting the OpenGL context");
+            fastShaderCompiles();
+            auto context = createHeadlessContext(parseBackend(options.backend));
+            for (std::size_t k : checked) {
+                const auto start = std::chrono::steady_clock::now();
+                ExerciseReport report =
+                    runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes, context.get());
+                report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                all.push_back(toJson(report));
+            }
+            return all.dump();
+        };
+        IsolationLimits limits;
+        limits.timeoutSeconds = options.timeoutSeconds;  // one exercise's: a normal submission takes a few seconds
+        IsolatedResult result = runIsolated(work, limits);
+        if (result.outcome == IsolatedResult::Outcome::Finished) {
+            try {
+                const json all = json::parse(result.output);
+                if (all.is_array() && all.size() == checked.size()) {
+                    for (std::size_t i = 0; i < checked.size(); ++i) reports[checked[i]] = reportFromJson(all[i]);
+                    shared = true;
+                }
+            } catch (const json::exception&) {
+            }
+        }
+    }
+    if (!shared)  // each in its own child (or in this process without options.isolate)
+        for (std::size_t k : checked) reports[k] = checkExercise(*exercises[k], options, scenes);
+    return reports;
+}
+
+ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
+                             const std::vector<CheckScene>& scenes) {
+    // Made here, not in the child, so that it is removed when this process ends.
+    if (!hasSolutions()) shippedStubFolder();
+    ExerciseReport report;
+    report.number = exercise.number;
+    report.id = exercise.id;
+    const fs::path file = exerciseFile(exercise, options);
+    if (auto early = withoutCheck(exercise, file)) return *early;
     auto work = [&]() {
         setPhase("starting the OpenGL context");
         return toJson(runChecks(exercise, file, options, scenes)).dump();

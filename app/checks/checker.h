@@ -98,6 +98,16 @@ std::vector<CheckScene> makeCheckScenes();
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes);
 
+// The same verdicts as checkExercise() for each of `exercises` (in that
+// order), with options.isolate their checks share one child process (one
+// driver start for a student's ten exercises instead of ten; issue #25).
+// When that child does not finish cleanly within one exercise's timeout
+// (a crash, a loop, the memory limit) or returns fewer reports, every
+// exercise is checked again in its own child, as checkExercise() does:
+// such a submission gets the verdicts per-exercise isolation gives.
+std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
+                                           const CheckOptions& options, const std::vector<CheckScene>& scenes);
+
 // The verdict on one probe, from the GPU's results (RGB of one texel per
 // case): the counts, the first failure, the table and a hint that names a
 // cause only when the student's numbers support it (a known mistake matched
