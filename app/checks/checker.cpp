@@ -470,7 +470,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
             s.expectedPng = imagePath(outDir, c.name, "expected");
             s.gotPng = imagePath(outDir, c.name, "got");
             s.diffPng = imagePath(outDir, c.name, "diff");
-            writePng(s.expectedPng, c.reference.display);
+            if (options.writeExpectedImages) writePng(s.expectedPng, c.reference.display);
             writePng(s.gotPng, got.display);
             writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
         }

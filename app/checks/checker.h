@@ -73,6 +73,10 @@ struct CheckOptions {
     std::filesystem::path implDir;          // the student's folder (exercises/ by default)
     std::filesystem::path outputDir = "check-output";  // expected/got/diff PNGs of failing images
     bool writeAllImages = false;            // also write them for passing images (grading reports)
+    // The expected PNG of each image: false where the caller has the check
+    // scenes' references already (grading: OUT/_reference/), so only its
+    // path is reported.
+    bool writeExpectedImages = true;
     double timeoutSeconds = 60;             // per exercise
     bool isolate = true;                    // run each exercise in a child process
     std::string backend = "auto";

@@ -195,6 +195,7 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     options.implDir = dir / "submission";
     options.outputDir = dir / "images";
     options.writeAllImages = true;
+    options.writeExpectedImages = false;  // OUT/_reference/ holds them (tidyReport() points there)
     options.timeoutSeconds = settings.timeoutSeconds;
     options.backend = settings.backend;
     options.isolate = true;
