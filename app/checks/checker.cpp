@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/isolated.h"
+#include "core/process_pool.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "core/scene_transform.h"
@@ -544,10 +545,17 @@ std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*
         else
             checked.push_back(k);
     }
-    bool shared = false;
     if (options.isolate && checked.size() > 1) {
         // One child for all of them: the work of each one's child, one after
         // another; each report's seconds its own check's.
+        // The reports done so far, replaced after each check (a scratch file
+        // for this process only: renamed into place, so a killed child leaves
+        // the last whole list), so that a failed child costs only the checks
+        // from the one it failed in onward.
+        std::error_code ec;
+        fs::create_directories(options.outputDir, ec);
+        const fs::path progress = options.outputDir / ".checked-so-far.json";
+        fs::remove(progress, ec);
         auto work = [&]() {
             json all = json::array();
             setPhase("starting the OpenGL context");
@@ -559,25 +567,38 @@ std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*
                     runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes, context.get());
                 report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 all.push_back(toJson(report));
+                {
+                    std::ofstream out(progress.string() + ".new", std::ios::binary | std::ios::trunc);
+                    out << all.dump();
+                }
+                std::error_code renamed;
+                fs::rename(progress.string() + ".new", progress, renamed);
             }
             return all.dump();
         };
         IsolationLimits limits;
         limits.timeoutSeconds = options.timeoutSeconds;  // one exercise's: a normal submission takes a few seconds
         IsolatedResult result = runIsolated(work, limits);
-        if (result.outcome == IsolatedResult::Outcome::Finished) {
-            try {
-                const json all = json::parse(result.output);
-                if (all.is_array() && all.size() == checked.size()) {
-                    for (std::size_t i = 0; i < checked.size(); ++i) reports[checked[i]] = reportFromJson(all[i]);
-                    shared = true;
-                }
-            } catch (const json::exception&) {
+        std::size_t done = 0;  // checks whose reports came back
+        try {
+            json all = result.outcome == IsolatedResult::Outcome::Finished ? json::parse(result.output)
+                       : fs::exists(progress, ec)                           ? json::parse(readRegularFile(progress, std::uintmax_t(1) << 30))
+                                                                            : json::array();
+            if (all.is_array() && all.size() <= checked.size()) {
+                for (std::size_t i = 0; i < all.size(); ++i) reports[checked[i]] = reportFromJson(all[i]);
+                done = all.size();
             }
+        } catch (const std::exception&) {  // unreadable: every one again
+            done = 0;
         }
+        fs::remove(progress, ec);
+        // From the one it failed in onward: each in its own child, as checkExercise() does.
+        checked.erase(checked.begin(), checked.begin() + std::ptrdiff_t(done));
     }
-    if (!shared)  // each in its own child (or in this process without options.isolate)
-        for (std::size_t k : checked) reports[k] = checkExercise(*exercises[k], options, scenes);
+    for (std::size_t k : checked) {
+        if (interruptRequested()) break;  // Ctrl-C: the caller discards what is left (grading throws Interrupted)
+        reports[k] = checkExercise(*exercises[k], options, scenes);
+    }
     return reports;
 }
 
