@@ -11,6 +11,7 @@
 #include "gl/context.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
+#include "render/live_course_program.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,7 +29,8 @@ namespace {
 struct Entry {
     ViewBenchRow row;
     View view = View::Final;
-    ShaderProgram program;
+    PictureProgram program;  // a sky program only for the generated one
+    bool generated = false;  // the live view's course program: its values set before each draw
     Rendering picture;
 };
 
@@ -55,10 +57,17 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         << scene.render.height << ", " << context->description() << ", clock " << clockName << "\n";
 
     // The picture and one teaching view (D), each with the generic program
-    // (what the view drew with before) and the live one.
+    // (what the view drew with before issue #12) and the live one; for the
+    // picture also `before`, the live program before issue #25 (the
+    // structure's defines, still what the view draws with for a student's
+    // own files and during a structural drag), and `live` is the course
+    // generator's program with values as uniforms where it applies
+    // (render/live_course_program.h).
+    const bool generatedApplies = liveCourseApplies(scene, facts);
     std::vector<Entry> entries;
     for (View view : {View::Final, View::D})
-        for (const char* program : {"generic", "live"}) {
+        for (const char* program : {"generic", "before", "live"}) {
+            if (view != View::Final && std::string(program) == "before") continue;
             Entry e;
             e.view = view;
             e.row.program = program;
@@ -66,14 +75,20 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.width = scene.render.width;
             e.row.height = scene.render.height;
             e.row.clock = clockName;
-            const Purpose purpose =
-                e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic : Purpose::LiveView;
-            const ShaderDefines defines = definesFor(scene, facts, purpose);
             const auto start = std::chrono::steady_clock::now();
-            e.program = buildRayTracer(impl, defines);
+            if (e.row.program == "live" && isPictureView(view) && generatedApplies) {
+                e.generated = true;
+                e.program = buildLiveCoursePicture(scene, liveCourseSource(scene, frameFromScene(scene)));
+            } else {
+                const Purpose purpose =
+                    e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic : Purpose::LiveView;
+                e.program.program = buildRayTracer(impl, definesFor(scene, facts, purpose));
+            }
             e.row.compileMs = msSince(start);
             entries.push_back(std::move(e));
         }
+    if (!generatedApplies)
+        log << "bench: view: the exercise files are not all the course's own: `live` draws with `before`'s program\n";
     // The yardstick of every speed claim (bench/textbook.h): the picture only.
     Entry textbook;
     textbook.row.program = "textbook";
@@ -82,8 +97,8 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     textbook.row.height = scene.render.height;
     textbook.row.clock = clockName;
     const auto textbookStart = std::chrono::steady_clock::now();
-    textbook.program = buildTextbook();
-    setTextbookUniforms(textbook.program, scene);
+    textbook.program.program = buildTextbook();
+    setTextbookUniforms(textbook.program.program, scene);
     textbook.row.compileMs = msSince(textbookStart);
     entries.push_back(std::move(textbook));
     // The expert yardstick (bench/expert.h), the strongest: the picture only.
@@ -95,7 +110,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         expert.row.height = scene.render.height;
         expert.row.clock = clockName;
         const auto expertStart = std::chrono::steady_clock::now();
-        expert.program = buildExpert(scene);
+        expert.program.program = buildExpert(scene);
         expert.row.compileMs = msSince(expertStart);
         entries.push_back(std::move(expert));
     }
@@ -105,6 +120,7 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     auto drawOne = [&](Entry& e) {
         FrameSettings frame = frameFromScene(scene);
         frame.view = e.view;
+        if (e.generated) setLiveCourseValues(e.program.program, scene, frame);  // as the view does every frame
         if (clock == Clock::Gpu) return renderer.drawTimed(e.program, frame);
         gl::Finish();
         const double cpu0 = processCpuMs();
@@ -130,7 +146,9 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
     for (std::size_t i = 0; i < entries.size(); ++i) {
         Entry& e = entries[i];
         const bool yardstick = e.row.program == "textbook" || e.row.program == "expert";
-        const Entry& generic = entries[yardstick ? 0 : i - i % 2];  // the generic program of the same view
+        std::size_t g = 0;  // the generic program of the same view (the picture's for a yardstick)
+        while (!(entries[g].row.program == "generic" && (yardstick ? entries[g].view == View::Final : entries[g].view == e.view))) ++g;
+        const Entry& generic = entries[g];
         e.row.diff = compareRenderings(e.picture, generic.picture);
         e.row.frames = int(times[i].size());
         e.row.msMedian = median(times[i]);
@@ -159,13 +177,20 @@ std::string formatViewBench(const std::vector<ViewBenchRow>& rows) {
                       r.diff.maxLsb);
         s << line;
     }
-    for (std::size_t i = 0; i + 1 < rows.size() && rows[i + 1].program == "live"; i += 2)
-        if (rows[i + 1].msMedian > 0) {
-            std::snprintf(line, sizeof line, "view %s: live %.2fx faster than generic (%.1f ms against %.1f ms)\n",
-                          rows[i].view.c_str(), rows[i].msMedian / rows[i + 1].msMedian, rows[i + 1].msMedian,
-                          rows[i].msMedian);
-            s << line;
-        }
+    auto find = [&](const char* program, const std::string& view) {
+        const auto at = std::find_if(rows.begin(), rows.end(),
+                                     [&](const ViewBenchRow& r) { return r.program == program && r.view == view; });
+        return at == rows.end() ? nullptr : &*at;
+    };
+    for (const ViewBenchRow& r : rows) {
+        if (r.program != "live" || r.msMedian <= 0) continue;
+        for (const char* other : {"generic", "before"})
+            if (const ViewBenchRow* o = find(other, r.view)) {
+                std::snprintf(line, sizeof line, "view %s: live %.2fx faster than %s (%.1f ms against %.1f ms)\n",
+                              r.view.c_str(), o->msMedian / r.msMedian, other, r.msMedian, o->msMedian);
+                s << line;
+            }
+    }
     const auto live = std::find_if(rows.begin(), rows.end(),
                                    [](const ViewBenchRow& r) { return r.program == "live" && r.view == "final"; });
     // Every ratio against the strongest yardstick of the run (the faster of

@@ -17,7 +17,10 @@
 namespace rl::bench {
 
 struct ViewBenchRow {
-    std::string program;  // "generic" (before), "live" or "textbook" (the yardstick, final view only)
+    // "generic" (the view before issue #12), "before" (the live program before
+    // issue #25: the structure's defines, final view only), "live" (what the
+    // view draws with now), "textbook" or "expert" (the yardsticks, final view only)
+    std::string program;
     std::string view;     // "final", "d", ... (viewName())
     int width = 0, height = 0;
     double compileMs = 0;    // assemble + compile + link, wall clock
@@ -35,7 +38,7 @@ constexpr int kViewBenchWidth = 1280, kViewBenchHeight = 720;
 // options.width x options.height; progress lines go to `log`.
 std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log);
 
-// The table, then per view "live is N.NNx faster than generic".
+// The table, then per view "live N.NNx faster than generic" (and "than before").
 std::string formatViewBench(const std::vector<ViewBenchRow>& rows);
 
 }  // namespace rl::bench

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/isolated.h"
+#include "core/process_pool.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "core/scene_transform.h"
@@ -21,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
@@ -338,13 +340,19 @@ std::string imagePath(const fs::path& dir, const std::string& scene, const std::
     return (dir / (scene + "-" + kind + ".png")).string();
 }
 
+// `shared`: the context of checkExercises()' child, current, kept from one
+// exercise to the next (the driver is loaded once); nullptr: its own.
 ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
-                         const std::vector<CheckScene>& scenes) {
+                         const std::vector<CheckScene>& scenes, GlContext* shared = nullptr) {
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
     fastShaderCompiles();
-    auto context = createHeadlessContext(parseBackend(options.backend));
+    std::unique_ptr<GlContext> context;
+    if (!shared) context = createHeadlessContext(parseBackend(options.backend));
+    else
+        while (gl::GetError() != GL_NO_ERROR) {  // nothing of the exercise before reaches this one's checks
+        }
     const Implementation impl = checkCompanions(exercise, file, options);
     ShaderProgram probe, program;
     setPhase("compiling");
@@ -463,7 +471,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
             s.expectedPng = imagePath(outDir, c.name, "expected");
             s.gotPng = imagePath(outDir, c.name, "got");
             s.diffPng = imagePath(outDir, c.name, "diff");
-            writePng(s.expectedPng, c.reference.display);
+            if (options.writeExpectedImages) writePng(s.expectedPng, c.reference.display);
             writePng(s.gotPng, got.display);
             writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
         }
@@ -495,15 +503,19 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
 
 }  // namespace
 
-ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
-                             const std::vector<CheckScene>& scenes) {
-    // Made here, not in the child, so that it is removed when this process ends.
-    if (!hasSolutions()) shippedStubFolder();
+namespace {
+
+// The exercise's file, and its report when no check needs to run (missing,
+// the unchanged stub).
+fs::path exerciseFile(const ExerciseInfo& exercise, const CheckOptions& options) {
+    auto it = options.fileOverride.find(exercise.number);
+    return it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
+}
+
+std::optional<ExerciseReport> withoutCheck(const ExerciseInfo& exercise, const fs::path& file) {
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
-    auto it = options.fileOverride.find(exercise.number);
-    fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
     std::error_code ec;
     if (!fs::exists(file, ec)) {
         report.status = CheckStatus::NotStarted;
@@ -517,6 +529,88 @@ ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& o
         report.hint = "start with the handout: " + exercise.handout();
         return report;
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
+                                           const CheckOptions& options, const std::vector<CheckScene>& scenes) {
+    if (!hasSolutions()) shippedStubFolder();  // made here, not in the child (removed when this process ends)
+    std::vector<ExerciseReport> reports(exercises.size());
+    std::vector<std::size_t> checked;  // those a check runs for
+    for (std::size_t k = 0; k < exercises.size(); ++k) {
+        if (auto report = withoutCheck(*exercises[k], exerciseFile(*exercises[k], options)))
+            reports[k] = *report;
+        else
+            checked.push_back(k);
+    }
+    if (options.isolate && checked.size() > 1) {
+        // One child for all of them: the work of each one's child, one after
+        // another; each report's seconds its own check's.
+        // The reports done so far, replaced after each check (a scratch file
+        // for this process only: renamed into place, so a killed child leaves
+        // the last whole list), so that a failed child costs only the checks
+        // from the one it failed in onward.
+        std::error_code ec;
+        fs::create_directories(options.outputDir, ec);
+        const fs::path progress = options.outputDir / ".checked-so-far.json";
+        fs::remove(progress, ec);
+        auto work = [&]() {
+            json all = json::array();
+            setPhase("starting the OpenGL context");
+            fastShaderCompiles();
+            auto context = createHeadlessContext(parseBackend(options.backend));
+            for (std::size_t k : checked) {
+                const auto start = std::chrono::steady_clock::now();
+                ExerciseReport report =
+                    runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes, context.get());
+                report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                all.push_back(toJson(report));
+                {
+                    std::ofstream out(progress.string() + ".new", std::ios::binary | std::ios::trunc);
+                    out << all.dump();
+                }
+                std::error_code renamed;
+                fs::rename(progress.string() + ".new", progress, renamed);
+            }
+            return all.dump();
+        };
+        IsolationLimits limits;
+        limits.timeoutSeconds = options.timeoutSeconds;  // one exercise's: a normal submission takes a few seconds
+        IsolatedResult result = runIsolated(work, limits);
+        std::size_t done = 0;  // checks whose reports came back
+        try {
+            json all = result.outcome == IsolatedResult::Outcome::Finished ? json::parse(result.output)
+                       : fs::exists(progress, ec)                           ? json::parse(readRegularFile(progress, std::uintmax_t(1) << 30))
+                                                                            : json::array();
+            if (all.is_array() && all.size() <= checked.size()) {
+                for (std::size_t i = 0; i < all.size(); ++i) reports[checked[i]] = reportFromJson(all[i]);
+                done = all.size();
+            }
+        } catch (const std::exception&) {  // unreadable: every one again
+            done = 0;
+        }
+        fs::remove(progress, ec);
+        // From the one it failed in onward: each in its own child, as checkExercise() does.
+        checked.erase(checked.begin(), checked.begin() + std::ptrdiff_t(done));
+    }
+    for (std::size_t k : checked) {
+        if (interruptRequested()) break;  // Ctrl-C: the caller discards what is left (grading throws Interrupted)
+        reports[k] = checkExercise(*exercises[k], options, scenes);
+    }
+    return reports;
+}
+
+ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
+                             const std::vector<CheckScene>& scenes) {
+    // Made here, not in the child, so that it is removed when this process ends.
+    if (!hasSolutions()) shippedStubFolder();
+    ExerciseReport report;
+    report.number = exercise.number;
+    report.id = exercise.id;
+    const fs::path file = exerciseFile(exercise, options);
+    if (auto early = withoutCheck(exercise, file)) return *early;
     auto work = [&]() {
         setPhase("starting the OpenGL context");
         return toJson(runChecks(exercise, file, options, scenes)).dump();

@@ -73,6 +73,10 @@ struct CheckOptions {
     std::filesystem::path implDir;          // the student's folder (exercises/ by default)
     std::filesystem::path outputDir = "check-output";  // expected/got/diff PNGs of failing images
     bool writeAllImages = false;            // also write them for passing images (grading reports)
+    // The expected PNG of each image: false where the caller has the check
+    // scenes' references already (grading: OUT/_reference/), so only its
+    // path is reported.
+    bool writeExpectedImages = true;
     double timeoutSeconds = 60;             // per exercise
     bool isolate = true;                    // run each exercise in a child process
     std::string backend = "auto";
@@ -97,6 +101,16 @@ std::vector<CheckScene> makeCheckScenes();
 // Checks one exercise (in a child process when options.isolate).
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes);
+
+// The same verdicts as checkExercise() for each of `exercises` (in that
+// order), with options.isolate their checks share one child process (one
+// driver start for a student's ten exercises instead of ten; issue #25).
+// When that child does not finish cleanly within one exercise's timeout
+// (a crash, a loop, the memory limit) or returns fewer reports, every
+// exercise is checked again in its own child, as checkExercise() does:
+// such a submission gets the verdicts per-exercise isolation gives.
+std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
+                                           const CheckOptions& options, const std::vector<CheckScene>& scenes);
 
 // The verdict on one probe, from the GPU's results (RGB of one texel per
 // case): the counts, the first failure, the table and a hint that names a

@@ -195,9 +195,23 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     options.implDir = dir / "submission";
     options.outputDir = dir / "images";
     options.writeAllImages = true;
+    options.writeExpectedImages = false;  // OUT/_reference/ holds them (tidyReport() points there)
     options.timeoutSeconds = settings.timeoutSeconds;
     options.backend = settings.backend;
     options.isolate = true;
+    // The exercises a check runs for share one child process (checkExercises(),
+    // falling back to one child each when it fails): their reports first.
+    std::vector<const ExerciseInfo*> toCheck;
+    for (const RubricExercise& r : settings.rubric.exercises) {
+        const ExerciseInfo& info = findExercise(r.id);
+        if (staged.problem == StagedSubmission::Problem::None && !staged.endless.count(info.file()) &&
+            !staged.refused.count(info.file()))
+            toCheck.push_back(&info);
+    }
+    if (interruptRequested()) throw Interrupted{};
+    std::vector<ExerciseReport> checked = checkExercises(toCheck, options, scenes);
+    if (interruptRequested()) throw Interrupted{};  // a check was cut short: not a verdict
+    std::size_t next = 0;
     for (const RubricExercise& r : settings.rubric.exercises) {
         if (interruptRequested()) throw Interrupted{};
         const ExerciseInfo& info = findExercise(r.id);
@@ -218,8 +232,7 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
             e.report = reportWithReason(info, CheckStatus::CompileError, refused->second,
                                         "submit " + info.file() + " as a plain UTF-8 text file inside your folder");
         } else {
-            e.report = checkExercise(info, options, scenes);
-            if (interruptRequested()) throw Interrupted{};  // the check was cut short: not a verdict
+            e.report = checked.at(next++);
             tidyReport(e.report, dir);
         }
         grade.exercises.push_back(e);
@@ -270,7 +283,8 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
     PoolLimits limits;
     limits.jobs = settings.jobs;
     // A worker that outlives every one of its checks timing out, plus staging, is stuck.
-    limits.deadlineSeconds = double(settings.rubric.exercises.size()) * (settings.timeoutSeconds + 15) + 120;
+    // (+ one timeout: the shared child of checkExercises() before the fallback)
+    limits.deadlineSeconds = double(settings.rubric.exercises.size() + 1) * (settings.timeoutSeconds + 15) + 120;
     // A check process orphaned by a killed worker still ends: each worker
     // (and each check it starts) gets at most this much CPU time, well above
     // what a check's wall-clock timeout allows llvmpipe's threads, so the

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/paths.h"
+#include "render/live_course_program.h"
 
 #include <algorithm>
 #include <chrono>
@@ -60,6 +61,28 @@ bool LiveProgram::build() {
     }
     lastBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return error_.empty();
+}
+
+const PictureProgram* LiveProgram::generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built) {
+    built = false;
+    // The source depends on the structure only: equal sources, same program.
+    std::string source = liveCourseSource(scene, frame);
+    if (source != generatedSource_) {
+        if (!mayBuild || source == failedSource_) return nullptr;
+        const auto start = std::chrono::steady_clock::now();
+        try {
+            generated_ = std::make_unique<PictureProgram>(buildLiveCoursePicture(scene, source));
+            generatedSource_ = std::move(source);
+            ++generatedBuilds_;
+            built = true;
+        } catch (const Error&) {  // beyond the driver's limits: the structure's defines draw it
+            failedSource_ = std::move(source);
+            return nullptr;
+        }
+        lastBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+    setLiveCourseValues(generated_->program, scene, frame);
+    return generated_.get();
 }
 
 }  // namespace rl

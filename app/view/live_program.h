@@ -9,6 +9,9 @@
 // and forth compiles each program once.
 #pragma once
 
+#include "core/scene.h"
+#include "render/gl_renderer.h"
+#include "render/scene_uniforms.h"
 #include "shader/program.h"
 #include "shader/shader_library.h"
 
@@ -55,6 +58,19 @@ public:
     const std::vector<std::filesystem::path>& files() const { return files_; }
     double lastBuildMs() const { return lastBuildMs_; }
 
+    // The picture drawn with the course generator's program (issue #25,
+    // render/live_course_program.h), for the caller to check first that it
+    // applies (the course's own files, the picture view). Returns it with
+    // every value of `scene` and `frame` set, or nullptr when its structure
+    // differs from the one built and `mayBuild` is false (a drag: the caller
+    // draws program() meanwhile and asks again when the hand stops), or when
+    // that structure does not build (then program() draws it, and the
+    // structure is not tried again). Sets `built` when it compiled one.
+    // With its sky program (render/sky_tiles.h) for GlRenderer::draw(const PictureProgram&, ...).
+    const PictureProgram* generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built);
+    // Generated programs compiled since the start (one per structure met).
+    int generatedBuilds() const { return generatedBuilds_; }
+
 private:
     Implementation impl_;
     std::string label_;
@@ -64,6 +80,9 @@ private:
     std::string error_;
     std::vector<std::filesystem::path> files_;
     double lastBuildMs_ = 0;
+    std::string generatedSource_, failedSource_;
+    std::unique_ptr<PictureProgram> generated_;
+    int generatedBuilds_ = 0;
 };
 
 }  // namespace rl

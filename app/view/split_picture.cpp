@@ -73,6 +73,17 @@ void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right,
     }
 }
 
+void SplitPicture::render(const PictureProgram& picture, const FrameSettings& frame) {
+    sideBySide_ = false;
+    offset_ = 0;
+    width_ = frame.width;
+    height_ = frame.height;
+    split_ = width_;
+    drawn_[0] = true;
+    drawn_[1] = false;
+    sides_[0].draw(picture, frame);
+}
+
 void SplitPicture::present(int windowWidth, int windowHeight) const {
     gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     gl::Viewport(0, 0, windowWidth, windowHeight);

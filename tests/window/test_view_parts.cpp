@@ -280,7 +280,7 @@ TEST(ViewBench, TheDocumentedCommandComparesBothProgramsInOneRun) {
     const rl::test::CommandResult r =
         rl::test::runShell("cd " + sourceRoot().string() + " && " + command + " --size 96x54 --frames 1 --warmup 1");
     ASSERT_EQ(r.status, 0) << command << "\n" << r.output;
-    for (const char* row : {"generic  final", "live     final", "generic  d", "live     d", "view final: live",
+    for (const char* row : {"generic  final", "before   final", "live     final", "generic  d", "live     d", "view final: live",
                             "view d: live"})
         EXPECT_NE(r.output.find(row), std::string::npos) << row << "\n" << r.output;
     // The live picture agrees with the generic one: max LSB (the last column) small.
