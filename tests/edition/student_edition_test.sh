@@ -41,7 +41,7 @@ step "no answers"
 for answers in solutions tests/portability; do
     [ ! -e "$edition/$answers" ] || fail "$answers/ is in the edition"
 done
-for id in $(sed -e 's/#.*//' -e 's/[[:space:]]//g' "$src/course/manifest.txt" | grep -v '^$'); do
+for id in $(sed -e 's/#.*//' "$src/course/manifest.txt" | awk 'NF { print $1 }'); do  # each line's first word ("11-environment optional")
     for answers in solution.glsl mutants alternatives; do
         [ ! -e "$edition/course/$id/$answers" ] || fail "course/$id/$answers is in the edition"
     done
