@@ -229,8 +229,9 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     // grades.csv: a header, then every student exactly once, sorted, the total last.
     std::vector<std::string> csv = lines(readText(out / "grades.csv"));
     ASSERT_FALSE(csv.empty());
+    // 11-environment: the optional exercise, graded in its own column with weight 0 (a bonus).
     EXPECT_EQ(csv[0], "Student,01-camera,02-intersect,03-lambert,04-shadows,05-ggx,06-geometry,07-fresnel,"
-                      "08-cook-torrance,09-reflections,10-display,Total");
+                      "08-cook-torrance,09-reflections,10-display,11-environment,Total");
     std::vector<std::string> ids;
     for (std::size_t k = 1; k < csv.size(); ++k) ids.push_back(csv[k].substr(0, csv[k].find(',')));
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
@@ -461,7 +462,7 @@ TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
     CommandResult changed = runRaylab(gradeArgs(sub, out));
     ASSERT_EQ(changed.status, 0) << changed.output;
     EXPECT_TRUE(contains(changed.output, "graded 1, skipped 5")) << changed.output;
-    EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,100.00\n"))
+    EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,0.00,100.00\n"))
         << readText(out / "grades.csv");
     if (!HasFailure()) fs::remove_all(root);
 }
