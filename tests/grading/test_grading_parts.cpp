@@ -217,7 +217,7 @@ TEST(OutputFolder, OneRunAtATimeAndNeverInsideTheSubmissions) {
 
 TEST(Rubric, DefaultIsValidAndWorth100) {
     Rubric r = loadRubric(defaultRubricPath());
-    EXPECT_EQ(r.exercises.size(), 10u);
+    EXPECT_EQ(r.exercises.size(), 11u);  // the optional 11-environment with weight 0: still worth 100
     EXPECT_EQ(r.maxHundredths(), 10000);
     EXPECT_EQ(r.idColumn, "Student");
 }
