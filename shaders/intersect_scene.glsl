@@ -94,6 +94,9 @@ float sideCheckedRoot(vec3 origin, vec3 dir, vec4 sphere, int i, float t, bool f
 // (refineRoot), so that the nearest is found among exact-as-float32 roots.
 Hit closestHit(vec3 origin, vec3 dir, int leaving) {
     dir = normalize(dir);
+#ifdef RL_ENVIRONMENT
+    g_rayDirection = dir;  // what backgroundRadiance() sees if this ray hits nothing (environment.glsl)
+#endif
     Hit hit;
     hit.t = NO_HIT;
     hit.sphere = NO_SPHERE;

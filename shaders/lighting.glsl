@@ -109,10 +109,23 @@ vec3 shadeHit(Hit hit, vec3 v) {
 #ifdef RL_UNIT_LIGHT
     radiance += unitLight(hit, v, m);
 #endif
+#ifdef RL_ENVIRONMENT
+    radiance += environmentHitLight(hit, v, m);  // environment.glsl: exercise 11's approximation
+#endif
     return radiance;
 }
 
 // The radiance of a ray that leaves the scene.
 vec3 backgroundRadiance() {
+#ifdef RL_ENVIRONMENT
+    // A camera ray that misses (no hit shaded before it) sees the
+    // environment; a mirror bounce that escapes adds nothing more: the
+    // environment in its direction is already in the hit's environment light
+    // (docs/model.md, "Environment light"; the reference does the same).
+    bool cameraRay = g_bounceCounter == 0;
+    if (!keepThisBounce() || !cameraRay) return vec3(0.0);
+    return environmentRadiance(g_rayDirection);
+#else
     return keepThisBounce() ? u_background : vec3(0.0);
+#endif
 }

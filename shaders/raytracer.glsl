@@ -4,6 +4,7 @@
 #include "common.glsl"
 #include "scene.glsl"
 #include "declarations.glsl"
+#include "environment.glsl"  // light from all around: only with RL_ENVIRONMENT (a scene's "environment")
 #include "error_bounds.glsl"
 #include "intersect_scene.glsl"
 #include "loop_guard.glsl"

@@ -56,7 +56,7 @@ float displaySlope(float c) {
 // more than BOUNCE_CUTOFF_TOLERANCE. radiance: linear, gathered so far along
 // the camera ray; throughput: what the next ray's radiance will be weighted by.
 bool bounceCannotChangeOutput(vec3 radiance, vec3 throughput) {
-#if defined(RL_BOUNCE_CUTOFF) && !defined(RL_UNIT_LIGHT)  // a unit's light term is not in the bound R
+#if defined(RL_BOUNCE_CUTOFF) && !defined(RL_UNIT_LIGHT) && !defined(RL_ENVIRONMENT)  // a unit's light term and the environment are not in the bound R
     float a = u_bounceCutoff.y * min(radiance.r, min(radiance.g, radiance.b));
     float t = max(throughput.r, max(throughput.g, throughput.b));
     return displaySlope(a) * t <= BOUNCE_CUTOFF_TOLERANCE * u_bounceCutoff.x;

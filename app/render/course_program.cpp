@@ -72,8 +72,12 @@ void splitGroups(std::vector<int> ids, const Facts& f, std::size_t size, std::ve
 }  // namespace
 
 bool courseProgramApplies(const Scene& scene, const ImplementationFacts& facts) {
-    return scene.model.isReference() && facts.exercisesFinished &&
-           facts.courseFiles.size() == allExercises().size();
+    // The generated program knows no environment light (issue 24): the shaders/ program draws it.
+    // Every exercise of the course its own file (courseFiles also holds the
+    // framework units, so its size is no count of the course's exercises).
+    const std::vector<ExerciseInfo>& course = allExercises();
+    return scene.model.isReference() && !scene.environment && facts.exercisesFinished &&
+           std::all_of(course.begin(), course.end(), [&](const ExerciseInfo& e) { return facts.courseFile(e.file()); });
 }
 
 std::string courseProgramSource(const Scene& original, const CourseProgramOptions& options) {

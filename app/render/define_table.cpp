@@ -78,6 +78,13 @@ std::vector<DefineRow> makeTable() {
                  "Burley's diffuse instead of Lambert's",
                  [](const DefineInput& in) { return when(in.scene.model.diffuse == DiffuseModel::Burley); }});
 
+    // ---- light from all around (issue 24, shaders/environment.glsl): only a scene with an
+    // "environment" compiles it in, so every other picture is the same program as before.
+    t.push_back({"RL_ENVIRONMENT", kStructure, kEveryScene, {}, {},
+                 "the environment map, its SH9 irradiance and prefiltered specular (environment.glsl), only "
+                 "for a scene with an environment",
+                 [](const DefineInput& in) { return when(in.scene.environment.has_value()); }});
+
     // ---- the scene's structure (scene.glsl): loops unrolled, the uniform block read directly.
     t.push_back({"RL_SPHERE_COUNT", kStructure, kSpecialised, {}, {},
                  "the sphere loops unrolled with direct loads instead of a per-lane gather per iteration",
@@ -105,7 +112,9 @@ std::vector<DefineRow> makeTable() {
     t.push_back({"RL_BOUNCE_CUTOFF", kStructure | kModel, kSpecialised, {}, {},
                  "stop the bounces once no path can change a display step; from three bounces, reference model",
                  [](const DefineInput& in) {
-                     return when(in.scene.render.maxBounces >= 3 && sphereCount(in) > 0 && in.scene.model.isReference());
+                     // The bound R leaves environment light out: no cutoff with an environment.
+                     return when(in.scene.render.maxBounces >= 3 && sphereCount(in) > 0 && in.scene.model.isReference() &&
+                                 !in.scene.environment);
                  }});
 
     // ---- one picture (or the live view's picture program), known before the program is built.

@@ -28,8 +28,15 @@ PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefin
     return picture;
 }
 
-void GlRenderer::setScene(const Scene& scene) {
+void GlRenderer::setScene(const Scene& scene, const EnvironmentSettings& environment) {
     scene_ = scene;
+    if (!scene.environment) {
+        environment_.reset();
+    } else {
+        std::shared_ptr<const EnvironmentResources> resources = environmentResources(*scene.environment, environment);
+        if (!environment_ || &environment_->resources() != resources.get())
+            environment_ = std::make_unique<EnvironmentTextures>(resources);
+    }
     skyTiles_.reset();
     uploaded_ = false;  // uploaded by draw(), relative to the frame's camera
 }
@@ -79,6 +86,7 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
         uploadedEye_ = eye;
     }
     sceneBlock_.bind(program);
+    if (environment_ && scene_.environment) environment_->bind(program, *scene_.environment);
     gl::BindVertexArray(vertexArray_);
     gl::DrawArrays(GL_TRIANGLES, 0, 3);
     GLenum error = gl::GetError();

@@ -6,12 +6,14 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "gl/gl_api.h"
+#include "render/environment_resources.h"
 #include "render/scene_uniforms.h"
 #include "render/sky_tiles.h"
 #include "shader/program.h"
 #include "shader/shader_library.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace rl {
@@ -32,8 +34,10 @@ public:
     GlRenderer(const GlRenderer&) = delete;
     GlRenderer& operator=(const GlRenderer&) = delete;
 
-    // Uploads spheres and lights; call again whenever they change.
-    void setScene(const Scene& scene);
+    // Uploads spheres and lights; call again whenever they change. A scene
+    // with an environment also gets its tables for `environment` (cached per
+    // image and settings: render/environment_resources.h), bound by draw().
+    void setScene(const Scene& scene, const EnvironmentSettings& environment = {});
     // Renders one frame into the offscreen targets (resized as needed).
     void draw(const ShaderProgram& program, const FrameSettings& frame);
     // The picture program where some camera ray may hit a sphere, its sky
@@ -53,6 +57,7 @@ private:
     void resize(int width, int height);
     double timed(const std::function<void()>& drawing);  // ms of GL_TIME_ELAPSED around it
     Scene scene_;
+    std::unique_ptr<EnvironmentTextures> environment_;  // for scene_.environment, else null
     SceneUniformBlock sceneBlock_;
     bool uploaded_ = false;          // sceneBlock_ holds scene_ relative to uploadedEye_
     glm::dvec3 uploadedEye_{0.0};

@@ -1,0 +1,149 @@
+// environment_resources.cpp: see environment_resources.h.
+#include "render/environment_resources.h"
+
+#include "core/error.h"
+#include "reference/split_sum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+namespace rl {
+
+namespace {
+
+void checkSettings(const EnvironmentSettings& s) {
+    auto bad = [](const std::string& what) { throw Error("environment settings: " + what); };
+    if (s.levels < 2 || s.levels > 8) bad("levels must be 2 to 8");
+    if (s.prefilterWidth < 8 || s.prefilterHeight < 4 || s.prefilterWidth > 4096 || s.prefilterHeight > 2048)
+        bad("the prefiltered size must be 8 x 4 to 4096 x 2048");
+    if (s.prefilterSamples < 1 || s.prefilterSamples > 65536) bad("prefilter samples must be 1 to 65536");
+    if (s.tableSize < 2 || s.tableSize > 512) bad("the table size must be 2 to 512");
+    if (s.tableSamples < 1 || s.tableSamples > 1024) bad("table samples must be 1 to 1024");
+}
+
+// The table depends on the settings only; the rest on the image too.
+std::vector<glm::dvec2> cachedTable(int size, int samples) {
+    static std::mutex mutex;
+    static std::map<std::pair<int, int>, std::vector<glm::dvec2>> tables;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = tables.find({size, samples});
+    if (it == tables.end()) it = tables.emplace(std::make_pair(size, samples), ref::splitSumTable(size, samples)).first;
+    return it->second;
+}
+
+}  // namespace
+
+std::shared_ptr<const EnvironmentResources> environmentResources(const Environment& environment,
+                                                                 const EnvironmentSettings& settings) {
+    checkSettings(settings);
+    if (!environment.image) throw Error(environment.file + ": the environment image is not loaded");
+    struct Entry {
+        std::weak_ptr<const RadianceImage> image;
+        EnvironmentSettings settings;
+        std::shared_ptr<const EnvironmentResources> resources;
+    };
+    static std::mutex mutex;
+    static std::vector<Entry> cache;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        cache.erase(std::remove_if(cache.begin(), cache.end(), [](const Entry& e) { return e.image.expired(); }),
+                    cache.end());
+        for (const Entry& e : cache)
+            if (e.image.lock() == environment.image && e.settings == settings) return e.resources;
+    }
+    auto r = std::make_shared<EnvironmentResources>();
+    r->settings = settings;
+    r->map = environment.image;
+    r->levels = ref::prefilterChain(*environment.image, settings.prefilterWidth, settings.prefilterHeight,
+                                    settings.levels, settings.prefilterSamples);
+    r->sh = ref::projectSh9(*environment.image);
+    r->table = cachedTable(settings.tableSize, settings.tableSamples);
+    std::lock_guard<std::mutex> lock(mutex);
+    cache.push_back({environment.image, settings, r});
+    return r;
+}
+
+std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& levels) {
+    std::vector<glm::ivec4> rects;
+    int y = 0;
+    for (const RadianceImage& level : levels) {
+        rects.emplace_back(0, y, level.width, level.height);
+        y += level.height;
+    }
+    return rects;
+}
+
+EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResources> resources)
+    : resources_(std::move(resources)) {
+    const EnvironmentResources& r = *resources_;
+    rects_ = environmentAtlasRects(r.levels);
+    int atlasWidth = 0, atlasHeight = 0;
+    for (const glm::ivec4& rect : rects_) {
+        atlasWidth = std::max(atlasWidth, rect.z);
+        atlasHeight = rect.y + rect.w;
+    }
+    std::vector<float> atlas(std::size_t(atlasWidth) * atlasHeight * 3, 0.0f);
+    for (std::size_t k = 0; k < r.levels.size(); ++k)
+        for (int y = 0; y < rects_[k].w; ++y)
+            std::copy_n(r.levels[k].at(0, y), 3 * rects_[k].z, &atlas[3 * (std::size_t(rects_[k].y + y) * atlasWidth)]);
+    std::vector<float> table;
+    for (const glm::dvec2& e : r.table) {
+        table.push_back(float(e.x));
+        table.push_back(float(e.y));
+    }
+    GLint maxSide = 0;
+    gl::GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSide);
+    if (r.map->width > maxSide || r.map->height > maxSide || atlasHeight > maxSide)
+        throw Error("environment image " + std::to_string(r.map->width) + "x" + std::to_string(r.map->height) +
+                    ": this OpenGL driver allows at most " + std::to_string(maxSide) + " pixels a side");
+    gl::GenTextures(3, textures_);
+    auto upload = [](GLuint texture, GLint format, GLenum channels, int w, int h, const float* data) {
+        gl::BindTexture(GL_TEXTURE_2D, texture);
+        gl::PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gl::TexImage2D(GL_TEXTURE_2D, 0, format, w, h, 0, channels, GL_FLOAT, data);
+        // texelFetch() only: NEAREST keeps a float texture complete where it cannot be filtered (WebGL2).
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    };
+    upload(textures_[0], GL_RGB32F, GL_RGB, r.map->width, r.map->height, r.map->rgb.data());
+    upload(textures_[1], GL_RGB32F, GL_RGB, atlasWidth, atlasHeight, atlas.data());
+    upload(textures_[2], GL_RG32F, GL_RG, r.settings.tableSize, r.settings.tableSize, table.data());
+    gl::BindTexture(GL_TEXTURE_2D, 0);
+    GLenum error = gl::GetError();
+    if (error != GL_NO_ERROR) throw Error("environment textures: OpenGL error " + gl::errorName(error));
+}
+
+EnvironmentTextures::~EnvironmentTextures() { gl::DeleteTextures(3, textures_); }
+
+void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& environment) const {
+    gl::UseProgram(p.id());
+    const char* samplers[3] = {"u_envMap", "u_envPrefiltered", "u_envSplitSum"};
+    for (int i = 0; i < 3; ++i) {
+        gl::ActiveTexture(GL_TEXTURE0 + kFirstUnit + i);
+        gl::BindTexture(GL_TEXTURE_2D, textures_[i]);
+        gl::Uniform1i(p.uniform(samplers[i]), kFirstUnit + i);
+    }
+    gl::ActiveTexture(GL_TEXTURE0);
+    for (std::size_t k = 0; k < rects_.size(); ++k) {
+        const glm::ivec4& r = rects_[k];
+        gl::Uniform4f(p.uniform("u_envLevelRect[" + std::to_string(k) + "]"), float(r.x), float(r.y), float(r.z),
+                      float(r.w));
+    }
+    gl::Uniform1i(p.uniform("u_envLevels"), int(rects_.size()));
+    float sh[27];
+    for (int k = 0; k < 9; ++k)
+        for (int c = 0; c < 3; ++c) sh[3 * k + c] = float(resources_->sh[std::size_t(k)][c]);
+    gl::Uniform3fv(p.uniform("u_envSh"), 9, sh);
+    gl::Uniform1f(p.uniform("u_envIntensity"), float(environment.intensity));
+    // cos and sin of the rotation, in double; exactly (1, 0) unrotated, as the reference.
+    double a = environment.rotationDegrees * 3.14159265358979323846 / 180.0;
+    gl::Uniform2f(p.uniform("u_envRotation"), environment.rotationDegrees == 0.0 ? 1.0f : float(std::cos(a)),
+                  environment.rotationDegrees == 0.0 ? 0.0f : float(std::sin(a)));
+}
+
+}  // namespace rl

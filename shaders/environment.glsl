@@ -1,0 +1,127 @@
+// environment.glsl: light from all around (issue 24, docs/model.md
+// "Environment light"), compiled in only for a scene with an "environment"
+// (RL_ENVIRONMENT, app/render/define_table.cpp); without one this file adds
+// nothing but the checker's coefficients below, and a picture is what it was.
+//
+// THE SHADER API (docs/decisions.md, "Environment light in the GL picture";
+// the host side is app/render/environment_resources.h):
+//   uniform sampler2D u_envMap          the radiance map as read (RGB32F, W x H, row 0 the top), texture unit 1
+//   uniform sampler2D u_envPrefiltered  the prefiltered levels in one RGB32F atlas, texture unit 2
+//   uniform sampler2D u_envSplitSum     the split-sum table (RG32F, n.v along x, roughness along y), unit 3
+//   uniform vec4  u_envLevelRect[8]     each level's texel rectangle in the atlas: x, y, width, height
+//   uniform int   u_envLevels           levels in the atlas (level k: roughness k / (levels - 1))
+//   uniform vec3  u_envSh[9]            the map's nine SH coefficients (image frame, no intensity)
+//   uniform float u_envIntensity        the scene's intensity (a value: no recompile)
+//   uniform vec2  u_envRotation         cos, sin of the scene's rotation about +y (a value: no recompile)
+// Every texture is read by texelFetch() and filtered here (bilinear as the
+// reference's bilinearRadiance()), so 32-bit float textures serve in WebGL2
+// too, where they cannot be filtered by the sampler.
+// Functions: environmentRadiance(d) (what a ray sees), environmentHitLight()
+// (what a hit adds: exercise 11's functions on the host's tables), and the
+// lookups environmentLocal(), equirectUv(), prefilteredRadiance(), splitSumLookup().
+
+const int RL_ENV_MAX_LEVELS = 8;
+
+#ifdef RL_ENVIRONMENT
+uniform sampler2D u_envMap;
+uniform sampler2D u_envPrefiltered;
+uniform sampler2D u_envSplitSum;
+uniform vec4 u_envLevelRect[RL_ENV_MAX_LEVELS];
+uniform int u_envLevels;
+uniform vec3 u_envSh[9];
+uniform float u_envIntensity;
+uniform vec2 u_envRotation;
+
+// The k-th coefficient, for exercise 11's shIrradiance().
+vec3 shCoefficient(int k) { return u_envSh[k]; }
+#else
+// The checker's probe program sets the coefficients of each case here
+// (course/11-environment/unit.json, "probe").
+vec3 g_probeSh[9];
+vec3 shCoefficient(int k) { return g_probeSh[k]; }
+#endif
+
+#ifdef RL_ENVIRONMENT
+// The direction of the last ray closestHit() followed (intersect_scene.glsl):
+// what backgroundRadiance() looks up when that ray hits nothing.
+vec3 g_rayDirection = vec3(0.0, 0.0, -1.0);
+
+// A world direction in the image's own frame: turned by -rotation about +y.
+vec3 environmentLocal(vec3 d) {
+    float c = u_envRotation.x, s = u_envRotation.y;
+    return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
+}
+
+// u = 1/2 + atan2(d.x, -d.z) / (2 pi), v = acos(d.y) / pi (0 straight up).
+vec2 equirectUv(vec3 d) {
+    float u = d.x == 0.0 && d.z == 0.0 ? 0.5 : 0.5 + atan(d.x, -d.z) / (2.0 * PI);
+    return vec2(u, acos(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
+// Bilinear between texel centres of the rectangle `rect` of `t`, wrapping in
+// u and clamped in v (app/core/environment_image.cpp, bilinearRadiance).
+vec3 environmentBilinear(sampler2D t, vec4 rect, vec2 uv) {
+    ivec2 origin = ivec2(rect.xy);
+    int W = int(rect.z), H = int(rect.w);
+    float x = uv.x * rect.z - 0.5;
+    float y = clamp(uv.y * rect.w - 0.5, 0.0, rect.w - 1.0);
+    float fx = floor(x), fy = floor(y);
+    int x0 = int(fx);
+    x0 = x0 < 0 ? x0 + W : (x0 >= W ? x0 - W : x0);
+    int x1 = x0 + 1 >= W ? 0 : x0 + 1;
+    int y0 = int(fy);
+    int y1 = min(y0 + 1, H - 1);
+    vec3 c00 = texelFetch(t, origin + ivec2(x0, y0), 0).rgb;
+    vec3 c10 = texelFetch(t, origin + ivec2(x1, y0), 0).rgb;
+    vec3 c01 = texelFetch(t, origin + ivec2(x0, y1), 0).rgb;
+    vec3 c11 = texelFetch(t, origin + ivec2(x1, y1), 0).rgb;
+    float ax = x - fx, ay = y - fy;
+    return mix(mix(c00, c10, ax), mix(c01, c11, ax), ay);
+}
+
+// Radiance arriving from the world direction d (unit): L(d).
+vec3 environmentRadiance(vec3 d) {
+    vec2 size = vec2(textureSize(u_envMap, 0));
+    return u_envIntensity * environmentBilinear(u_envMap, vec4(0.0, 0.0, size), equirectUv(environmentLocal(d)));
+}
+
+// The prefiltered environment (no intensity) towards the image-frame
+// direction r at a fractional level: linear between the two levels around it.
+vec3 prefilteredRadiance(vec3 r, float level) {
+    float l = clamp(level, 0.0, float(u_envLevels - 1));
+    int k0 = int(floor(l));
+    int k1 = min(k0 + 1, u_envLevels - 1);
+    vec2 uv = equirectUv(r);
+    vec3 a = environmentBilinear(u_envPrefiltered, u_envLevelRect[k0], uv);
+    vec3 b = environmentBilinear(u_envPrefiltered, u_envLevelRect[k1], uv);
+    return mix(a, b, l - float(k0));
+}
+
+// The split-sum table's (scale, bias) at n.v and perceptual roughness
+// (clamped to [0.045, 1], as the table), bilinear between texel centres,
+// clamped at the edges.
+vec2 splitSumLookup(float NoV, float roughness) {
+    ivec2 size = textureSize(u_envSplitSum, 0);
+    vec2 p = clamp(vec2(NoV, clamp(roughness, 0.045, 1.0)) * vec2(size) - 0.5, vec2(0.0), vec2(size - 1));
+    vec2 f = floor(p);
+    ivec2 i0 = ivec2(f);
+    ivec2 i1 = min(i0 + 1, size - 1);
+    vec2 a = p - f;
+    vec2 s00 = texelFetch(u_envSplitSum, ivec2(i0.x, i0.y), 0).rg;
+    vec2 s10 = texelFetch(u_envSplitSum, ivec2(i1.x, i0.y), 0).rg;
+    vec2 s01 = texelFetch(u_envSplitSum, ivec2(i0.x, i1.y), 0).rg;
+    vec2 s11 = texelFetch(u_envSplitSum, ivec2(i1.x, i1.y), 0).rg;
+    return mix(mix(s00, s10, a.x), mix(s01, s11, a.x), a.y);
+}
+
+// The environment light a hit sends towards v: exercise 11's diffuse and
+// specular parts on the host's tables. Not shadowed by other spheres
+// (docs/model.md, "Environment light"): the integral with V = 1.
+vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
+    float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
+    vec3 E = u_envIntensity * shIrradiance(environmentLocal(hit.n));
+    vec3 r = environmentLocal(reflect(-v, hit.n));
+    vec3 prefiltered = u_envIntensity * prefilteredRadiance(r, prefilteredLevel(m.roughness, u_envLevels));
+    return environmentShading(E, prefiltered, splitSumLookup(NoV, m.roughness), m);
+}
+#endif
