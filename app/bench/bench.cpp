@@ -321,7 +321,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
-                renderer.setScene(v.scene);
+                renderer.setScene(v.scene, environmentSettings(v.environment.value_or(EnvironmentApproximation{})));
                 FrameSettings frame = frameFromScene(v.scene);
                 const auto firstDraw = std::chrono::steady_clock::now();
                 renderer.draw(programs[i], frame);  // llvmpipe compiles here
@@ -330,8 +330,9 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 for (int k = 1; k < o.warmup; ++k) renderer.draw(programs[i], frame);
                 gl::Finish();
                 Rendering got = renderer.readBack();
-                if (got.display.width != reference.display.width || got.display.height != reference.display.height)
-                    got = resampleNearest(got, reference.display.width, reference.display.height);
+                const Rendering& expected = v.environment && exact ? exact->withVisibility : reference;
+                if (got.display.width != expected.display.width || got.display.height != expected.display.height)
+                    got = resampleNearest(got, expected.display.width, expected.display.height);
                 if (v.environment && exact) {
                     m.error = compareRenderings(got, exact->withVisibility);
                     m.errorWithoutVisibility = compareRenderings(got, exact->withoutVisibility);
@@ -354,7 +355,9 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
         for (std::size_t i = 0; i < variants.size(); ++i) {
             if (out[i].skipped || variants[i].exactWithoutVisibility) continue;
             GlRenderer& renderer = rendererFor(renderers, variants[i].scene);
-            renderer.setScene(variants[i].scene);
+            // (a new approximation's textures are uploaded here, before the clock starts)
+            renderer.setScene(variants[i].scene,
+                              environmentSettings(variants[i].environment.value_or(EnvironmentApproximation{})));
             FrameSettings frame = frameFromScene(variants[i].scene);
             if (clock == Clock::Gpu) {
                 times[i].push_back(renderer.drawTimed(programs[i], frame));
@@ -637,14 +640,14 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
     std::ostringstream s;
     s << "scene,variant,sweep,mode,width,height,spp,max_bounces,frames,ms_median,ms_min,ms_max,clock,compile_ms,"
          "first_draw_ms,err_mean_lsb,err_p99_lsb,err_max_lsb,off_frac,relmse,psnr,non_finite,pareto,skipped,note,"
-         "err_mean_lsb_no_v,off_frac_no_v,reference_samples,reference_noise_lsb\n";
+         "err_mean_lsb_no_v,off_frac_no_v,reference_samples,reference_noise_lsb,reference_noise_off_frac\n";
     for (const Measurement& m : measurements) {
         std::string note = m.note;
         std::replace(note.begin(), note.end(), '"', '\'');
         s << m.scene << "," << m.variant << "," << m.sweep << "," << m.mode << "," << m.width << "," << m.height << ","
           << m.spp << "," << m.maxBounces << "," << m.frames << ",";
         if (m.skipped) {
-            s << ",,,,,,,,,,,,,0,1,\"" << note << "\",,,,\n";
+            s << ",,,,,,,,,,,,,0,1,\"" << note << "\",,,,,\n";
             continue;
         }
         s << fixed(m.msMedian, 3) << "," << fixed(m.msMin, 3) << "," << fixed(m.msMax, 3) << "," << m.clock << ","
@@ -654,9 +657,10 @@ std::string toCsv(const std::vector<Measurement>& measurements) {
           << "\",";
         if (m.referenceSamples > 0)
             s << general(m.errorWithoutVisibility.meanLsb) << "," << general(m.errorWithoutVisibility.offFraction) << ","
-              << m.referenceSamples << "," << general(m.referenceNoiseLsb) << "\n";
+              << m.referenceSamples << "," << general(m.referenceNoiseLsb) << ","
+              << general(m.referenceNoiseOffFraction) << "\n";
         else
-            s << ",,,\n";
+            s << ",,,,\n";
     }
     return s.str();
 }

@@ -20,6 +20,8 @@ std::string environmentVariantName(const EnvironmentApproximation& a) {
     std::vector<std::string> parts;
     if (a.irradianceMap > 0)
         parts.push_back("irradiance-map=" + std::to_string(a.irradianceMap) + "x" + std::to_string(a.irradianceMap / 2));
+    if (a.prefilterWidth > 0)
+        parts.push_back("prefilter=" + std::to_string(a.prefilterWidth) + "x" + std::to_string(a.prefilterWidth / 2));
     if (a.prefilterLevels > 0) parts.push_back("levels=" + std::to_string(a.prefilterLevels));
     if (a.prefilterSamples > 0) parts.push_back("prefilter-samples=" + std::to_string(a.prefilterSamples));
     if (a.lutSize > 0) parts.push_back("lut=" + std::to_string(a.lutSize));
@@ -29,26 +31,49 @@ std::string environmentVariantName(const EnvironmentApproximation& a) {
     return name;
 }
 
+EnvironmentSettings environmentSettings(const EnvironmentApproximation& a) {
+    EnvironmentSettings s;
+    if (a.prefilterWidth > 0) {
+        s.prefilterWidth = a.prefilterWidth;
+        s.prefilterHeight = a.prefilterWidth / 2;
+    }
+    if (a.prefilterLevels > 0) s.levels = a.prefilterLevels;
+    if (a.prefilterSamples > 0) s.prefilterSamples = a.prefilterSamples;
+    if (a.lutSize > 0) s.tableSize = a.lutSize;
+    return s;
+}
+
 std::vector<EnvironmentApproximation> environmentSweep() {
+    const EnvironmentSettings d;
     std::vector<EnvironmentApproximation> out;
-    out.push_back({});  // the default (SH9 irradiance)
-    // Irradiance: maps from coarse to finer than SH9's band limit needs.
-    for (int n : {8, 16, 32, 64}) out.push_back({n, 0, 0, 0});
-    // The prefiltered environment: fewer and more roughness levels, fewer and more samples per texel.
-    for (int levels : {3, 5, 9}) out.push_back({0, levels, 0, 0});
-    for (int samples : {8, 32, 128, 512}) out.push_back({0, 0, samples, 0});
+    out.push_back({});  // the default: SH9 irradiance, EnvironmentSettings{}
+    auto add = [&](EnvironmentApproximation a) {
+        if (!(environmentSettings(a) == d) || a.irradianceMap > 0) out.push_back(a);  // the default once
+    };
+    // Irradiance: maps from coarser to finer than SH9's band limit needs.
+    for (int n : {8, 16, 32, 64}) add({n, 0, 0, 0, 0});
+    // The prefiltered environment: its size, fewer and more roughness levels, fewer and more samples per texel.
+    for (int w : {32, 64, 128, 256}) add({0, w, 0, 0, 0});
+    for (int levels : {2, 4, 6, 8}) add({0, 0, levels, 0, 0});
+    for (int samples : {8, 32, 128, 512}) add({0, 0, 0, samples, 0});
     // The split-sum table.
-    for (int size : {8, 16, 64, 128}) out.push_back({0, 0, 0, size});
+    for (int size : {4, 8, 16, 32, 64}) add({0, 0, 0, 0, size});
     return out;
 }
 
-std::string environmentApproximationUnsupported(const EnvironmentApproximation&) {
-    return "the GL picture has no environment light in this build";
+std::string environmentApproximationUnsupported(const EnvironmentApproximation& a) {
+    if (a.irradianceMap > 0) return "irradiance maps: not in the GL picture yet";
+    return "";
 }
 
 const EnvironmentBudget& environmentBudget() {
-    // Provisional until the GL picture's environment light is measured.
-    static const EnvironmentBudget budget{2.0, 0.5, 8.0};
+    // docs/performance.md, "Environment light: speed against error": the
+    // default measured 1.8 and 2.4 LSB without V at 48x36 and 256 samples
+    // (reference noise 1.2-1.3 LSB included), 0.3-1.8 LSB over exact:no-V
+    // with V; the budget leaves about 1 LSB of room for the reference's
+    // noise at other sizes and seeds, and no more: a table of half the
+    // resolution or two prefiltered levels (2.2-3.9 LSB) must not pass.
+    static const EnvironmentBudget budget{3.0, 0.10, 2.5};
     return budget;
 }
 
@@ -126,6 +151,15 @@ ExactReferences exactReferences(const Scene& scene, int samples, std::ostream& l
     return out;
 }
 
+EnvironmentBudgetCheck checkEnvironmentBudget(const Measurement& m, const Measurement& exact) {
+    const EnvironmentBudget& b = environmentBudget();
+    EnvironmentBudgetCheck c;
+    c.meanWithoutVisibility = m.errorWithoutVisibility.meanLsb <= b.meanLsbWithoutVisibility;
+    c.offWithoutVisibility = m.errorWithoutVisibility.offFraction <= m.referenceNoiseOffFraction + b.offFractionOverNoise;
+    c.meanWithVisibility = m.error.meanLsb <= exact.error.meanLsb + b.overNoVisibilityLsb;
+    return c;
+}
+
 std::string formatEnvironmentTable(const std::vector<Measurement>& measurements) {
     std::ostringstream s;
     bool any = false;
@@ -171,15 +205,18 @@ std::string formatEnvironmentTable(const std::vector<Measurement>& measurements)
     // The default against its budget.
     for (const Measurement& m : measurements) {
         if (m.sweep != "environment" || m.variant != "env:default" || m.skipped) continue;
-        const bool meets = m.errorWithoutVisibility.meanLsb <= budget.meanLsbWithoutVisibility &&
-                           m.errorWithoutVisibility.offFraction <= budget.offFractionWithoutVisibility &&
-                           m.error.meanLsb <= budget.meanLsbWithVisibility;
+        const Measurement* exact = nullptr;
+        for (const Measurement& e : measurements)
+            if (e.scene == m.scene && e.variant == "exact:no-V" && !e.skipped) exact = &e;
+        if (!exact) continue;
+        const EnvironmentBudgetCheck c = checkEnvironmentBudget(m, *exact);
         std::snprintf(line, sizeof line,
-                      "%s: the default %s the budget (without V: mean %.3f <= %.2f LSB, off %.2f%% <= %.0f%%; "
-                      "with V: mean %.3f <= %.2f LSB)\n",
-                      m.scene.c_str(), meets ? "meets" : "DOES NOT MEET", m.errorWithoutVisibility.meanLsb,
+                      "%s: the default %s the budget: without V mean %.3f <= %.2f LSB, off %.2f%% <= noise %.2f%% + "
+                      "%.0f%%; with V mean %.3f <= exact:no-V %.3f + %.2f LSB\n",
+                      m.scene.c_str(), c.meets() ? "meets" : "DOES NOT MEET", m.errorWithoutVisibility.meanLsb,
                       budget.meanLsbWithoutVisibility, 100 * m.errorWithoutVisibility.offFraction,
-                      100 * budget.offFractionWithoutVisibility, m.error.meanLsb, budget.meanLsbWithVisibility);
+                      100 * m.referenceNoiseOffFraction, 100 * budget.offFractionOverNoise, m.error.meanLsb,
+                      exact->error.meanLsb, budget.overNoVisibilityLsb);
         s << line;
     }
     s << "(mean V, off % V: against the exact reference WITH visibility, the truth; mean noV, off %: against the\n"
