@@ -6,10 +6,14 @@
 
 #include "core/image.h"
 #include "core/paths.h"
+#include "core/scene_io.h"
+#include "render/scene_uniforms.h"
+#include "view/view_caption.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -60,4 +64,44 @@ TEST(ViewEnvironment, RotationAndIntensitySlidersNeverRecompile) {
     const PictureDiff d = comparePictures(after, expected);
     std::printf("env sliders: after vs render of the same values: %.4f off, max %d LSB\n", d.offFraction, d.maxLsb);
     EXPECT_LE(d.offFraction, kMaxOffFraction);
+}
+
+// The environment's teaching views (shaders/views.glsl): each has a name for
+// --view, a key, a caption with a colour bar, and draws its term on a scene
+// with an environment; a scene without one draws black and its caption says why.
+TEST(ViewEnvironment, TermViewsRenderWithCaptionsAndAreBlackWithoutAnEnvironment) {
+    TempDir dir;
+    const Scene studio = loadSceneFile((scenesDir() / "environments" / "studio-spheres.json").string()).scene;
+    const Scene lecture = loadSceneFile((scenesDir() / "lecture.json").string()).scene;
+    const std::map<std::string, std::string> env;
+    for (const char* name : {"irradiance", "prefiltered", "env-scale", "env-bias"}) {
+        SCOPED_TRACE(name);
+        int bounce = -1;
+        const View view = parseView(name, bounce);
+        EXPECT_EQ(viewName(view), name);
+        const ViewCaption caption = viewCaption(view, 0, studio, ShadingModel{});
+        EXPECT_FALSE(caption.formula.empty());
+        EXPECT_GE(caption.scale.ticks.size(), 2u);
+        EXPECT_EQ(caption.title.find("no environment"), std::string::npos);
+        EXPECT_NE(viewCaption(view, 0, lecture, ShadingModel{}).title.find("this scene has no environment: black"),
+                  std::string::npos);
+
+        RunResult withEnvironment = runRaylab({"render", (scenesDir() / "environments" / "studio-spheres.json").string(),
+                                               "--size", "64x36", "--view", name, "-o", "env.png"},
+                                              env, dir.path());
+        ASSERT_EQ(withEnvironment.status, 0) << withEnvironment.err;
+        RunResult without = runRaylab({"render", (scenesDir() / "lecture.json").string(), "--size", "64x36", "--view",
+                                       name, "-o", "none.png"},
+                                      env, dir.path());
+        ASSERT_EQ(without.status, 0) << without.err;
+        const DisplayImage lit = readPng((dir / "env.png").string());
+        const DisplayImage black = readPng((dir / "none.png").string());
+        long litPixels = 0, nonBlack = 0;
+        for (std::size_t i = 0; i < lit.rgb.size(); ++i) litPixels += lit.rgb[i] > 8;
+        for (std::size_t i = 0; i < black.rgb.size(); ++i) nonBlack += black.rgb[i] > 0;
+        // The spheres and the floor fill most of the frame; even the bias
+        // (small but for grazing angles) lights the rims and the floor's far part.
+        EXPECT_GT(litPixels, long(lit.rgb.size() / 50)) << "the term is drawn";
+        EXPECT_EQ(nonBlack, 0) << "no environment: black";
+    }
 }
