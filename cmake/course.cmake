@@ -6,6 +6,7 @@
 # Sets, for CMakeLists.txt:
 #   RAYLAB_UNITS               every unit folder name, the manifest's first, in its order
 #   RAYLAB_COURSE              the manifest's units, in order
+#   RAYLAB_OPTIONAL            those the manifest marks "optional"
 #   RAYLAB_UNIT_PROBE_SOURCES  course/*/probes.cpp (the checks layer)
 #   RAYLAB_UNIT_REFERENCE_SOURCES  course/*/reference.cpp (the reference layer)
 # and writes into ${CMAKE_BINARY_DIR}/generated/:
@@ -57,6 +58,7 @@ string(REPLACE ";" "," manifest_text "${manifest_text}")  # no list separators i
 string(REPLACE "\r" "" manifest_text "${manifest_text}")
 string(REPLACE "\n" ";" manifest_lines "${manifest_text}")  # empty lines kept: the line numbers count them
 set(RAYLAB_COURSE "")
+set(RAYLAB_OPTIONAL "")
 set(line_number 0)
 foreach(line IN LISTS manifest_lines)
   math(EXPR line_number "${line_number} + 1")
@@ -65,9 +67,16 @@ foreach(line IN LISTS manifest_lines)
   if(line STREQUAL "")
     continue()
   endif()
+  # "NN-name optional": an optional exercise (a bonus: checked and graded,
+  # weight 0 by default, not in "N of N exercises pass"; course/README.md).
+  set(optional FALSE)
+  if(line MATCHES "^([^ \t]+)[ \t]+optional$")
+    set(line "${CMAKE_MATCH_1}")
+    set(optional TRUE)
+  endif()
   if(NOT line MATCHES "^[0-9][0-9]-[a-z0-9-]+$")
     message(FATAL_ERROR "course/manifest.txt:${line_number}: \"${line}\" is no unit name (two digits, a dash, "
-                        "lower-case letters, digits and dashes, like 05-ggx)")
+                        "lower-case letters, digits and dashes, like 05-ggx, optionally followed by \"optional\")")
   endif()
   if(NOT EXISTS ${course_dir}/${line}/unit.json)
     message(FATAL_ERROR "course/manifest.txt:${line_number}: no unit ${line} (course/${line}/unit.json is missing)")
@@ -76,6 +85,9 @@ foreach(line IN LISTS manifest_lines)
     message(FATAL_ERROR "course/manifest.txt:${line_number}: ${line} is listed twice")
   endif()
   list(APPEND RAYLAB_COURSE ${line})
+  if(optional)
+    list(APPEND RAYLAB_OPTIONAL ${line})
+  endif()
 endforeach()
 if(RAYLAB_COURSE STREQUAL "")
   message(FATAL_ERROR "course/manifest.txt lists no unit")
@@ -140,7 +152,12 @@ foreach(id IN LISTS RAYLAB_UNITS)
       message(FATAL_ERROR "course/${id}: a file holds the text )rl_unit\" that the build quotes it with")
     endif()
   endforeach()
-  string(APPEND unit_entries "    {\"${id}\", ${position}, R\"rl_unit(${json})rl_unit\", R\"rl_unit(${stub})rl_unit\"},\n")
+  if(id IN_LIST RAYLAB_OPTIONAL)
+    set(unit_optional true)
+  else()
+    set(unit_optional false)
+  endif()
+  string(APPEND unit_entries "    {\"${id}\", ${position}, R\"rl_unit(${json})rl_unit\", R\"rl_unit(${stub})rl_unit\", ${unit_optional}},\n")
   if(EXISTS ${unit}/probes.cpp)
     list(APPEND RAYLAB_UNIT_PROBE_SOURCES ${unit}/probes.cpp)
     course_symbol(${unit}/probes.cpp ${symbol})

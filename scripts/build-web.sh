@@ -110,7 +110,9 @@ if [ -d solutions ]; then SOLUTIONS="--embed-file solutions@/raylab/solutions"; 
 FRAMEWORK_UNITS=""
 for unit in course/*/; do
     unit=${unit%/}
-    if ! grep -qx "${unit#course/}" course/manifest.txt && [ -f "$unit/solution.glsl" ]; then
+    # The manifest's units: each line's first word ("11-environment optional" too).
+    if ! sed -e 's/#.*//' course/manifest.txt | awk 'NF { print $1 }' | grep -qx "${unit#course/}" &&
+        [ -f "$unit/solution.glsl" ]; then
         FRAMEWORK_UNITS="$FRAMEWORK_UNITS --embed-file $unit/solution.glsl@/raylab/$unit/solution.glsl"
     fi
 done

@@ -20,13 +20,13 @@
 // (what a hit adds: exercise 11's functions on the host's tables), and the
 // lookups environmentLocal(), equirectUv(), prefilteredRadiance(), splitSumLookup().
 
-const int RL_ENV_MAX_LEVELS = 8;
+const int ENV_MAX_LEVELS = 8;
 
 #ifdef RL_ENVIRONMENT
 uniform sampler2D u_envMap;
 uniform sampler2D u_envPrefiltered;
 uniform sampler2D u_envSplitSum;
-uniform vec4 u_envLevelRect[RL_ENV_MAX_LEVELS];
+uniform vec4 u_envLevelRect[ENV_MAX_LEVELS];
 uniform int u_envLevels;
 uniform vec3 u_envSh[9];
 uniform float u_envIntensity;

@@ -203,12 +203,12 @@ std::string contextDescription() {
     }
 }
 
-// The exercises, in order: number, id, file, title and handout.
+// The exercises, in order: number, id, file, title, handout and whether it is optional (a bonus).
 std::string exerciseList() {
     json list = json::array();
     for (const ExerciseInfo& e : allExercises())
         list.push_back({{"number", e.number}, {"id", e.id}, {"file", e.file()}, {"title", e.title},
-                        {"handout", e.handout()}});
+                        {"handout", e.handout()}, {"optional", e.optional}});
     return list.dump();
 }
 

@@ -66,10 +66,21 @@ int runCheck(const CheckCommandOptions& o) {
 
     std::vector<CheckScene> scenes = makeCheckScenes();
     nlohmann::json all = nlohmann::json::array();
-    int passed = 0;
+    // An optional exercise (course/manifest.txt) is checked like the others
+    // but counts apart: "10 of 10 exercises pass; optional 11-environment: NOT STARTED".
+    // Its verdict sets the exit status only where it was asked for by name
+    // (--exercise 11): then it is what the command checks.
+    const bool named = !o.exercises.empty();
+    int passed = 0, required = 0;
+    bool optionalsPass = true;
+    std::string optionals;
     auto print = [&](const ExerciseReport& report) {
         std::cout << formatReport(report, o.verbose) << std::flush;
-        if (report.status == CheckStatus::Pass) ++passed;
+        const bool optional = findExercise(report.id).optional;
+        if (optional) optionals += "; optional " + report.id + ": " + statusName(report.status);
+        if (optional && report.status != CheckStatus::Pass) optionalsPass = false;
+        if (!optional) required += 1;
+        if (report.status == CheckStatus::Pass && !optional) ++passed;
         all.push_back(toJson(report));
     };
     if (hasSolutions()) {
@@ -93,14 +104,17 @@ int runCheck(const CheckCommandOptions& o) {
     bool togetherOk = !together || together->status == CheckStatus::Pass;
     if (!togetherOk) std::cout << formatReport(*together, o.verbose) << std::flush;
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << passed << " of " << selected.size() << " exercises pass"
+    // Only optional exercises selected (--exercise 11): their verdicts alone.
+    if (required == 0 && !optionals.empty()) optionals.erase(0, 2);
+    std::cout << (required > 0 || optionals.empty() ? std::to_string(passed) + " of " + std::to_string(required) + " exercises pass" : "")
+              << optionals
               << (togetherOk ? "" : "; the files do not compile together") << " (" << int(seconds + 0.5) << " s)\n";
     if (!o.json.empty()) {
         nlohmann::json report{{"impl", options.implDir.string()}, {"exercises", all}, {"seconds", seconds}};
         if (together) report["together"] = toJson(*together);
         writeFileAtomic(o.json, report.dump(2) + "\n", WriteOptions{"the JSON report"});
     }
-    return passed == int(selected.size()) && togetherOk ? 0 : 1;
+    return passed == required && togetherOk && (!named || optionalsPass) ? 0 : 1;
 }
 
 }  // namespace

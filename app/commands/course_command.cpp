@@ -34,7 +34,7 @@ std::string courseMarkdownTable(const std::string& from) {
     for (const ExerciseInfo& e : allExercises()) {
         const std::string link = std::filesystem::path(e.handout()).lexically_relative(base).generic_string();
         out += "| " + e.id.substr(0, 2) + " | `exercises/" + e.file() + "` | " + functionList(e, true) + " | [" + e.title +
-               "](" + link + ") |\n";
+               "](" + link + ")" + (e.optional ? " (optional)" : "") + " |\n";
     }
     return out;
 }
@@ -54,8 +54,9 @@ void addCourseCommand(CLI::App& app) {
         std::size_t width = 0;
         for (const ExerciseInfo& e : allExercises()) width = std::max(width, e.id.size());
         for (const ExerciseInfo& e : allExercises())
-            std::cout << std::left << std::setw(int(width) + 2) << e.id << e.title << " (" << e.weight
-                      << " points): " << functionList(e, false) << "; handout " << e.handout() << "\n";
+            std::cout << std::left << std::setw(int(width) + 2) << e.id << e.title << " ("
+                      << (e.optional ? "optional: a bonus, weight 0 in the default rubric" : std::to_string(e.weight) + " points")
+                      << "): " << functionList(e, false) << "; handout " << e.handout() << "\n";
         for (const ExerciseInfo& e : frameworkUnits())
             std::cout << std::left << std::setw(int(width) + 2) << e.id << "not in the course: its solution is framework code ("
                       << functionList(e, false) << ")\n";

@@ -45,12 +45,17 @@ ExerciseInfo parseUnit(const UnitSource& source) {
     e.id = source.id;
     e.number = std::stoi(e.id.substr(0, 2));
     e.inCourse = source.position >= 0;
+    e.optional = source.optional;
     if (!j.is_object() || !j.contains("title") || !j["title"].is_string())
         throw Error(where + ": needs \"title\" (a string)");
     e.title = j["title"].get<std::string>();
     if (j.contains("weight")) {
         if (!j["weight"].is_number() || j["weight"].get<double>() < 0) throw Error(where + ": \"weight\" must be a number >= 0");
         e.weight = j["weight"].get<int>();
+    }
+    if (j.contains("shows_with")) {
+        e.showsWith = textOf(j["shows_with"], where + ": \"shows_with\"");
+        if (e.showsWith.rfind("RL_", 0) != 0) throw Error(where + ": \"shows_with\" must name an RL_ define");
     }
     if (j.contains("light")) e.light = textOf(j["light"], where + ": \"light\"");
     if (!j.contains("functions") || !j["functions"].is_array() || j["functions"].empty())
@@ -90,6 +95,13 @@ const Course& course() {
 
 const std::vector<ExerciseInfo>& allExercises() { return course().exercises; }
 const std::vector<ExerciseInfo>& frameworkUnits() { return course().framework; }
+
+std::vector<ExerciseInfo> requiredExercises() {
+    std::vector<ExerciseInfo> out;
+    for (const ExerciseInfo& e : allExercises())
+        if (!e.optional) out.push_back(e);
+    return out;
+}
 
 const std::string* shippedStub(const std::string& fileName) {
     static const std::map<std::string, std::string> stubs = [] {

@@ -54,6 +54,15 @@ struct ExerciseInfo {
     // `hit`, `v` and the material `m`, giving linear radiance; empty for none.
     std::string light;
     bool inCourse = true;  // listed in course/manifest.txt
+    // Listed as "NN-name optional": a bonus exercise, checked and graded like
+    // the others, weight 0 in the default rubric, not counted in "N of N
+    // exercises pass" and never holding back the picture's specialisations
+    // or stripes (docs/decisions.md, "Optional exercises").
+    bool optional = false;
+    // "shows_with" in unit.json: a define without which the unit's functions
+    // add nothing to the picture (RL_ENVIRONMENT); while the unit is
+    // unfinished, only programs with it show the stripes. Empty: every program.
+    std::string showsWith;
     std::string file() const { return id + ".glsl"; }
     std::string unitDir() const { return "course/" + id; }  // relative to the repository's root
     std::string handout() const { return unitDir() + "/handout.md"; }
@@ -63,6 +72,8 @@ struct ExerciseInfo {
 
 // The course's exercises, in the manifest's order.
 const std::vector<ExerciseInfo>& allExercises();
+// The course's exercises that are not optional: what "N of N exercises pass" counts.
+std::vector<ExerciseInfo> requiredExercises();
 // The units the manifest does not list: their solutions are framework code.
 const std::vector<ExerciseInfo>& frameworkUnits();
 // By number (1..10) or id ("05-ggx"); throws rl::Error listing the valid ones.

@@ -13,6 +13,7 @@ struct UnitSource {
     int position;          // its line among the manifest's units (0, 1, ...), or -1: not in the course
     const char* json;      // unit.json
     const char* stub;      // stub.glsl
+    bool optional;         // the manifest's line says "optional" (a bonus exercise)
 };
 
 // Every unit, the course's first (in the manifest's order), then the others.

@@ -101,11 +101,12 @@ Rubric rubricFromJson(const json& j, const std::string& shown) {
     std::set<std::string> seen, columns{r.idColumn, r.totalColumn};
     if (!j.contains("exercises")) {
         // No list: every exercise of the course (course/manifest.txt), each
-        // with its unit's weight (unit.json), in the course's order.
+        // with its unit's weight (unit.json), in the course's order; an
+        // optional one (a bonus) graded in its column with weight 0.
         for (const ExerciseInfo& e : allExercises()) {
             RubricExercise x;
             x.id = e.id;
-            x.weight = e.weight;
+            x.weight = e.optional ? 0 : e.weight;
             x.column = e.id;
             if (!columns.insert(x.column).second) throw Error(shown + ": column \"" + x.column + "\" is used twice");
             r.exercises.push_back(x);

@@ -29,7 +29,7 @@ namespace rl {
 struct EnvironmentSettings {
     int prefilterWidth = 128;   // level 0 of the prefiltered chain (each level halves, never below 8 x 4)
     int prefilterHeight = 64;
-    int levels = 6;             // level k for roughness k / (levels - 1); 2 to 8 (RL_ENV_MAX_LEVELS)
+    int levels = 6;             // level k for roughness k / (levels - 1); 2 to 8 (ENV_MAX_LEVELS, shaders/environment.glsl)
     int prefilterSamples = 128; // GGX-distributed directions per prefiltered texel (Hammersley)
     int tableSize = 32;         // the split-sum table: tableSize x tableSize entries
     int tableSamples = 32;      // tableSamples^2 half vectors per entry

@@ -117,8 +117,11 @@ std::string exercisesGlsl(const Readiness& readiness) {
         for (const ExerciseFunction* f : waiting) {
             text += "#undef " + f->name + "\n";
             text += f->signature + " { " + f->neutralBody + " }\n";
-            unfinished = true;
         }
+        // The stripes: everywhere, or only where the unit's functions show ("shows_with").
+        if (!waiting.empty() && e.showsWith.empty()) unfinished = true;
+        if (!waiting.empty() && !e.showsWith.empty())
+            text += "#if defined(" + e.showsWith + ") && !defined(RL_UNFINISHED)\n#define RL_UNFINISHED\n#endif\n";
         for (const ExerciseFunction& f : e.functions)
             if (readiness.isReady(f.name)) text += "#define RL_READY_" + f.name + "\n";
     }

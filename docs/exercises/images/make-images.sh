@@ -134,6 +134,13 @@ variant exposure-4-none 's/"exposure": 1.0, "tonemap": "reinhard"/"exposure": 4.
 lecture -o "$out/10-mistake-pow-gamma.png" --impl "$(mutant 10-display--pow-gamma)"
 lecture -o "$out/10-mistake-gamma-first.png" --impl "$(mutant 10-display--gamma-before-tonemap)"
 
+# ---- 11 environment (optional) ---------------------------------------------------------
+sky() { render "$root/scenes/environments/sky-spheres.json" "$@"; }
+sky -o "$out/11-final.png"
+sky -o "$out/11-stub.png" --impl "$(stub 11)"
+sky -o "$out/11-reference.png" --cpu
+sky -o "$out/11-mistake-level-unmapped.png" --impl "$(mutant 11-environment--level-unmapped)"
+
 echo "make-images.sh: $(ls "$out"/*.png | wc -l) pictures in $out"
 
 # Each picture to its place: NN-*.png into its unit's images/, the rest here.

@@ -1,0 +1,160 @@
+// The GL picture of environment scenes (issue 24, shaders/environment.glsl):
+// scenes without an environment render the same bytes as before it existed;
+// with one, the picture follows the exact reference within the
+// approximation's bias, and intensity and rotation are values, not programs.
+#include "core/paths.h"
+#include "core/scene_io.h"
+#include "gl/context.h"
+#include "reference/cpu_reference.h"
+#include "reference/environment_reference.h"
+#include "render/define_table.h"
+#include "render/environment_resources.h"
+#include "render/gl_renderer.h"
+#include "shader/portability.h"
+#include "shader/shader_library.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace fs = std::filesystem;
+using namespace rl;
+
+namespace {
+
+Scene loaded(const std::string& file, int w, int h) {
+    Scene s = loadSceneFile((sourceRoot() / file).string()).scene;
+    s.render.width = w;
+    s.render.height = h;
+    return s;
+}
+
+// The relative L1 difference of the radiance: sum |a - b| / sum b over
+// every channel (robust where a pixel is nearly black).
+double meanRelative(const RadianceImage& got, const RadianceImage& expected) {
+    double difference = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < got.rgb.size(); ++i) {
+        difference += std::abs(double(got.rgb[i]) - double(expected.rgb[i]));
+        total += std::abs(double(expected.rgb[i]));
+    }
+    return difference / total;
+}
+
+}  // namespace
+
+// PNGs that the binary built before environment.glsl existed rendered
+// (/work/main at b4ea6dd: `raylab render SCENE --size 64x48 [--generic] -o
+// tests/gpu/golden/NAME.png`): the course's generated program and the
+// shaders/ program, on a scene of two bounces and one of eight (the bounce
+// cutoff). Seen failing: a framework unit counted as a course file turned the
+// generated program off and deep-64x48.png differed.
+TEST(EnvironmentPicture, ScenesWithoutOneAreTheSameBytesAsBefore) {
+    const fs::path out = test::freshTempDir("env-golden");
+    struct Case {
+        const char* name;
+        const char* scene;
+        const char* flags;
+    };
+    for (const Case& c : {Case{"lecture-64x48", "scenes/lecture.json", ""},
+                          Case{"lecture-64x48-generic", "scenes/lecture.json", "--generic"},
+                          Case{"deep-64x48", "tests/bench/deep-bounces.json", ""},
+                          Case{"deep-64x48-generic", "tests/bench/deep-bounces.json", "--generic"}}) {
+        const fs::path png = out / (std::string(c.name) + ".png");
+        test::CommandResult r = test::runRaylab("render " + test::shellQuoted((sourceRoot() / c.scene).string()) +
+                                                " --size 64x48 " + c.flags + " -o " + test::shellQuoted(png.string()));
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_EQ(test::readText(png), test::readText(sourceRoot() / "tests/gpu/golden" / (std::string(c.name) + ".png")))
+            << c.name << ": not the bytes of the picture before environment light";
+    }
+}
+
+TEST(EnvironmentPicture, OnlyAnEnvironmentSceneCompilesItIn) {
+    Scene plain = loaded("scenes/lecture.json", 32, 24);
+    Scene sky = loaded("scenes/environments/sky-spheres.json", 32, 24);
+    for (Purpose p : {Purpose::Picture, Purpose::EveryView, Purpose::LiveView, Purpose::Generic}) {
+        EXPECT_EQ(definesFor(plain, ImplementationFacts{}, p).count("RL_ENVIRONMENT"), 0u) << purposeName(p);
+        EXPECT_EQ(definesFor(sky, ImplementationFacts{}, p).count("RL_ENVIRONMENT"), 1u) << purposeName(p);
+    }
+}
+
+// WebGL2 compiles the same GLSL: the environment program builds as GLSL ES 3.00.
+TEST(EnvironmentPicture, BuildsAsGlslEs) {
+    test::renderGl(loaded("scenes/environments/sky-spheres.json", 8, 6));  // the process's context, current
+    Implementation solutions{solutionsDir(), {}};
+    ShaderDefines env{{"RL_ENVIRONMENT", "1"}};
+    AssembledSource vertex = assembleShader("fullscreen.vert", solutions, {}, GlslDialect::Es300);
+    AssembledSource fragment = assembleShader("main.frag", solutions, env, GlslDialect::Es300);
+    EXPECT_EQ(portabilityErrors(fragment), "");
+    EXPECT_NO_THROW(ShaderProgram(vertex, fragment));
+}
+
+// A uniform white environment on two spheres, the reference without
+// visibility (the shader's model: environment light is not shadowed): SH9 of a constant is exact and
+// the prefiltered map is the constant, so only the split-sum table's
+// quadrature and interpolation and the diffuse weight (1 - F0) for
+// (1 - F(v.h)) separate the picture from the exact integral, and the
+// reference's own noise. Measured: relative L1 difference 0.26%, 8-bit mean
+// 0.35 LSB (80x60, 256 reference samples). The bound 1% leaves room for the
+// reference's noise; without the diffuse 1/pi it is 18% off (seen failing),
+// and with the level taken as the roughness itself (a mutant of exercise
+// 11) the metal sphere is visibly sharper but, in a uniform map, no
+// brighter: that mistake is the probes' to find, not this test's.
+TEST(EnvironmentPicture, UniformEnvironmentMatchesTheReference) {
+    Scene s = parseScene(R"({"camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov_y": 45},
+        "render": {"width": 80, "height": 60, "max_bounces": 0, "ambient": 0, "tonemap": "none", "gamma": "srgb"},
+        "environment": {"file": "white.pfm"}, "lights": [],
+        "spheres": [{"center": [-0.55, 0, 0], "radius": 0.5, "material": {"albedo": [0.8, 0.8, 0.8], "roughness": 0.7, "metallic": 0}},
+                    {"center": [0.55, 0, 0], "radius": 0.5, "material": {"albedo": [0.9, 0.6, 0.3], "roughness": 0.35, "metallic": 1}}]})",
+                         (sourceRoot() / "scenes/environments/uniform.json").string()).scene;
+    Rendering gl = test::renderGl(s);
+    ref::EnvironmentOptions open;
+    open.visibility = false;
+    Rendering cpu = ref::renderCpu(s, 0, open);
+    ImageDiff d = compareRenderings(gl, cpu);
+    double rel = meanRelative(gl.radiance, cpu.radiance);
+    std::printf("uniform environment, GL vs reference: mean relative %.4f, %s\n", rel, test::describe(d).c_str());
+    EXPECT_LT(rel, 0.01) << test::describe(d);
+    EXPECT_EQ(d.nonFinite, 0);
+}
+
+// The shipped scenes: what the approximations leave out (contact occlusion,
+// inter-reflection of the environment, the split sum's n = v = r) shows as
+// a bias against the exact reference. Reported, bounded only against a
+// picture gone wrong (no environment light at the hits is 40% off).
+TEST(EnvironmentPicture, ShippedScenesAgainstTheReference) {
+    for (const char* file : {"scenes/environments/sky-spheres.json", "scenes/environments/studio-spheres.json"}) {
+        Scene s = loaded(file, 80, 45);
+        Rendering gl = test::renderGl(s);
+        ref::EnvironmentOptions visible, open;
+        open.visibility = false;
+        Rendering withV = ref::renderCpu(s, 0, visible);
+        Rendering withoutV = ref::renderCpu(s, 0, open);
+        ImageDiff a = compareRenderings(gl, withV), b = compareRenderings(gl, withoutV);
+        double relA = meanRelative(gl.radiance, withV.radiance), relB = meanRelative(gl.radiance, withoutV.radiance);
+        std::printf("%s 80x45, GL vs reference with V: mean relative %.4f, %s\n", file, relA, test::describe(a).c_str());
+        std::printf("%s 80x45, GL vs reference without V: mean relative %.4f, %s\n", file, relB, test::describe(b).c_str());
+        EXPECT_LT(relB, 0.25) << file;
+        EXPECT_EQ(a.nonFinite, 0);
+    }
+}
+
+// Intensity and rotation are uniforms: the same program draws every value,
+// twice the intensity is twice the radiance, and a turn of the map moves the picture.
+TEST(EnvironmentPicture, IntensityAndRotationAreValues) {
+    Scene s = loaded("scenes/environments/sky-spheres.json", 48, 27);
+    Scene brighter = s, turned = s;
+    brighter.environment->intensity = 2.0;
+    turned.environment->rotationDegrees = 90.0;
+    const ImplementationFacts facts{};
+    EXPECT_EQ(definesFor(s, facts, Purpose::LiveView), definesFor(brighter, facts, Purpose::LiveView));
+    EXPECT_EQ(definesFor(s, facts, Purpose::LiveView), definesFor(turned, facts, Purpose::LiveView));
+    Rendering base = test::renderGl(s), twice = test::renderGl(brighter), other = test::renderGl(turned);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < base.radiance.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(twice.radiance.rgb[i] - 2.0 * base.radiance.rgb[i]) /
+                                    (2.0 * std::abs(base.radiance.rgb[i]) + 1e-6));
+    EXPECT_LT(worst, 1e-5);  // a float32 product per term: a few roundings
+    EXPECT_GT(meanRelative(other.radiance, base.radiance), 0.01);
+}
