@@ -72,6 +72,10 @@ struct Measurement {
     ImageDiff errorWithoutVisibility;
     int referenceSamples = 0;
     double referenceNoiseLsb = 0, referenceNoiseOffFraction = 0;
+    // Computing the approximation's tables on the host (prefiltered chain,
+    // split-sum table, SH9), wall clock, once per image and settings: what a
+    // larger setting costs, since every row costs the same per frame.
+    double tablesMs = 0;
 };
 
 // How a frame is timed: GL_TIME_ELAPSED queries; the wall clock around

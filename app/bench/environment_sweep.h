@@ -55,8 +55,10 @@ std::string environmentApproximationUnsupported(const EnvironmentApproximation& 
 //  * against the exact reference WITHOUT visibility (what the unshadowed
 //    approximation aims at: its own error, from the split sum, SH9's band
 //    limit and the tables' resolution): mean at most meanLsbWithoutVisibility,
-//    and at most offFractionOverNoise more pixels off by over 1/255 than the
-//    reference's own noise puts off (ExactReferences::noiseOffFraction);
+//    and at most offFractionWithoutVisibility of the pixels off by over 1/255
+//    (a loose figure: the reference's own noise puts 22-39% of the pixels off
+//    at 1024-256 samples, ExactReferences::noiseOffFraction; the mean is the
+//    figure that ranks the settings);
 //  * against the exact reference WITH visibility (the truth): mean at most
 //    overNoVisibilityLsb more than the exact reference without visibility has
 //    (the row exact:no-V): no unshadowed method can do better than that row,
@@ -65,7 +67,7 @@ std::string environmentApproximationUnsupported(const EnvironmentApproximation& 
 // run), which makes the budget stricter at fewer samples, never looser.
 struct EnvironmentBudget {
     double meanLsbWithoutVisibility;
-    double offFractionOverNoise;
+    double offFractionWithoutVisibility;
     double overNoVisibilityLsb;
 };
 const EnvironmentBudget& environmentBudget();
