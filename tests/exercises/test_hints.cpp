@@ -53,8 +53,8 @@ ProbeValue scaled(ProbeValue v, double k) { return {k * v[0], k * v[1], k * v[2]
 }  // namespace
 
 TEST(Hints, RightAnswersPassWithoutAHint) {
-    for (int exercise = 1; exercise <= 10; ++exercise)
-        for (const ProbeSpec& spec : probesForExercise(exercise)) {
+    for (const ExerciseInfo& e : allExercises())  // the optional 11 too
+        for (const ProbeSpec& spec : probesForExercise(e.number)) {
             ProbeOutcome o = evaluateProbe(spec, resultsOf(spec, spec.expected));
             EXPECT_EQ(o.summary.passed, o.summary.total) << spec.name << ": " << o.firstFailure;
             EXPECT_TRUE(o.hint.empty()) << spec.name << ": " << o.hint;
@@ -63,8 +63,8 @@ TEST(Hints, RightAnswersPassWithoutAHint) {
 
 TEST(Hints, EveryKnownMistakeIsRecognisedFromItsOwnNumbers) {
     int named = 0;
-    for (int exercise = 1; exercise <= 10; ++exercise)
-        for (const ProbeSpec& spec : probesForExercise(exercise))
+    for (const ExerciseInfo& e : allExercises())  // the optional 11 too
+        for (const ProbeSpec& spec : probesForExercise(e.number))
             for (const KnownMistake& m : spec.mistakes) {
                 ProbeOutcome o = evaluateProbe(spec, resultsOf(spec, m.compute));
                 ASSERT_LT(o.summary.passed, o.summary.total) << spec.name << ": '" << m.symptom << "' changes nothing";

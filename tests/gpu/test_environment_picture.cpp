@@ -2,6 +2,7 @@
 // scenes without an environment render the same bytes as before it existed;
 // with one, the picture follows the exact reference within the
 // approximation's bias, and intensity and rotation are values, not programs.
+#include "core/image.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -16,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -157,4 +159,37 @@ TEST(EnvironmentPicture, IntensityAndRotationAreValues) {
                                     (2.0 * std::abs(base.radiance.rgb[i]) + 1e-6));
     EXPECT_LT(worst, 1e-5);  // a float32 product per term: a few roundings
     EXPECT_GT(meanRelative(other.radiance, base.radiance), 0.01);
+}
+
+// Exercise 11 is optional: a student who has not started it (solutions/
+// with 11's shipped stub) gets the same bytes as before on a scene without
+// an environment (no stripes, the same program), and the stripes on an
+// environment scene, where the exercise shows.
+TEST(EnvironmentPicture, AnUnstartedOptionalExerciseShowsOnlyWhereItShows) {
+    const fs::path dir = test::freshTempDir("env-stub11");
+    for (const auto& f : fs::directory_iterator(solutionsDir())) fs::copy_file(f.path(), dir / f.path().filename());
+    fs::copy_file(sourceRoot() / "course/11-environment/stub.glsl", dir / "11-environment.glsl",
+                  fs::copy_options::overwrite_existing);
+    auto render = [&](const std::string& scene, const std::string& impl, const fs::path& png) {
+        test::CommandResult r = test::runRaylab("render " + test::shellQuoted((sourceRoot() / scene).string()) +
+                                                " --size 64x48 --impl " + test::shellQuoted(impl) + " -o " +
+                                                test::shellQuoted(png.string()));
+        ASSERT_EQ(r.status, 0) << r.output;
+    };
+    render("scenes/lecture.json", dir.string(), dir / "lecture.png");
+    EXPECT_EQ(test::readText(dir / "lecture.png"), test::readText(sourceRoot() / "tests/gpu/golden/lecture-64x48.png"));
+    render("scenes/environments/sky-spheres.json", dir.string(), dir / "stub.png");
+    render("scenes/environments/sky-spheres.json", solutionsDir().string(), dir / "done.png");
+    // The top rows are sky in both (the background does not need 11): they
+    // differ only by the stripes' blend (35% towards magenta or grey).
+    DisplayImage stub = readPng((dir / "stub.png").string()), done = readPng((dir / "done.png").string());
+    int striped = 0, frame = 0;
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < stub.width; ++x) {
+            ++frame;
+            int most = 0;
+            for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(int(stub.at(x, y)[c]) - int(done.at(x, y)[c])));
+            striped += most > 8;
+        }
+    EXPECT_GT(striped, frame / 2) << "no stripes in the frame of the environment picture with 11's stub";
 }
