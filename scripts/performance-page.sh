@@ -6,7 +6,12 @@
 # --markdown`) and the plot docs/images/bench-course.svg. Everything else on
 # the page is left as it is.
 #
-#   scripts/performance-page.sh [--size WxH] [--frames N] [--sweeps LIST] [--doc FILE]
+#   scripts/performance-page.sh [--size WxH] [--frames N] [--sweeps LIST] [--doc FILE] [--no-environment]
+#
+# Then, where the page has <!-- bench-environment:begin --> ... :end --> lines,
+# the environment sweep (issue 24) on the two environment scenes at 160x120
+# into that section and docs/images/bench-environment.svg (about six minutes
+# on 2 shared cores: the exact Monte Carlo references); --no-environment skips it.
 #
 # Defaults: 640x480, 9 timed frames, the `modes` sweep (both yardsticks and
 # raylab's four programs), docs/performance.md; the binary is the one
@@ -19,13 +24,15 @@ size=640x480
 frames=9
 sweeps=modes
 doc="$root/docs/performance.md"
+environment=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --size) size=$2; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
         --sweeps) sweeps=$2; shift 2 ;;
         --doc) doc=$2; shift 2 ;;
-        *) echo "performance-page.sh: unknown option $1 (expected --size, --frames, --sweeps, --doc)" >&2; exit 2 ;;
+        --no-environment) environment=0; shift ;;
+        *) echo "performance-page.sh: unknown option $1 (expected --size, --frames, --sweeps, --doc, --no-environment)" >&2; exit 2 ;;
     esac
 done
 raylab="$root/raylab"  # the wrapper: build/ or build-headless/, or RAYLAB_BIN
@@ -103,4 +110,11 @@ tmp = doc + ".tmp"
 open(tmp, "w").write(text[:a] + "\n".join(out) + "\n" + text[b:])
 os.replace(tmp, doc)
 EOF
+if [ "$environment" = 1 ] && grep -qx '<!-- bench-environment:begin -->' "$doc" && grep -qx '<!-- bench-environment:end -->' "$doc"; then
+    envplot="$(dirname "$doc")/images/bench-environment.svg"
+    "$raylab" bench scenes/environments/sky-spheres.json scenes/environments/studio-spheres.json --size 160x120 \
+        --sweeps environment --clock cpu --frames "$frames" --plot "$(rel "$envplot")" --markdown "$(rel "$doc")" \
+        2> >(tee "$root/build/bench-environment.log" >&2)
+    wait
+fi
 echo "$doc"

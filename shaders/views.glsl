@@ -18,6 +18,11 @@ const int VIEW_SHADOW = 7;    // 1 where the key light is visible, 0 in its shad
 const int VIEW_NORMALS = 8;   // n * 0.5 + 0.5
 const int VIEW_BOUNCE = 9;    // the contribution of bounce u_viewBounce alone
 const int VIEW_F_NOV = 10;    // F(n.v) = F_SchlickRoughness: the mirror bounce's weight (rgb), log display
+// Environment light's approximation (issue 24, environment.glsl); black without an environment:
+const int VIEW_ENV_IRRADIANCE = 11;   // E(n) / pi from the nine SH coefficients (through the display step)
+const int VIEW_ENV_PREFILTERED = 12;  // the prefiltered environment towards r at the roughness's level (display step)
+const int VIEW_ENV_SCALE = 13;        // the split-sum table's scale at (n.v, roughness)
+const int VIEW_ENV_BIAS = 14;         // the split-sum table's bias at (n.v, roughness)
 
 // The F views show log10(F) from 0.01 (black) to 1 (white): a dielectric's
 // 0.04 is 0.30 (visible on a projector), the grazing rim reaches 1. The
@@ -35,6 +40,23 @@ vec3 teachingView(vec3 origin, vec3 dir) {
     if (u_view == VIEW_NORMALS) return hit.n * 0.5 + 0.5;
     vec3 v = -dir;
     Material m = sphereMaterial(hit.sphere);
+    if (u_view >= VIEW_ENV_IRRADIANCE) {
+#ifdef RL_ENVIRONMENT
+        // The terms environmentHitLight() combines, each on its own: what a
+        // white Lambert surface reflects of the SH9 irradiance, the
+        // prefiltered radiance the specular lobe reads, and the table's
+        // scale and bias that weigh it (exercise 11's functions).
+        if (u_view == VIEW_ENV_IRRADIANCE) return u_envIntensity * shIrradiance(environmentLocal(hit.n)) / PI;
+        if (u_view == VIEW_ENV_PREFILTERED) {
+            vec3 r = environmentLocal(reflect(-v, hit.n));
+            return u_envIntensity * prefilteredRadiance(r, prefilteredLevel(m.roughness, u_envLevels));
+        }
+        vec2 scaleBias = splitSumLookup(clamp(dot(hit.n, v), 1e-4, 1.0), m.roughness);
+        return vec3(u_view == VIEW_ENV_SCALE ? scaleBias.x : scaleBias.y);
+#else
+        return vec3(0.0);  // no environment in this scene
+#endif
+    }
     if (u_view == VIEW_DIFFUSE || u_view == VIEW_SPECULAR) {
         vec3 sum = vec3(0.0);
         for (int i = 0; i < lightCount(); ++i) {
@@ -97,5 +119,6 @@ vec3 teachingView(vec3 origin, vec3 dir) {
 }
 
 bool viewIsRadiance() {
-    return u_view == VIEW_FINAL || u_view == VIEW_BOUNCE || u_view == VIEW_DIFFUSE || u_view == VIEW_SPECULAR;
+    return u_view == VIEW_FINAL || u_view == VIEW_BOUNCE || u_view == VIEW_DIFFUSE || u_view == VIEW_SPECULAR ||
+           u_view == VIEW_ENV_IRRADIANCE || u_view == VIEW_ENV_PREFILTERED;
 }

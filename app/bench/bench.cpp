@@ -29,7 +29,7 @@ namespace rl::bench {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& sweepNames() {
-    static const std::vector<std::string> names = {"modes", "layers", "bounces", "spp", "resolution", "models", "strategies"};
+    static const std::vector<std::string> names = {"modes", "layers", "bounces", "spp", "resolution", "models", "strategies", "environment"};
     return names;
 }
 
@@ -193,6 +193,17 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
                 v->skipReason = "strategy file " + std::string(st.path) + " not found";
         }
     }
+    if (wanted(options, "environment") && scene.environment) {
+        // The GL picture's approximations of environment light, one setting
+        // changed at a time (bench/environment_sweep.h), then the exact
+        // reference without visibility: what leaving V out costs them all.
+        for (const EnvironmentApproximation& a : environmentSweep()) {
+            Variant* v = add(environmentVariantName(a), "environment", true, scene);
+            v->environment = a;
+            v->skipReason = environmentApproximationUnsupported(a);
+        }
+        add("exact:no-V", "environment", false, scene)->exactWithoutVisibility = true;
+    }
     return out;
 }
 
@@ -230,7 +241,8 @@ Measurement describe(const Variant& v) {
     Measurement m;
     m.variant = v.name;
     m.sweep = v.sweep;
-    m.mode = v.textbook ? "textbook" : v.expert ? "expert" : v.exerciseApi ? "specialised-api" : modeName(v.specialised, v.picture);
+    m.mode = v.textbook ? "textbook" : v.expert ? "expert" : v.exactWithoutVisibility ? "reference"
+           : v.exerciseApi ? "specialised-api" : modeName(v.specialised, v.picture);
     m.width = v.scene.render.width;
     m.height = v.scene.render.height;
     m.spp = v.scene.render.spp;
@@ -262,8 +274,8 @@ GlRenderer& rendererFor(std::map<std::pair<int, int>, std::unique_ptr<GlRenderer
 // frames run in rounds, one frame of each variant per round, so that a
 // change in the machine's load during the run touches every variant alike.
 std::vector<Measurement> measureScene(const std::string& sceneName, const std::vector<Variant>& variants,
-                                      const Rendering& reference, const Options& o, const fs::path& implDir,
-                                      Clock clock, std::ostream& log) {
+                                      const Rendering& reference, const ExactReferences* exact, const Options& o,
+                                      const fs::path& implDir, Clock clock, std::ostream& log) {
     std::vector<Measurement> out;
     std::vector<PictureProgram> programs(variants.size());
     std::map<std::pair<int, int>, std::unique_ptr<GlRenderer>> renderers;
@@ -273,6 +285,26 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
         m.scene = sceneName;
         m.skipped = true;
         m.note = v.skipReason;
+        if (exact && (v.environment || v.exactWithoutVisibility)) {
+            m.referenceSamples = exact->samples;
+            m.referenceNoiseLsb = exact->noiseMeanLsb;
+            m.referenceNoiseOffFraction = exact->noiseOffFraction;
+        }
+        if (v.exactWithoutVisibility) {
+            // No GL frame: the reference without V against the one with V,
+            // timed by its own wall clock (a CPU render: kept off the front).
+            m.width = exact->withoutVisibility.display.width;
+            m.height = exact->withoutVisibility.display.height;
+            m.error = compareRenderings(exact->withoutVisibility, exact->withVisibility);
+            m.errorWithoutVisibility = compareRenderings(exact->withoutVisibility, exact->withoutVisibility);
+            m.msMedian = m.msMin = m.msMax = exact->msWithoutVisibility;
+            m.frames = 1;
+            m.clock = "cpu-reference";
+            m.skipped = false;
+            m.note = "the CPU reference itself, wall clock, not a GL frame";
+            out.push_back(m);
+            continue;
+        }
         if (v.skipReason.empty()) {
             try {
                 auto start = std::chrono::steady_clock::now();
@@ -300,7 +332,11 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 }
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
-                renderer.setScene(v.scene);
+                const auto tables = std::chrono::steady_clock::now();
+                // An environment's tables are computed here, once per image and settings (cached after).
+                renderer.setScene(v.scene, environmentSettings(v.environment.value_or(EnvironmentApproximation{})));
+                gl::Finish();
+                if (v.environment) m.tablesMs = msSince(tables);
                 FrameSettings frame = frameFromScene(v.scene);
                 const auto firstDraw = std::chrono::steady_clock::now();
                 renderer.draw(programs[i], frame);  // llvmpipe compiles here
@@ -309,9 +345,15 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 for (int k = 1; k < o.warmup; ++k) renderer.draw(programs[i], frame);
                 gl::Finish();
                 Rendering got = renderer.readBack();
-                if (got.display.width != reference.display.width || got.display.height != reference.display.height)
-                    got = resampleNearest(got, reference.display.width, reference.display.height);
-                m.error = compareRenderings(got, reference);
+                const Rendering& expected = v.environment && exact ? exact->withVisibility : reference;
+                if (got.display.width != expected.display.width || got.display.height != expected.display.height)
+                    got = resampleNearest(got, expected.display.width, expected.display.height);
+                if (v.environment && exact) {
+                    m.error = compareRenderings(got, exact->withVisibility);
+                    m.errorWithoutVisibility = compareRenderings(got, exact->withoutVisibility);
+                } else {
+                    m.error = compareRenderings(got, reference);
+                }
                 m.skipped = false;
                 m.clock = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
                 m.note.clear();
@@ -326,9 +368,11 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
     std::vector<std::vector<double>> times(variants.size());
     for (int round = 0; round < o.frames; ++round) {
         for (std::size_t i = 0; i < variants.size(); ++i) {
-            if (out[i].skipped) continue;
+            if (out[i].skipped || variants[i].exactWithoutVisibility) continue;
             GlRenderer& renderer = rendererFor(renderers, variants[i].scene);
-            renderer.setScene(variants[i].scene);
+            // (a new approximation's textures are uploaded here, before the clock starts)
+            renderer.setScene(variants[i].scene,
+                              environmentSettings(variants[i].environment.value_or(EnvironmentApproximation{})));
             FrameSettings frame = frameFromScene(variants[i].scene);
             if (clock == Clock::Gpu) {
                 times[i].push_back(renderer.drawTimed(programs[i], frame));
@@ -349,7 +393,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
     }
     for (std::size_t i = 0; i < variants.size(); ++i) {
         Measurement& m = out[i];
-        if (!m.skipped) {
+        if (!m.skipped && !variants[i].exactWithoutVisibility) {
             m.frames = int(times[i].size());
             m.msMedian = median(times[i]);
             m.msMin = *std::min_element(times[i].begin(), times[i].end());
@@ -379,7 +423,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
                     std::to_string(options.referenceSpp));
     for (const std::string& s : options.sweeps)
         if (std::find(sweepNames().begin(), sweepNames().end(), s) == sweepNames().end())
-            throw Error("--sweeps: unknown group " + quotedValue(s) + " (expected modes, layers, bounces, spp, resolution, models, strategies)");
+            throw Error("--sweeps: unknown group " + quotedValue(s) + " (expected modes, layers, bounces, spp, resolution, models, strategies, environment)");
 
     std::vector<std::string> files = options.scenes;
     if (files.empty()) files.push_back((scenesDir() / "lecture.json").string());
@@ -408,14 +452,31 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
     for (std::size_t i = 0; i < scenes.size(); ++i) {
         const Scene& scene = scenes[i];
         std::string name = sceneName(files[i]);
-        Scene converged = scene;
-        converged.render.spp = options.referenceSpp;
-        auto start = std::chrono::steady_clock::now();
-        Rendering reference = ref::renderCpu(converged);
-        log << "bench: " << name << ": CPU reference " << scene.render.width << "x" << scene.render.height << " at "
-            << options.referenceSpp << " spp in " << int(msSince(start)) << " ms\n";
-        std::vector<Measurement> rows =
-            measureScene(name, makeVariants(scene, options), reference, options, implDir, clock, log);
+        const std::vector<Variant> variants = makeVariants(scene, options);
+        const bool environmentRows = std::any_of(variants.begin(), variants.end(), [](const Variant& v) {
+            return v.environment || v.exactWithoutVisibility;
+        });
+        const bool otherRows = std::any_of(variants.begin(), variants.end(), [](const Variant& v) {
+            return !v.environment && !v.exactWithoutVisibility;
+        });
+        // The converged reference of every other sweep; the environment
+        // sweep's exact references, computed once per scene and run.
+        Rendering reference;
+        if (otherRows) {
+            Scene converged = scene;
+            converged.render.spp = options.referenceSpp;
+            auto start = std::chrono::steady_clock::now();
+            reference = ref::renderCpu(converged);
+            log << "bench: " << name << ": CPU reference " << scene.render.width << "x" << scene.render.height
+                << " at " << options.referenceSpp << " spp in " << int(msSince(start)) << " ms\n";
+        }
+        std::optional<ExactReferences> exact;
+        if (environmentRows) {
+            log << "bench: " << name << ": ";
+            exact = exactReferences(scene, options.environmentSamples, log);
+        }
+        std::vector<Measurement> rows = measureScene(name, variants, reference, exact ? &*exact : nullptr, options,
+                                                     implDir, clock, log);
         out.insert(out.end(), rows.begin(), rows.end());
     }
     markParetoFronts(out);
@@ -430,7 +491,8 @@ void markParetoFronts(std::vector<Measurement>& measurements) {
         std::vector<std::size_t> rows;
         std::vector<ParetoPoint> points;
         for (std::size_t i = 0; i < measurements.size(); ++i) {
-            if (measurements[i].scene != scene || measurements[i].skipped) continue;
+            if (measurements[i].scene != scene || measurements[i].skipped || measurements[i].mode == "reference")
+                continue;
             rows.push_back(i);
             points.push_back({measurements[i].msMedian, measurements[i].error.meanLsb});
         }
@@ -592,21 +654,28 @@ std::string formatComparisons(const std::vector<Measurement>& measurements) {
 std::string toCsv(const std::vector<Measurement>& measurements) {
     std::ostringstream s;
     s << "scene,variant,sweep,mode,width,height,spp,max_bounces,frames,ms_median,ms_min,ms_max,clock,compile_ms,"
-         "first_draw_ms,err_mean_lsb,err_p99_lsb,err_max_lsb,off_frac,relmse,psnr,non_finite,pareto,skipped,note\n";
+         "first_draw_ms,err_mean_lsb,err_p99_lsb,err_max_lsb,off_frac,relmse,psnr,non_finite,pareto,skipped,note,"
+         "err_mean_lsb_no_v,off_frac_no_v,reference_samples,reference_noise_lsb,reference_noise_off_frac,tables_ms\n";
     for (const Measurement& m : measurements) {
         std::string note = m.note;
         std::replace(note.begin(), note.end(), '"', '\'');
         s << m.scene << "," << m.variant << "," << m.sweep << "," << m.mode << "," << m.width << "," << m.height << ","
           << m.spp << "," << m.maxBounces << "," << m.frames << ",";
         if (m.skipped) {
-            s << ",,,,,,,,,,,,,0,1,\"" << note << "\"\n";
+            s << ",,,,,,,,,,,,,0,1,\"" << note << "\",,,,,,\n";
             continue;
         }
         s << fixed(m.msMedian, 3) << "," << fixed(m.msMin, 3) << "," << fixed(m.msMax, 3) << "," << m.clock << ","
           << fixed(m.compileMs, 1) << "," << fixed(m.firstDrawMs, 1) << "," << general(m.error.meanLsb) << "," << general(m.error.p99Lsb) << ","
           << m.error.maxLsb << "," << general(m.error.offFraction) << "," << general(m.error.relMse) << ","
           << general(m.error.psnr) << "," << m.error.nonFinite << "," << (m.onFront ? 1 : 0) << ",0,\"" << note
-          << "\"\n";
+          << "\",";
+        if (m.referenceSamples > 0)
+            s << general(m.errorWithoutVisibility.meanLsb) << "," << general(m.errorWithoutVisibility.offFraction) << ","
+              << m.referenceSamples << "," << general(m.referenceNoiseLsb) << ","
+              << general(m.referenceNoiseOffFraction) << "," << fixed(m.tablesMs, 1) << "\n";
+        else
+            s << ",,,,,\n";
     }
     return s.str();
 }
@@ -628,14 +697,18 @@ std::string loadAverage() {
     }
 }
 
+std::string markdownSectionName(const std::set<std::string>& sweeps) {
+    return sweeps.size() == 1 && sweeps.count("environment") ? "bench-environment" : "bench";
+}
+
 namespace {
-const char* const kBegin = "<!-- bench:begin -->";
-const char* const kEnd = "<!-- bench:end -->";
+std::string beginMarker(const std::string& section) { return "<!-- " + section + ":begin -->"; }
+std::string endMarker(const std::string& section) { return "<!-- " + section + ":end -->"; }
 
 // Where the section lies: each marker alone on its line (a document may
 // quote the markers in its text), the begin before the end. {npos, npos}
 // when there is none.
-std::pair<std::size_t, std::size_t> markedSection(const std::string& text) {
+std::pair<std::size_t, std::size_t> markedSection(const std::string& text, const std::string& section) {
     auto onItsOwnLine = [&](const std::string& marker, std::size_t from) {
         for (std::size_t at = text.find(marker, from); at != std::string::npos; at = text.find(marker, at + 1)) {
             bool starts = at == 0 || text[at - 1] == '\n';
@@ -645,9 +718,9 @@ std::pair<std::size_t, std::size_t> markedSection(const std::string& text) {
         }
         return std::string::npos;
     };
-    std::size_t begin = onItsOwnLine(kBegin, 0);
+    std::size_t begin = onItsOwnLine(beginMarker(section), 0);
     if (begin == std::string::npos) return {std::string::npos, std::string::npos};
-    std::size_t end = onItsOwnLine(kEnd, begin);
+    std::size_t end = onItsOwnLine(endMarker(section), begin);
     if (end == std::string::npos) return {std::string::npos, std::string::npos};
     return {begin, end};
 }
@@ -656,7 +729,7 @@ std::pair<std::size_t, std::size_t> markedSection(const std::string& text) {
 std::string markdownSection(const MarkdownRun& run, const std::vector<Measurement>& measurements,
                             const fs::path& markdownFile) {
     std::ostringstream s;
-    s << kBegin << "\n<!-- written by `raylab bench --markdown`: run the command below again, do not edit -->\n\n";
+    s << beginMarker(run.section) << "\n<!-- written by `raylab bench --markdown`: run the command below again, do not edit -->\n\n";
     s << "```sh\n" << run.command << "\n```\n\n";
     s << "Context: " << run.context;
     if (!run.load.empty()) s << "; load average before the run " << run.load << " (1, 5, 15 minutes)";
@@ -666,28 +739,33 @@ std::string markdownSection(const MarkdownRun& run, const std::vector<Measuremen
         std::string link = fs::absolute(run.plot).lexically_normal().lexically_relative(base).generic_string();
         s << "![Error against time per frame](" << link << ")\n\n";
     }
-    s << "```text\n" << formatTable(measurements) << "\n" << formatComparisons(measurements) << "```\n" << kEnd;
+    const std::string environment = formatEnvironmentTable(measurements);
+    if (run.section == "bench-environment")  // the environment sweep alone: its own table says it all
+        s << "```text\n" << environment << "```\n" << endMarker(run.section);
+    else
+        s << "```text\n" << formatTable(measurements) << "\n" << formatComparisons(measurements)
+          << (environment.empty() ? "" : "\n" + environment) << "```\n" << endMarker(run.section);
     return s.str();
 }
 
-void checkMarkdownTarget(const fs::path& file) {
+void checkMarkdownTarget(const fs::path& file, const std::string& section) {
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(file, ec))) return;  // a new file
     std::string text = readRegularFile(file, 16 << 20, "Markdown file");
-    if (markedSection(text).first == std::string::npos)
-        throw Error("--markdown: " + file.string() + " exists and has no " + kBegin + " ... " + kEnd +
-                    " section (each marker on a line of its own) to replace (not changed)");
+    if (markedSection(text, section).first == std::string::npos)
+        throw Error("--markdown: " + file.string() + " exists and has no " + beginMarker(section) + " ... " +
+                    endMarker(section) + " section (each marker on a line of its own) to replace (not changed)");
 }
 
 void writeMarkdown(const fs::path& file, const MarkdownRun& run, const std::vector<Measurement>& measurements) {
-    checkMarkdownTarget(file);
+    checkMarkdownTarget(file, run.section);
     std::string section = markdownSection(run, measurements, file);
     std::error_code ec;
     if (fs::is_regular_file(file, ec)) {
         std::string text = readRegularFile(file, 16 << 20, "Markdown file");
-        auto [begin, end] = markedSection(text);
+        auto [begin, end] = markedSection(text, run.section);
         if (begin != std::string::npos) {
-            writeFileAtomic(file, text.substr(0, begin) + section + text.substr(end + std::string(kEnd).size()));
+            writeFileAtomic(file, text.substr(0, begin) + section + text.substr(end + endMarker(run.section).size()));
             return;
         }
     }

@@ -8,6 +8,7 @@
 // docs/performance.md, "Speed against error (raylab bench)", shows a run.
 #pragma once
 
+#include "bench/environment_sweep.h"
 #include "core/image.h"
 #include "core/scene.h"
 #include "shader/shader_library.h"
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -39,6 +41,12 @@ struct Variant {
     // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
     std::map<std::string, std::filesystem::path> overrides;
     std::string skipReason;  // non-empty: not measured, reported with this note
+    // The "environment" sweep (bench/environment_sweep.h): how the GL picture
+    // approximates environment light, compared with the exact references.
+    std::optional<EnvironmentApproximation> environment;
+    // The row "exact:no-V": no GL program, the exact reference without
+    // visibility itself, compared with the one with visibility.
+    bool exactWithoutVisibility = false;
 };
 
 struct Measurement {
@@ -58,6 +66,16 @@ struct Measurement {
     bool onFront = false;    // on the Pareto front of (msMedian, error.meanLsb) within its scene
     bool skipped = false;
     std::string note;        // why it was skipped, or how it was timed
+    // Rows of the "environment" sweep: `error` is against the exact reference
+    // WITH visibility, this one against the exact reference without it; the
+    // samples of those references and their noise (environment_sweep.h).
+    ImageDiff errorWithoutVisibility;
+    int referenceSamples = 0;
+    double referenceNoiseLsb = 0, referenceNoiseOffFraction = 0;
+    // Computing the approximation's tables on the host (prefiltered chain,
+    // split-sum table, SH9), wall clock, once per image and settings: what a
+    // larger setting costs, since every row costs the same per frame.
+    double tablesMs = 0;
 };
 
 // How a frame is timed: GL_TIME_ELAPSED queries; the wall clock around
@@ -73,7 +91,10 @@ struct Options {
     int warmup = 2;                   // untimed frames first (llvmpipe compiles on the first draw)
     int frames = 5;                   // timed frames; the median is reported
     int referenceSpp = 16;            // samples per pixel of the converged CPU reference
-    // Which groups to run: modes, layers, bounces, spp, resolution, models, strategies (empty: all).
+    // Samples per strategy per hit of the environment sweep's exact references.
+    int environmentSamples = kExactReferenceSamples;
+    // Which groups to run: modes, layers, bounces, spp, resolution, models, strategies, environment (empty: all).
+    // environment: only on scenes that have one.
     std::set<std::string> sweeps;
     std::string backend = "auto";
     Clock clock = Clock::Auto;        // Auto: Wall on llvmpipe and other software rasterisers, else Gpu
@@ -150,12 +171,18 @@ struct MarkdownRun {
     std::string context;   // the GL context's description
     std::string load;      // the load average before the run ("" when unknown)
     std::string plot;      // the SVG written by --plot ("" for none)
+    // The markers' name: "bench" (<!-- bench:begin -->), or "bench-environment"
+    // for a run of the environment sweep alone (markdownSectionName()), so that
+    // docs/performance.md keeps both tables.
+    std::string section = "bench";
 };
+// "bench-environment" when `sweeps` is the environment sweep alone, else "bench".
+std::string markdownSectionName(const std::set<std::string>& sweeps);
 std::string markdownSection(const MarkdownRun& run, const std::vector<Measurement>& measurements,
                             const std::filesystem::path& markdownFile);
 void writeMarkdown(const std::filesystem::path& file, const MarkdownRun& run,
                    const std::vector<Measurement>& measurements);
-void checkMarkdownTarget(const std::filesystem::path& file);  // the refusal above, before a run
+void checkMarkdownTarget(const std::filesystem::path& file, const std::string& section = "bench");  // the refusal above, before a run
 std::string loadAverage();  // the three figures of /proc/loadavg, "" where there is none
 
 // Error against time, one panel per scene, the Pareto front marked (svg_plot.cpp).

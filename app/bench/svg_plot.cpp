@@ -21,7 +21,8 @@ constexpr double kMinError = 1e-3;  // errors below this (identical pictures) ar
 const std::map<std::string, const char*>& sweepColours() {
     static const std::map<std::string, const char*> colours = {
         {"modes", "#d62728"},      {"bounces", "#1f77b4"}, {"spp", "#2ca02c"},
-        {"resolution", "#9467bd"}, {"models", "#ff7f0e"},  {"strategies", "#8c564b"}};
+        {"resolution", "#9467bd"}, {"models", "#ff7f0e"},  {"strategies", "#8c564b"},
+        {"environment", "#17becf"}};
     return colours;
 }
 
@@ -215,7 +216,7 @@ std::string errorTimeSvg(const std::vector<Measurement>& measurements) {
     std::vector<std::string> scenes;
     std::map<std::string, std::vector<const Measurement*>> byScene;
     for (const Measurement& m : measurements) {
-        if (m.skipped) continue;
+        if (m.skipped || m.mode == "reference") continue;  // a CPU reference row has no GL frame time
         if (!byScene.count(m.scene)) scenes.push_back(m.scene);
         byScene[m.scene].push_back(&m);
     }

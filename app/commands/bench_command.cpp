@@ -27,6 +27,7 @@ struct BenchCommandOptions {
     int warmup = 2;
     int frames = 5;
     int referenceSpp = 16;
+    int environmentSamples = bench::kExactReferenceSamples;
     std::string sweeps;
     std::string backend = "auto";
     std::string clock = "auto";
@@ -58,6 +59,7 @@ std::string commandLine(const BenchCommandOptions& o) {
     option("--warmup", std::to_string(o.warmup), std::to_string(defaults.warmup));
     option("--frames", std::to_string(o.frames), std::to_string(defaults.frames));
     option("--reference-spp", std::to_string(o.referenceSpp), std::to_string(defaults.referenceSpp));
+    option("--environment-samples", std::to_string(o.environmentSamples), std::to_string(defaults.environmentSamples));
     option("--backend", o.backend, defaults.backend);
     option("--impl", o.impl, defaults.impl);
     option("--csv", o.csv, defaults.csv);
@@ -71,7 +73,8 @@ void runBenchCommand(const BenchCommandOptions& o) {
     if (!o.plot.empty()) requireOutputPath(o.plot);
     if (!o.markdown.empty()) {
         requireOutputPath(o.markdown);
-        bench::checkMarkdownTarget(o.markdown);  // minutes of measuring must not end in a refusal
+        // minutes of measuring must not end in a refusal
+        bench::checkMarkdownTarget(o.markdown, bench::markdownSectionName(splitList(o.sweeps)));
     }
     bench::Options options;
     options.scenes = o.scenes;
@@ -81,6 +84,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
     options.warmup = o.warmup;
     options.frames = o.frames;
     options.referenceSpp = o.referenceSpp;
+    options.environmentSamples = o.environmentSamples;
     options.sweeps = splitList(o.sweeps);
     options.backend = o.backend;
     options.implDir = o.impl;
@@ -96,7 +100,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
     for (const std::string& group : options.sweeps)  // before minutes of the view sweep
         if (std::find(bench::sweepNames().begin(), bench::sweepNames().end(), group) == bench::sweepNames().end())
             throw Error("--sweeps: unknown group " + quotedValue(group) +
-                        " (expected modes, layers, bounces, spp, resolution, models, strategies or view)");
+                        " (expected modes, layers, bounces, spp, resolution, models, strategies, environment or view)");
     if (viewSweep) {
         bench::Options view = options;
         if (!o.sizeGiven) {
@@ -110,6 +114,8 @@ void runBenchCommand(const BenchCommandOptions& o) {
     std::string load = bench::loadAverage();  // before the run: what the machine was doing besides
     std::vector<bench::Measurement> results = bench::runBench(options, std::cerr, &context);
     std::cout << bench::formatTable(results) << "\n" << bench::formatComparisons(results);
+    const std::string environment = bench::formatEnvironmentTable(results);
+    if (!environment.empty()) std::cout << "\n" << environment;
     if (!o.csv.empty()) {
         bench::writeTextFile(o.csv, bench::toCsv(results));
         std::cout << std::filesystem::absolute(o.csv).lexically_normal().string() << "\n";
@@ -119,7 +125,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
         std::cout << std::filesystem::absolute(o.plot).lexically_normal().string() << "\n";
     }
     if (!o.markdown.empty()) {
-        bench::MarkdownRun run{commandLine(o), context, load, o.plot};
+        bench::MarkdownRun run{commandLine(o), context, load, o.plot, bench::markdownSectionName(options.sweeps)};
         bench::writeMarkdown(o.markdown, run, results);
         std::cout << std::filesystem::absolute(o.markdown).lexically_normal().string() << "\n";
     }
@@ -151,8 +157,14 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--reference-spp", options->referenceSpp, "Samples per pixel of the converged CPU reference")
         ->capture_default_str()
         ->check(squareNumberIn(1, 1024));
+    cmd->add_option("--environment-samples", options->environmentSamples,
+                    "Samples per strategy per hit of the environment sweep's exact references (fixed seeds)")
+        ->capture_default_str()
+        ->check(wholeNumberIn(1, 65536));
     cmd->add_option("--sweeps", options->sweeps,
-                    "Comma-separated groups to run: modes, layers, bounces, spp, resolution, models, strategies (default: all); "
+                    "Comma-separated groups to run: modes, layers, bounces, spp, resolution, models, strategies, environment "
+                    "(default: all; environment: scenes with an environment only, with its own --markdown section "
+                    "<!-- bench-environment:begin --> when run alone); "
                     "view: the live view's programs against the generic one (1280x720 unless --size)");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--clock", options->clock,

@@ -147,7 +147,9 @@ void SceneUniformBlock::bind(const ShaderProgram& program) const {
 }
 
 namespace {
-const char* const kViewNames[] = {"final", "d", "g", "f", "diffuse", "specular", "ndotl", "shadow", "normals", "bounce", "fnv"};
+const char* const kViewNames[] = {"final",  "d",          "g",           "f",         "diffuse",
+                                  "specular", "ndotl",    "shadow",      "normals",   "bounce",
+                                  "fnv",    "irradiance", "prefiltered", "env-scale", "env-bias"};
 }
 
 View parseView(const std::string& name, int& bounce) {
@@ -160,7 +162,8 @@ View parseView(const std::string& name, int& bounce) {
         return View::Bounce;
     }
     throw Error("--view: unknown view " + quotedValue(name) +
-                " (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals or bounceK, e.g. bounce1)");
+                " (expected final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, irradiance, prefiltered, "
+                "env-scale, env-bias or bounceK, e.g. bounce1)");
 }
 
 bool isPictureView(View view) { return view == View::Final || view == View::Bounce; }

@@ -55,7 +55,11 @@ private:
 
 // Teaching views of shaders/views.glsl; VIEW_FINAL is the picture.
 // FresnelNoV ("fnv") is F(n.v), the mirror bounce's weight, beside F (F(v.h)).
-enum class View { Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce, FresnelNoV };
+enum class View {
+    Final = 0, D, G, F, Diffuse, Specular, NdotL, Shadow, Normals, Bounce, FresnelNoV,
+    // environment light's terms (issue 24, shaders/views.glsl): black in a scene without an environment
+    EnvIrradiance, EnvPrefiltered, EnvScale, EnvBias
+};
 View parseView(const std::string& name, int& bounce);  // "final", "d", ..., "bounce2", "fnv"; throws rl::Error
 std::string viewName(View view, int bounce = 0);
 // True for the views a picture program draws (final, bounce K); the term views need every view compiled in.

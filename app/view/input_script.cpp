@@ -98,8 +98,10 @@ std::vector<ScriptCommand> parseScriptText(const std::string& text, const std::s
         } else if (verb == "slide") {
             c.kind = K::Slide;
             c.text = r.word();
-            if (c.text != "roughness" && c.text != "metallic" && c.text != "exposure")
-                r.fail("slide takes roughness, metallic or exposure, not " + quotedValue(c.text));
+            if (c.text != "roughness" && c.text != "metallic" && c.text != "exposure" && c.text != "env-intensity" &&
+                c.text != "env-rotation")
+                r.fail("slide takes roughness, metallic, exposure, env-intensity or env-rotation, not " +
+                       quotedValue(c.text));
             c.startValue = r.number("a start value");
             c.value = r.number("an end value");
             c.count = kDefaultDragSteps;

@@ -22,7 +22,8 @@
 //   slide roughness 0.1 0.9 [STEPS]
 //                               drag a panel slider from 0.1 to 0.9 over STEPS frames
 //                               (default 4), as a hand on the slider does: roughness,
-//                               metallic (of spheres[0]) or exposure
+//                               metallic (of spheres[0]), exposure, env-intensity or
+//                               env-rotation (degrees; a scene with an environment)
 //   resize 320 240              set the window size (screen coordinates)
 //   screenshot out.png [ui]     write the picture (or, with `ui`, the whole window)
 //   layout out.json             write the rectangles of this frame's widgets and of the

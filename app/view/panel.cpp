@@ -23,6 +23,13 @@ namespace {
 constexpr float kMinGamma = 1.0f;         // 1 = no encoding ("gamma off"); below 1 would darken, not a display gamma
 constexpr float kMaxGamma = 3.0f;         // beyond any real display's 2.2-2.6
 constexpr float kMaxIntensity = 1000.0f;  // W-like units: the lecture scene's key light is 40
+// The environment's sliders (issue 24): uniforms of the picture (u_envIntensity,
+// u_envRotation), never a recompile. Intensity on a logarithmic slider from
+// 1/100 to 100 times the file's 1 (a studio at night to a sunny noon);
+// rotation in degrees about +y, a whole turn either way of the file's.
+constexpr float kPanelMinEnvIntensity = 0.01f;
+constexpr float kPanelMaxEnvIntensity = 100.0f;
+constexpr float kPanelMaxEnvRotation = 180.0f;
 constexpr int kSppChoices[] = {1, 4, 9, 16};  // square numbers, as the spec requires
 constexpr float kMaxPanelFraction = 0.45f;    // of the window's width: the picture keeps the larger part
 
@@ -276,6 +283,19 @@ void lightsSection(Scene& scene, ViewRequests& out) {
     }
 }
 
+// Environment light (docs/model.md): its intensity and its rotation about +y,
+// values the program reads as uniforms: dragging them never recompiles.
+void environmentSection(Scene& scene, ViewRequests& out) {
+    if (!scene.environment) return;
+    if (!ImGui::CollapsingHeader("Environment (sky light)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    Environment& e = *scene.environment;
+    ImGui::TextDisabled("%s", e.file.c_str());
+    out.sceneEdited |= editDouble("env intensity", e.intensity, kPanelMinEnvIntensity, kPanelMaxEnvIntensity,
+                                  "%.3f", ImGuiSliderFlags_Logarithmic);
+    out.sceneEdited |= editDouble("env rotation", e.rotationDegrees, -kPanelMaxEnvRotation,
+                                  kPanelMaxEnvRotation, "%.1f deg");
+}
+
 void presetsSection(Scene& scene, const Scene& fromFile, const PanelInfo& info, ViewRequests& out) {
     if (!ImGui::CollapsingHeader("Presets (course figures)")) return;
     const char* group = "";
@@ -456,6 +476,7 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         materialsSection(scene, state, out);
         state.revealPicked = false;
         lightsSection(scene, out);
+        environmentSection(scene, out);
         presetsSection(scene, fromFile, info, out);
         sceneSection(state, info, out);
         interfaceSection(info, out);

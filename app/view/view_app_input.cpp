@@ -439,6 +439,10 @@ void ViewApp::scriptSlide(const std::string& value, double to) {
     // handleRequests does with a panel edit.
     Scene& scene = scene_.scene();
     if (value == "exposure") scene.render.exposure = std::clamp(to, kMinExposure, kMaxExposure);
+    if (scene.environment) {  // the Environment section's sliders (uniforms: no recompile)
+        if (value == "env-intensity") scene.environment->intensity = std::clamp(to, 0.0, kMaxEnvironmentIntensity);
+        if (value == "env-rotation") scene.environment->rotationDegrees = to;
+    }
     if (!scene.spheres.empty()) {  // the first sphere's slider in the panel's Materials
         Material& m = scene.spheres[0].material;
         if (value == "roughness") m.roughness = std::clamp(to, 0.0, 1.0);

@@ -101,7 +101,9 @@ double scalePosition(View view, double value, const RenderSettings& render) {
         case View::Final:
         case View::Bounce:
         case View::Diffuse:
-        case View::Specular: return ref::displayEncode(glm::dvec3(value), render).x;
+        case View::Specular:
+        case View::EnvIrradiance:
+        case View::EnvPrefiltered: return ref::displayEncode(glm::dvec3(value), render).x;
         default: return std::clamp(value, 0.0, 1.0);
     }
 }
@@ -182,7 +184,29 @@ ViewCaption viewCaption(View view, int bounce, const Scene& scene, const Shading
             if (bounce == 0) c.formula = "L_0 = L_direct(primary hit): the lights and ambient, no reflection";
             c.scale = radianceScale(view, r);
             break;
+        case View::EnvIrradiance:
+            c.title = "E  environment irradiance E(n) / pi";
+            c.model = "SH9: nine coefficients of the map, computed on the host in double (exercise 11)";
+            c.formula = "E(n) = sum_k A_l(k) L_k Y_k(n),  A = pi, 2 pi / 3, pi / 4;  shown: what a white Lambert surface reflects";
+            c.scale = radianceScale(view, r);
+            break;
+        case View::EnvPrefiltered:
+            c.title = "L  prefiltered environment towards r = reflect(-v, n)";
+            c.model = "GGX-prefiltered levels (n = v = r), the level from the roughness (exercise 11)";
+            c.formula = "L_pre(r, level = roughness (levels - 1)): the first factor of the split sum";
+            c.scale = radianceScale(view, r);
+            break;
+        case View::EnvScale:
+        case View::EnvBias:
+            c.title = view == View::EnvScale ? "Y  split-sum scale at (n.v, roughness)" : "U  split-sum bias at (n.v, roughness)";
+            c.model = "the table of the reference's specular lobe (GGX, Schlick-GGX G), in double";
+            c.formula = "specular = L_pre (F0 scale + bias);  scale + bias = the lobe's albedo for F0 = 1";
+            c.scale = linearScale();
+            break;
     }
+    if (!scene.environment && (view == View::EnvIrradiance || view == View::EnvPrefiltered || view == View::EnvScale ||
+                               view == View::EnvBias))
+        c.title += "  (this scene has no environment: black)";
     return c;
 }
 

@@ -4,6 +4,7 @@
 #include "bench/bench.h"
 #include "bench/pareto.h"
 #include "core/paths.h"
+#include "core/scene_io.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -218,7 +220,8 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
     std::vector<Variant> all = makeVariants(scene, options);
     std::map<std::string, int> perSweep;
     for (const Variant& v : all) ++perSweep[v.sweep];
-    for (const std::string& sweep : sweepNames()) EXPECT_GT(perSweep[sweep], 0) << sweep;
+    for (const std::string& sweep : sweepNames())  // environment: scenes with an environment only
+        EXPECT_EQ(perSweep[sweep] > 0, sweep != "environment") << sweep;
     // The two yardsticks, raylab's four modes and, the course's files being
     // used, the exercise API's picture program beside the generated one.
     EXPECT_EQ(perSweep["modes"], 7);
@@ -246,6 +249,25 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
 
     options.sweeps = {"spp"};
     for (const Variant& v : makeVariants(scene, options)) EXPECT_EQ(v.sweep, "spp");
+
+    // The environment sweep on a scene with one: each setting once, the
+    // default first, the exact reference without visibility last.
+    const Scene sky = loadSceneFile((scenesDir() / "environments" / "sky-spheres.json").string()).scene;
+    options.sweeps = {"environment"};
+    const std::vector<Variant> environment = makeVariants(sky, options);
+    ASSERT_EQ(environment.size(), environmentSweep().size() + 1);
+    EXPECT_EQ(environment.front().name, "env:default");
+    EXPECT_TRUE(environment.back().exactWithoutVisibility);
+    std::set<std::string> names;
+    for (const Variant& v : environment) {
+        EXPECT_TRUE(names.insert(v.name).second) << v.name << " twice";
+        if (v.exactWithoutVisibility) continue;
+        ASSERT_TRUE(v.environment.has_value()) << v.name;
+        if (v.environment->irradianceMap == 0) EXPECT_EQ(v.skipReason, "") << v.name;
+    }
+    EXPECT_EQ(environmentSettings(*find_if(environment.begin(), environment.end(), [](const Variant& v) {
+                  return v.name == "env:levels=8";
+              })->environment).levels, 8);
 }
 
 // ---- the command end to end ---------------------------------------------------------------------

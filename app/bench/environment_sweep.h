@@ -1,0 +1,108 @@
+// The bench's "environment" sweep (issue 24): speed against error of the GL
+// picture's approximations of environment light (docs/model.md,
+// "Environment light") on scenes that have an environment. Each row changes
+// ONE setting of the default approximation (irradiance from nine SH
+// coefficients or from an N x N/2 irradiance map; the prefiltered
+// environment's level count and sample count; the split-sum table's size),
+// is timed with the bench's clock and compared with the EXACT reference:
+// the CPU reference's Monte Carlo integral of environment light (fixed seed),
+// computed once per scene and run, with visibility (the truth) and without
+// (what the approximations aim at: none of them is shadowed). The row
+// "exact:no-V" is that second reference itself, against the first: the
+// error that leaving visibility out costs every approximation alike.
+// docs/performance.md, "Environment light: speed against error", shows a run.
+#pragma once
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "render/environment_resources.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace rl::bench {
+
+struct Measurement;
+
+// How the GL picture approximates environment light. 0 in a field: the
+// renderer's own default for it.
+struct EnvironmentApproximation {
+    int irradianceMap = 0;     // 0: the nine SH coefficients; N: an N x N/2 irradiance map (double on the host)
+    int prefilterWidth = 0;    // level 0 of the prefiltered chain is prefilterWidth x prefilterWidth/2
+    int prefilterLevels = 0;   // levels of the roughness-prefiltered environment
+    int prefilterSamples = 0;  // GGX samples per prefiltered texel
+    int lutSize = 0;           // the split-sum table is lutSize x lutSize
+};
+// The renderer's settings for it: EnvironmentSettings{} with the non-zero fields put in.
+EnvironmentSettings environmentSettings(const EnvironmentApproximation& approximation);
+
+// "env:irradiance-map=32x16", "env:prefilter=256x128", "env:levels=6",
+// "env:prefilter-samples=64", "env:lut=32", and "env:default" when every field is 0.
+std::string environmentVariantName(const EnvironmentApproximation& approximation);
+
+// The sweep's rows, in table order: the default, then one setting changed at
+// a time (a row equal to the default is left out).
+std::vector<EnvironmentApproximation> environmentSweep();
+
+// Why the GL picture cannot show `approximation` in this build ("" when it
+// can): a variant with a reason is a skipped row.
+std::string environmentApproximationUnsupported(const EnvironmentApproximation& approximation);
+
+// The error budget of the default approximation on the shipped environment
+// scenes (scenes/environments/*-spheres.json), written beside the table in
+// docs/performance.md and held by EnvironmentBudget.TheDefaultStaysWithinTheBudget:
+//  * against the exact reference WITHOUT visibility (what the unshadowed
+//    approximation aims at: its own error, from the split sum, SH9's band
+//    limit and the tables' resolution): mean at most meanLsbWithoutVisibility,
+//    and at most offFractionWithoutVisibility of the pixels off by over 1/255
+//    (a loose figure: the reference's own noise puts 22-39% of the pixels off
+//    at 1024-256 samples, ExactReferences::noiseOffFraction; the mean is the
+//    figure that ranks the settings);
+//  * against the exact reference WITH visibility (the truth): mean at most
+//    overNoVisibilityLsb more than the exact reference without visibility has
+//    (the row exact:no-V): no unshadowed method can do better than that row,
+//    so the budget is what the approximation adds to it.
+// Both errors include the reference's own noise (its mean is printed with the
+// run), which makes the budget stricter at fewer samples, never looser.
+struct EnvironmentBudget {
+    double meanLsbWithoutVisibility;
+    double offFractionWithoutVisibility;
+    double overNoVisibilityLsb;
+};
+const EnvironmentBudget& environmentBudget();
+// A row of the sweep (`m`, usually env:default) against the budget, with the
+// scene's row exact:no-V.
+struct EnvironmentBudgetCheck {
+    bool meanWithoutVisibility = false, offWithoutVisibility = false, meanWithVisibility = false;
+    bool meets() const { return meanWithoutVisibility && offWithoutVisibility && meanWithVisibility; }
+};
+EnvironmentBudgetCheck checkEnvironmentBudget(const Measurement& m, const Measurement& exact);
+
+// The exact references of one scene at its own size and spp (the GL
+// picture's own rays: the error is the light's, not the pixel filter's).
+struct ExactReferences {
+    int samples = 0;  // per strategy per hit (ref::EnvironmentOptions::samples)
+    // Each the mean of two estimates of samples / 2 (seeds 1 and 2).
+    Rendering withVisibility;
+    Rendering withoutVisibility;
+    // The references' own noise: mean |seed 1 - seed 2| / 2 over the display
+    // channels, in 8-bit steps (the difference of two independent estimates
+    // has twice the variance of one, their mean half of it), and the share of
+    // pixels where that exceeds 1/255 in a channel.
+    double noiseMeanLsb = 0, noiseOffFraction = 0;  // with visibility
+    double noiseMeanLsbWithoutVisibility = 0;
+    double msWithVisibility = 0, msWithoutVisibility = 0;  // wall clock of each (threads: all cores)
+};
+// Samples per strategy per hit of the bench's exact references: 1024, four
+// times the reference's default, so that the reference's noise (printed with
+// each run) is well below the errors it ranks.
+constexpr int kExactReferenceSamples = 1024;
+ExactReferences exactReferences(const Scene& scene, int samples, std::ostream& log);
+
+// The environment rows of `measurements` as their own table: the default,
+// each row's error against both references, the budget and whether the
+// default meets it; "" without environment rows.
+std::string formatEnvironmentTable(const std::vector<Measurement>& measurements);
+
+}  // namespace rl::bench
