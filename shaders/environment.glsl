@@ -13,6 +13,15 @@
 //   uniform vec3  u_envSh[9]            the map's nine SH coefficients (image frame, no intensity)
 //   uniform float u_envIntensity        the scene's intensity (a value: no recompile)
 //   uniform vec2  u_envRotation         cos, sin of the scene's rotation about +y (a value: no recompile)
+//   uniform sampler2D u_envIrradiance   only with RL_ENV_IRRADIANCE_MAP: the N x N/2 irradiance map
+//                                       (RGBA32F, image frame, no intensity; environmentIrradianceMap()), unit 4
+// DIFFUSE IRRADIANCE: the course's default, and what every picture of
+// `raylab render`, the live view and the checker draw, stays exercise 11's
+// shIrradiance() on the nine SH coefficients (SH9). Only a program compiled
+// with RL_ENV_IRRADIANCE_MAP (the bench's env:irradiance-map=N rows,
+// app/bench/environment_sweep.h) reads E(n) from the host's irradiance map
+// instead, bilinear like the other textures: the comparison that says what
+// SH9's band limit costs against a map's resolution.
 // Every texture is read by texelFetch() and filtered here (bilinear as the
 // reference's bilinearRadiance()), so 32-bit float textures serve in WebGL2
 // too, where they cannot be filtered by the sampler.
@@ -31,6 +40,9 @@ uniform int u_envLevels;
 uniform vec3 u_envSh[9];
 uniform float u_envIntensity;
 uniform vec2 u_envRotation;
+#ifdef RL_ENV_IRRADIANCE_MAP
+uniform sampler2D u_envIrradiance;
+#endif
 
 // The k-th coefficient, for exercise 11's shIrradiance().
 vec3 shCoefficient(int k) { return u_envSh[k]; }
@@ -119,7 +131,13 @@ vec2 splitSumLookup(float NoV, float roughness) {
 // (docs/model.md, "Environment light"): the integral with V = 1.
 vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
     float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
+#ifdef RL_ENV_IRRADIANCE_MAP
+    vec2 irradianceSize = vec2(textureSize(u_envIrradiance, 0));
+    vec3 E = u_envIntensity *
+             environmentBilinear(u_envIrradiance, vec4(0.0, 0.0, irradianceSize), equirectUv(environmentLocal(hit.n)));
+#else
     vec3 E = u_envIntensity * shIrradiance(environmentLocal(hit.n));
+#endif
     vec3 r = environmentLocal(reflect(-v, hit.n));
     vec3 prefiltered = u_envIntensity * prefilteredRadiance(r, prefilteredLevel(m.roughness, u_envLevels));
     return environmentShading(E, prefiltered, splitSumLookup(NoV, m.roughness), m);

@@ -201,6 +201,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
             Variant* v = add(environmentVariantName(a), "environment", true, scene);
             v->environment = a;
             v->skipReason = environmentApproximationUnsupported(a);
+            v->withDefines = environmentDefines(a);  // not the course picture then: the same program plus the define
         }
         add("exact:no-V", "environment", false, scene)->exactWithoutVisibility = true;
     }

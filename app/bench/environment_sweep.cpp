@@ -40,6 +40,7 @@ EnvironmentSettings environmentSettings(const EnvironmentApproximation& a) {
     if (a.prefilterLevels > 0) s.levels = a.prefilterLevels;
     if (a.prefilterSamples > 0) s.prefilterSamples = a.prefilterSamples;
     if (a.lutSize > 0) s.tableSize = a.lutSize;
+    if (a.irradianceMap > 0) s.irradianceMap = a.irradianceMap;
     return s;
 }
 
@@ -51,7 +52,7 @@ std::vector<EnvironmentApproximation> environmentSweep() {
         if (!(environmentSettings(a) == d) || a.irradianceMap > 0) out.push_back(a);  // the default once
     };
     // Irradiance: maps from coarser to finer than SH9's band limit needs.
-    for (int n : {8, 16, 32, 64}) add({n, 0, 0, 0, 0});
+    for (int n : kIrradianceMapWidths) add({n, 0, 0, 0, 0});
     // The prefiltered environment: its size, fewer and more roughness levels, fewer and more samples per texel.
     for (int w : {32, 64, 128, 256}) add({0, w, 0, 0, 0});
     for (int levels : {2, 4, 6, 8}) add({0, 0, levels, 0, 0});
@@ -61,9 +62,11 @@ std::vector<EnvironmentApproximation> environmentSweep() {
     return out;
 }
 
-std::string environmentApproximationUnsupported(const EnvironmentApproximation& a) {
-    if (a.irradianceMap > 0) return "irradiance maps: not in the GL picture yet";
-    return "";
+std::string environmentApproximationUnsupported(const EnvironmentApproximation&) { return ""; }
+
+ShaderDefines environmentDefines(const EnvironmentApproximation& a) {
+    if (a.irradianceMap > 0) return {{"RL_ENV_IRRADIANCE_MAP", "1"}};
+    return {};
 }
 
 const EnvironmentBudget& environmentBudget() {

@@ -16,6 +16,7 @@
 #include "core/image.h"
 #include "core/scene.h"
 #include "render/environment_resources.h"
+#include "shader/shader_library.h"
 
 #include <iosfwd>
 #include <string>
@@ -44,6 +45,12 @@ std::string environmentVariantName(const EnvironmentApproximation& approximation
 // The sweep's rows, in table order: the default, then one setting changed at
 // a time (a row equal to the default is left out).
 std::vector<EnvironmentApproximation> environmentSweep();
+// The irradiance maps' widths in the sweep (each N x N/2).
+constexpr int kIrradianceMapWidths[] = {16, 32, 64, 128};
+
+// The defines a row's program adds to the picture's: RL_ENV_IRRADIANCE_MAP
+// for an irradiance map (shaders/environment.glsl), none otherwise.
+ShaderDefines environmentDefines(const EnvironmentApproximation& approximation);
 
 // Why the GL picture cannot show `approximation` in this build ("" when it
 // can): a variant with a reason is a skipped row.

@@ -259,6 +259,7 @@ const std::vector<const char*>& nonSpecialisationNames() {
         "RL_UNFINISHED",        // unfinished.glsl: a fact of the generated exercises.glsl (shader/readiness.h),
                                 // like RL_READY_<function>, not a specialisation
         "RL_UNIT_LIGHT",        // lighting.glsl, trace.glsl: the same, when a unit adds a light term
+        "RL_ENV_IRRADIANCE_MAP",  // environment.glsl: the bench's irradiance-map rows only (bench/environment_sweep.h)
     };
     return names;
 }

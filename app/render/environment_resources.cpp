@@ -4,6 +4,8 @@
 #include "core/error.h"
 #include "reference/split_sum.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -22,6 +24,8 @@ void checkSettings(const EnvironmentSettings& s) {
     if (s.prefilterSamples < 1 || s.prefilterSamples > 65536) bad("prefilter samples must be 1 to 65536");
     if (s.tableSize < 2 || s.tableSize > 512) bad("the table size must be 2 to 512");
     if (s.tableSamples < 1 || s.tableSamples > 1024) bad("table samples must be 1 to 1024");
+    if (s.irradianceMap != 0 && (s.irradianceMap < 2 || s.irradianceMap > 512 || s.irradianceMap % 2 != 0))
+        bad("the irradiance map's width must be 0 (SH9) or an even number from 2 to 512");
 }
 
 // The table depends on the settings only; the rest on the image too.
@@ -35,6 +39,53 @@ std::vector<glm::dvec2> cachedTable(int size, int samples) {
 }
 
 }  // namespace
+
+RadianceImage environmentIrradianceMap(const RadianceImage& image, int width) {
+    if (width < 2 || width > 512 || width % 2 != 0)
+        throw Error("irradiance map: the width must be an even number from 2 to 512, not " + std::to_string(width));
+    constexpr double kPi = 3.14159265358979323846;
+    const int W = image.width, H = image.height;
+    // Each source pixel's (or f x f block's) direction and radiance times solid angle.
+    int f = 1;
+    while (W / f > 512) f *= 2;
+    struct Source {
+        glm::dvec3 w;
+        glm::dvec3 lOmega;
+    };
+    std::vector<Source> sources;
+    const double dPhi = 2.0 * kPi / W;
+    for (int by = 0; by < H; by += f)
+        for (int bx = 0; bx < W; bx += f) {
+            glm::dvec3 w(0.0), lOmega(0.0);
+            for (int y = by; y < std::min(by + f, H); ++y) {
+                const double omega = dPhi * (std::cos(kPi * y / H) - std::cos(kPi * (y + 1) / H));
+                const double v = (y + 0.5) / H;
+                for (int x = bx; x < std::min(bx + f, W); ++x) {
+                    const float* L = image.at(x, y);
+                    w += omega * equirectDirection((x + 0.5) / W, v);
+                    lOmega += omega * glm::dvec3(L[0], L[1], L[2]);
+                }
+            }
+            if (lOmega == glm::dvec3(0.0)) continue;  // adds nothing to any texel
+            sources.push_back({glm::normalize(w), lOmega});
+        }
+    RadianceImage out;
+    out.width = width;
+    out.height = width / 2;
+    out.rgb.assign(std::size_t(out.width) * out.height * 3, 0.0f);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            const glm::dvec3 n = equirectDirection((x + 0.5) / out.width, (y + 0.5) / out.height);
+            glm::dvec3 E(0.0);
+            for (const Source& s : sources) {
+                const double c = n.x * s.w.x + n.y * s.w.y + n.z * s.w.z;
+                if (c > 0.0) E += c * s.lOmega;
+            }
+            float* e = out.at(x, y);
+            for (int c = 0; c < 3; ++c) e[c] = float(E[c]);
+        }
+    return out;
+}
 
 std::shared_ptr<const EnvironmentResources> environmentResources(const Environment& environment,
                                                                  const EnvironmentSettings& settings) {
@@ -61,6 +112,7 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
                                     settings.levels, settings.prefilterSamples);
     r->sh = ref::projectSh9(*environment.image);
     r->table = cachedTable(settings.tableSize, settings.tableSamples);
+    if (settings.irradianceMap > 0) r->irradiance = environmentIrradianceMap(*environment.image, settings.irradianceMap);
     std::lock_guard<std::mutex> lock(mutex);
     cache.push_back({environment.image, settings, r});
     return r;
@@ -99,7 +151,7 @@ EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResour
     if (r.map->width > maxSide || r.map->height > maxSide || atlasHeight > maxSide)
         throw Error("environment image " + std::to_string(r.map->width) + "x" + std::to_string(r.map->height) +
                     ": this OpenGL driver allows at most " + std::to_string(maxSide) + " pixels a side");
-    gl::GenTextures(3, textures_);
+    gl::GenTextures(r.irradiance.width > 0 ? 4 : 3, textures_);
     auto upload = [](GLuint texture, GLint format, GLenum channels, int w, int h, const float* data) {
         gl::BindTexture(GL_TEXTURE_2D, texture);
         gl::PixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -113,12 +165,21 @@ EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResour
     upload(textures_[0], GL_RGB32F, GL_RGB, r.map->width, r.map->height, r.map->rgb.data());
     upload(textures_[1], GL_RGB32F, GL_RGB, atlasWidth, atlasHeight, atlas.data());
     upload(textures_[2], GL_RG32F, GL_RG, r.settings.tableSize, r.settings.tableSize, table.data());
+    if (r.irradiance.width > 0) {  // RGBA32F (alpha 1): the four-channel float format every GL and WebGL2 samples
+        std::vector<float> rgba;
+        rgba.reserve(r.irradiance.rgb.size() / 3 * 4);
+        for (std::size_t p = 0; p < r.irradiance.rgb.size(); p += 3) {
+            rgba.insert(rgba.end(), r.irradiance.rgb.begin() + std::ptrdiff_t(p), r.irradiance.rgb.begin() + std::ptrdiff_t(p + 3));
+            rgba.push_back(1.0f);
+        }
+        upload(textures_[3], GL_RGBA32F, GL_RGBA, r.irradiance.width, r.irradiance.height, rgba.data());
+    }
     gl::BindTexture(GL_TEXTURE_2D, 0);
     GLenum error = gl::GetError();
     if (error != GL_NO_ERROR) throw Error("environment textures: OpenGL error " + gl::errorName(error));
 }
 
-EnvironmentTextures::~EnvironmentTextures() { gl::DeleteTextures(3, textures_); }
+EnvironmentTextures::~EnvironmentTextures() { gl::DeleteTextures(textures_[3] != 0 ? 4 : 3, textures_); }
 
 void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& environment) const {
     gl::UseProgram(p.id());
@@ -127,6 +188,11 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
         gl::ActiveTexture(GL_TEXTURE0 + kFirstUnit + i);
         gl::BindTexture(GL_TEXTURE_2D, textures_[i]);
         gl::Uniform1i(p.uniform(samplers[i]), kFirstUnit + i);
+    }
+    if (textures_[3] != 0) {  // only a program with RL_ENV_IRRADIANCE_MAP has u_envIrradiance
+        gl::ActiveTexture(GL_TEXTURE0 + kFirstUnit + 3);
+        gl::BindTexture(GL_TEXTURE_2D, textures_[3]);
+        gl::Uniform1i(p.uniform("u_envIrradiance"), kFirstUnit + 3);
     }
     gl::ActiveTexture(GL_TEXTURE0);
     for (std::size_t k = 0; k < rects_.size(); ++k) {

@@ -5,7 +5,7 @@
 // the GL picture"):
 //   environmentResources(environment, settings)  the tables, cached per image and settings
 //   EnvironmentTextures(resources)               their textures (needs a current context)
-//   EnvironmentTextures::bind(program, environment)  textures to units 1-3 and every u_env* uniform;
+//   EnvironmentTextures::bind(program, environment)  textures to units 1-4 and every u_env* uniform;
 //                                               intensity and rotation are read from `environment`
 //                                               each call (values: no recompile, no new tables)
 // GlRenderer::setScene() builds them for a scene with an environment and
@@ -33,9 +33,16 @@ struct EnvironmentSettings {
     int prefilterSamples = 128; // GGX-distributed directions per prefiltered texel (Hammersley)
     int tableSize = 32;         // the split-sum table: tableSize x tableSize entries
     int tableSamples = 32;      // tableSamples^2 half vectors per entry
+    // 0: diffuse irradiance from the nine SH coefficients (the course's
+    // default, exercise 11). N (16 to 512, even): also an N x N/2 equirect
+    // irradiance map (environmentIrradianceMap), which shaders/environment.glsl
+    // reads instead of SH9 only where RL_ENV_IRRADIANCE_MAP is defined (the
+    // bench's env:irradiance-map=N rows); every other program ignores it.
+    int irradianceMap = 0;
     bool operator==(const EnvironmentSettings& o) const {
         return prefilterWidth == o.prefilterWidth && prefilterHeight == o.prefilterHeight && levels == o.levels &&
-               prefilterSamples == o.prefilterSamples && tableSize == o.tableSize && tableSamples == o.tableSamples;
+               prefilterSamples == o.prefilterSamples && tableSize == o.tableSize && tableSamples == o.tableSamples &&
+               irradianceMap == o.irradianceMap;
     }
 };
 
@@ -45,7 +52,21 @@ struct EnvironmentResources {
     std::vector<RadianceImage> levels;         // ref::prefilterChain
     ref::Sh9 sh;                               // ref::projectSh9
     std::vector<glm::dvec2> table;             // ref::splitSumTable, tableSize^2 (scale, bias)
+    RadianceImage irradiance;                  // environmentIrradianceMap(map, settings.irradianceMap); empty for 0
 };
+
+// The irradiance map of `image` (its own frame, no intensity): width x
+// width/2 texels, texel (x, y) holding E(n) = sum over the image's pixels of
+// L_p max(0, n . w_p) dOmega_p, n the direction of the texel's centre
+// (equirectDirection((x + 1/2)/width, (y + 1/2)/(width/2))), w_p and dOmega_p
+// the direction of pixel p's centre and its exact solid angle
+// (2 pi / W) (cos theta_top - cos theta_bottom); in double, stored as float.
+// So a uniform map of radiance L gives E = pi L up to the pixels' cosine
+// quadrature (tests/unit/test_irradiance_map.cpp). Images wider than 512
+// pixels are first summed in f x f blocks (radiance times solid angle, the
+// block's direction the solid-angle-weighted mean) so that a 4k map costs no
+// more than a 512 x 256 one. Throws rl::Error for a width out of 2..512 or odd.
+RadianceImage environmentIrradianceMap(const RadianceImage& image, int width);
 
 // The tables of `environment`'s image for `settings` (throws rl::Error for
 // settings out of range). Cached while the image lives: a second scene with
@@ -64,7 +85,8 @@ public:
     EnvironmentTextures(const EnvironmentTextures&) = delete;
     EnvironmentTextures& operator=(const EnvironmentTextures&) = delete;
 
-    // Binds the three textures to units 1, 2, 3 and sets every u_env*
+    // Binds the textures to units 1, 2, 3 (and 4: the irradiance map, where
+    // the settings have one) and sets every u_env*
     // uniform of `program` (the program is made current).
     void bind(const ShaderProgram& program, const Environment& environment) const;
     const EnvironmentResources& resources() const { return *resources_; }
@@ -73,7 +95,7 @@ public:
 
 private:
     std::shared_ptr<const EnvironmentResources> resources_;
-    GLuint textures_[3] = {0, 0, 0};  // map, prefiltered atlas, split-sum table
+    GLuint textures_[4] = {0, 0, 0, 0};  // map, prefiltered atlas, split-sum table, irradiance map (or 0)
     std::vector<glm::ivec4> rects_;
 };
 
