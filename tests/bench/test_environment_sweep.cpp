@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <map>
@@ -95,6 +96,31 @@ TEST(EnvironmentSweep, RowsReferencesAndTheirOwnMarkdownSection) {
     EXPECT_EQ(std::stod(exact.at("err_mean_lsb_no_v")), 0.0);
     EXPECT_GT(std::stod(exact.at("err_mean_lsb")), 1.0);
     EXPECT_GT(std::stod(exact.at("reference_noise_lsb")), 0.0);  // 64 samples are noisy, and the run says so
+
+    // The irradiance maps (RL_ENV_IRRADIANCE_MAP, 16x8 to 128x64) are drawn,
+    // not skipped, with finite errors; the largest is at least as close to
+    // the exact reference without visibility as SH9 (the default): a 128 x 64
+    // map of E(n) in double resolves the sun's and the panels' lobes that nine
+    // coefficients blur. Measured at 48x36 and 256 samples (docs/performance.md):
+    // sky 1.530 against 1.829 LSB, studio 2.303 against 2.449; here at 24x16 and
+    // 64 samples 2.090 against 2.224 (printed below): both rows are compared
+    // with the same fixed-seed reference, so its noise moves them alike and
+    // the comparison is deterministic on a given driver.
+    std::map<std::string, std::map<std::string, std::string>> byVariant;
+    for (const auto& row : rows) byVariant[row.at("variant")] = row;
+    for (int n : kIrradianceMapWidths) {
+        const std::string name = "env:irradiance-map=" + std::to_string(n) + "x" + std::to_string(n / 2);
+        ASSERT_TRUE(byVariant.count(name)) << name;
+        const auto& row = byVariant.at(name);
+        EXPECT_EQ(row.at("skipped"), "0") << name << ": " << row.at("note");
+        EXPECT_EQ(row.at("non_finite"), "0") << name;
+        EXPECT_TRUE(std::isfinite(std::stod(row.at("err_mean_lsb")))) << name;
+        EXPECT_TRUE(std::isfinite(std::stod(row.at("err_mean_lsb_no_v")))) << name;
+    }
+    const double sh9 = std::stod(byVariant.at("env:default").at("err_mean_lsb_no_v"));
+    const double map128 = std::stod(byVariant.at("env:irradiance-map=128x64").at("err_mean_lsb_no_v"));
+    std::printf("without V: SH9 %.3f LSB, irradiance map 128x64 %.3f LSB\n", sh9, map128);
+    EXPECT_LE(map128, sh9);
 
     const std::string text = test::readText(doc);
     EXPECT_NE(text.find("other table"), std::string::npos) << text;  // the other section is kept
