@@ -40,6 +40,17 @@ TEST(IrradianceMap, UniformWhiteGivesPi) {
     }
 }
 
+// An image wider than 512 pixels is summed in blocks first (2 x 2 here):
+// still E = pi on a uniform one, within the same 1e-3.
+TEST(IrradianceMap, WideImagesAreSummedInBlocks) {
+    RadianceImage wide;
+    wide.width = 1024;
+    wide.height = 512;
+    wide.rgb.assign(std::size_t(1024) * 512 * 3, 1.0f);
+    const RadianceImage map = environmentIrradianceMap(wide, 16);
+    for (float e : map.rgb) EXPECT_NEAR(e / kPi, 1.0, 1e-3);
+}
+
 // One lit pixel: E(n) = L dOmega max(0, n . w) with dOmega the pixel's exact
 // solid angle and w its centre's direction; 0 on the far side.
 TEST(IrradianceMap, OnePixelIsRadianceTimesSolidAngleTimesCosine) {
