@@ -112,7 +112,8 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
                                     settings.levels, settings.prefilterSamples);
     r->sh = ref::projectSh9(*environment.image);
     r->table = cachedTable(settings.tableSize, settings.tableSamples);
-    if (settings.irradianceMap > 0) r->irradiance = environmentIrradianceMap(*environment.image, settings.irradianceMap);
+    if (settings.irradianceMap > 0)
+        r->irradiance = environmentIrradianceMap(*environment.image, settings.irradianceMap);
     std::lock_guard<std::mutex> lock(mutex);
     cache.push_back({environment.image, settings, r});
     return r;
@@ -169,7 +170,8 @@ EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResour
         std::vector<float> rgba;
         rgba.reserve(r.irradiance.rgb.size() / 3 * 4);
         for (std::size_t p = 0; p < r.irradiance.rgb.size(); p += 3) {
-            rgba.insert(rgba.end(), r.irradiance.rgb.begin() + std::ptrdiff_t(p), r.irradiance.rgb.begin() + std::ptrdiff_t(p + 3));
+            const auto first = r.irradiance.rgb.begin() + std::ptrdiff_t(p);
+            rgba.insert(rgba.end(), first, first + 3);
             rgba.push_back(1.0f);
         }
         upload(textures_[3], GL_RGBA32F, GL_RGBA, r.irradiance.width, r.irradiance.height, rgba.data());
