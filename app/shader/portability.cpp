@@ -6,7 +6,6 @@
 #include "shader/program.h"
 
 #include <cctype>
-#include <map>
 #include <set>
 #include <utility>
 #include <vector>
@@ -234,30 +233,13 @@ std::string explainPortability(const std::string& message, const std::string& li
     return message;
 }
 
-namespace {
-
-// The driver's verdict on one ES source: whether it compiled, and its log.
-// Kept for the life of the process, keyed by the exact source text, so a
-// source met again (the checker's child runs a student's checks one after
-// the other: wherever the student's file is byte for byte the course's, the
-// whole ES program is the same) is not compiled again. The same text through
-// the same driver gives the same log; the messages are still made from the
-// caller's `es` each time. A few entries per process (one per exercise).
-const std::pair<bool, std::string>& compiledEs(const std::string& text) {
-    static std::map<std::string, std::pair<bool, std::string>> seen;
-    auto it = seen.find(text);
-    if (it != seen.end()) return it->second;
-    std::string log;
-    GLuint shader = compileShaderStage(GL_FRAGMENT_SHADER, text, log);
-    if (shader) gl::DeleteShader(shader);
-    return seen.emplace(text, std::make_pair(shader != 0, log)).first->second;
-}
-
-}  // namespace
-
 std::string portabilityErrors(const AssembledSource& es) {
-    const auto& [compiled, log] = compiledEs(es.text);
-    if (compiled) return "";
+    std::string log;
+    GLuint shader = compileShaderStage(GL_FRAGMENT_SHADER, es.text, log);
+    if (shader) {
+        gl::DeleteShader(shader);
+        return "";
+    }
     std::string out;
     std::size_t shownErrors = 0, more = 0;
     std::set<std::pair<std::string, int>> seen;  // one error per line: the first is the cause, the rest follow
