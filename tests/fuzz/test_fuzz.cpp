@@ -17,6 +17,7 @@
 #include "fuzz/fuzz_support.h"
 
 #include "core/message.h"
+#include "course/exercise_registry.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -491,6 +492,17 @@ TEST_F(Fuzz, ShaderFolders) {
         box.write("out.png", "the previous picture");
         Invocation run;
         run.args = {"render", "--size", "8x8", "--impl", "impl", "-o", "out.png"};
+        // A unit whose functions only a scene with its define calls (unit.json
+        // "shows_with": exercise 11 and RL_ENVIRONMENT) is rendered in such a
+        // scene: the default scene never calls them, so a deleted function
+        // there is no error (docs/decisions.md, "Optional exercises").
+        const std::string unitId = victim.stem().string();
+        for (const rl::ExerciseInfo& e : rl::allExercises())
+            if (e.id == unitId && !e.showsWith.empty()) {
+                ASSERT_EQ(e.showsWith, "RL_ENVIRONMENT") << e.id << ": which scene shows " << e.showsWith << "?";
+                run.args.insert(run.args.begin() + 1,
+                                (sourceRoot() / "scenes" / "environments" / "sky-spheres.json").string());
+            }
         run.outputs = {"out.png"};
         run.culprits = {victim.filename().string()};
         run.description = victim.filename().string() + ": " + what;
