@@ -47,7 +47,7 @@ double meanRelative(const RadianceImage& got, const RadianceImage& expected) {
 }  // namespace
 
 // PNGs that the binary built before environment.glsl existed rendered
-// (/work/main at b4ea6dd: `raylab render SCENE --size 64x48 [--generic] -o
+// (the commit b4ea6dd: `raylab render SCENE --size 64x48 [--generic] -o
 // tests/gpu/golden/NAME.png`): the course's generated program and the
 // shaders/ program, on a scene of two bounces and one of eight (the bounce
 // cutoff). Seen failing: a framework unit counted as a course file turned the
