@@ -7,13 +7,13 @@
 #include "core/file_io.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/course_program.h"
 #include "render/define_table.h"
 #include "render/gl_renderer.h"
 #include "render/implementation_facts.h"
 #include "shader/shader_library.h"
+#include "bench/bench_test_support.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -21,24 +21,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <vector>
 
 using namespace rl;
 namespace fs = std::filesystem;
 
 namespace {
-
-void ensureContext() {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
-}
-
-Scene tiny(const fs::path& file) {
-    Scene s = loadSceneFile(file.string()).scene;
-    s.render.width = 64;  // llvmpipe: small renders keep the suite fast
-    s.render.height = 48;
-    return s;
-}
 
 std::vector<fs::path> scenes() {
     std::vector<fs::path> out;
@@ -50,20 +38,10 @@ std::vector<fs::path> scenes() {
     return out;
 }
 
-// The core's budget (as tests/bench/test_specialisation.cpp): at most 0.5% of
-// pixels off by more than 1/255, mean under 0.2/255, no NaN or Inf.
-void expectWithinBudget(const Rendering& got, const Rendering& expected, const std::string& what) {
-    ImageDiff d = compareRenderings(got, expected);
-    SCOPED_TRACE(what + ": " + test::describe(d));
-    EXPECT_LE(d.offFraction, 0.005);
-    EXPECT_LT(d.meanLsb, 0.2);
-    EXPECT_EQ(d.nonFinite, 0);
-}
-
 }  // namespace
 
 TEST(CourseProgram, AppliesToTheCourseFilesOnlyAndNeverToAStudentsFile) {
-    const Scene scene = tiny(scenesDir() / "lecture.json");
+    const Scene scene = test::tinyScene(scenesDir() / "lecture.json");
     EXPECT_TRUE(courseProgramApplies(scene, implementationFacts(Implementation{solutionsDir(), {}})));
 
     // One exercise file of the student's own (the course's text plus a
@@ -82,10 +60,10 @@ TEST(CourseProgram, AppliesToTheCourseFilesOnlyAndNeverToAStudentsFile) {
 }
 
 TEST(CourseProgram, RendersThePictureOfTheGenericProgramOnEveryBundledScene) {
-    ensureContext();
+    test::ensureHeadlessContext();
     int rendered = 0;
     for (const fs::path& file : scenes()) {
-        const Scene s = tiny(file);
+        const Scene s = test::tinyScene(file);
         if (!courseProgramApplies(s, implementationFacts(Implementation{solutionsDir(), {}}))) continue;  // model variants
         // Environment light is approximated in GL (docs/model.md): its error
         // has its own budget, held by EnvironmentBudget (tests/bench/test_environment_sweep.cpp).
@@ -96,8 +74,8 @@ TEST(CourseProgram, RendersThePictureOfTheGenericProgramOnEveryBundledScene) {
             buildRayTracer(Implementation{solutionsDir(), {}}, definesFor(s, ImplementationFacts{}, Purpose::Generic)), s,
             frameFromScene(s));
         const Rendering course = renderOnce(buildCoursePicture(s), s, frameFromScene(s));
-        expectWithinBudget(course, reference, name + ": course program vs CPU reference");
-        expectWithinBudget(course, generic, name + ": course program vs generic program");
+        test::expectWithinBudget(course, reference, name + ": course program vs CPU reference");
+        test::expectWithinBudget(course, generic, name + ": course program vs generic program");
         ++rendered;
     }
     EXPECT_GE(rendered, 5);
@@ -114,9 +92,9 @@ TEST(CourseProgram, RendersThePictureOfTheGenericProgramOnEveryBundledScene) {
 // (lecture: 3.4% of pixels off, mean 0.82/255) with the tiles' occluders
 // left empty.
 TEST(CourseProgram, PerTileProgramsRenderTheSamePicture) {
-    ensureContext();
+    test::ensureHeadlessContext();
     for (const fs::path& file : {scenesDir() / "lecture.json", sourceRoot() / "tests" / "bench" / "random-30.json"}) {
-        const Scene s = tiny(file);
+        const Scene s = test::tinyScene(file);
         const std::string name = file.filename().string();
         const Rendering whole = renderOnce(buildCoursePicture(s), s, frameFromScene(s));
         const Rendering reference = ref::renderCpu(s);
@@ -132,7 +110,7 @@ TEST(CourseProgram, PerTileProgramsRenderTheSamePicture) {
             EXPECT_GE(tiled.tiles.size(), 2u) << name;  // more than the sky's group: the tiles are in use
             const Rendering got = renderOnce(tiled, s, frameFromScene(s));
             const std::string what = name + (lists ? " (tile lists)" : " (tile programs)");
-            expectWithinBudget(got, reference, what + " vs CPU reference");
+            test::expectWithinBudget(got, reference, what + " vs CPU reference");
             ImageDiff d = compareRenderings(got, whole);
             SCOPED_TRACE(what + " vs the one program: " + test::describe(d));
             EXPECT_LT(d.meanLsb, 0.01);

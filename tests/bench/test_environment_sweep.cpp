@@ -6,11 +6,11 @@
 #include "bench/environment_sweep.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "gl/context.h"
 #include "render/define_table.h"
 #include "render/gl_renderer.h"
 #include "render/implementation_facts.h"
 #include "shader/shader_library.h"
+#include "bench/bench_test_support.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <map>
 #include <sstream>
 #include <string>
@@ -140,7 +139,7 @@ TEST(EnvironmentSweep, RowsReferencesAndTheirOwnMarkdownSection) {
 // reference's own noise at this sample count is part of the measured error,
 // which makes the test stricter, not looser.
 TEST(EnvironmentBudget, TheDefaultStaysWithinTheBudget) {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
+    test::ensureHeadlessContext();
     std::ostringstream log;
     for (const char* name : {"sky-spheres", "studio-spheres"}) {
         SCOPED_TRACE(name);

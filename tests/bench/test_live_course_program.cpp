@@ -8,11 +8,11 @@
 // `raylab bench --sweeps view` measures speed.
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "gl/context.h"
 #include "render/course_program.h"
 #include "render/gl_renderer.h"
 #include "render/implementation_facts.h"
 #include "render/live_course_program.h"
+#include "bench/bench_test_support.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -21,34 +21,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <memory>
 #include <vector>
 
 using namespace rl;
 namespace fs = std::filesystem;
 
 namespace {
-
-void ensureContext() {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
-}
-
-Scene tiny(const fs::path& file) {
-    Scene s = loadSceneFile(file.string()).scene;
-    s.render.width = 64;  // llvmpipe: small renders keep the suite fast
-    s.render.height = 48;
-    return s;
-}
-
-// The core's budget (as tests/bench/test_course_program.cpp): at most 0.5% of
-// pixels off by more than 1/255, mean under 0.2/255, no NaN or Inf.
-void expectWithinBudget(const Rendering& got, const Rendering& expected, const std::string& what) {
-    ImageDiff d = compareRenderings(got, expected);
-    SCOPED_TRACE(what + ": " + test::describe(d));
-    EXPECT_LE(d.offFraction, 0.005);
-    EXPECT_LT(d.meanLsb, 0.2);
-    EXPECT_EQ(d.nonFinite, 0);
-}
 
 // Values only: materials, light colours and intensities, exposure, ambient,
 // background, gamma, a light and a sphere moved a little, the camera orbited.
@@ -77,7 +55,7 @@ Scene valueEdits(Scene s) {
 }  // namespace
 
 TEST(LiveCourseProgram, ValuesNeverChangeTheSourceTheStructureDoes) {
-    const Scene lecture = tiny(scenesDir() / "lecture.json");
+    const Scene lecture = test::tinyScene(scenesDir() / "lecture.json");
     const std::string source = liveCourseSource(lecture, frameFromScene(lecture));
     const Scene edited = valueEdits(lecture);
     EXPECT_EQ(liveCourseSource(edited, frameFromScene(edited)), source);
@@ -100,24 +78,24 @@ TEST(LiveCourseProgram, ValuesNeverChangeTheSourceTheStructureDoes) {
 }
 
 TEST(LiveCourseProgram, AppliesToTheCourseFilesOnly) {
-    const Scene scene = tiny(scenesDir() / "lecture.json");
+    const Scene scene = test::tinyScene(scenesDir() / "lecture.json");
     EXPECT_TRUE(liveCourseApplies(scene, implementationFacts(Implementation{solutionsDir(), {}})));
     EXPECT_FALSE(liveCourseApplies(scene, ImplementationFacts{})) << "files not known to be the course's";
 }
 
 TEST(LiveCourseProgram, DrawsTheRenderPictureAndAfterValueEditsWithoutACompile) {
-    ensureContext();
+    test::ensureHeadlessContext();
     const ImplementationFacts course = implementationFacts(Implementation{solutionsDir(), {}});
     int drawn = 0;
     for (const char* name : {"lecture.json", "metal-row-reflections.json", "dielectric-row.json"}) {
         const fs::path file = scenesDir() / name;
         if (!fs::exists(file)) continue;
-        const Scene s = tiny(file);
+        const Scene s = test::tinyScene(file);
         if (!liveCourseApplies(s, course)) continue;
         const std::string source = liveCourseSource(s, frameFromScene(s));
         const PictureProgram live = buildLiveCoursePicture(s, source);
         setLiveCourseValues(live.program, s, frameFromScene(s));
-        expectWithinBudget(renderOnce(live, s, frameFromScene(s)), renderOnce(buildCoursePicture(s), s, frameFromScene(s)),
+        test::expectWithinBudget(renderOnce(live, s, frameFromScene(s)), renderOnce(buildCoursePicture(s), s, frameFromScene(s)),
                            std::string(name) + ": live program vs render's course program");
 
         // The same program, its uniforms set for the edited scene.
@@ -125,7 +103,7 @@ TEST(LiveCourseProgram, DrawsTheRenderPictureAndAfterValueEditsWithoutACompile) 
         ASSERT_EQ(liveCourseSource(edited, frameFromScene(edited)), source) << name << ": values only";
         setLiveCourseValues(live.program, edited, frameFromScene(edited));
         const Rendering after = renderOnce(live, edited, frameFromScene(edited));
-        expectWithinBudget(after, renderOnce(buildCoursePicture(edited), edited, frameFromScene(edited)),
+        test::expectWithinBudget(after, renderOnce(buildCoursePicture(edited), edited, frameFromScene(edited)),
                            std::string(name) + ": after value edits, vs the course program built for them");
         ++drawn;
     }

@@ -6,7 +6,6 @@
 // holds. No timing is asserted anywhere: `raylab bench` measures speed.
 #include "core/paths.h"
 #include "core/scene_io.h"
-#include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/bounce_cutoff.h"
 #include "render/gl_renderer.h"
@@ -14,6 +13,7 @@
 #include "core/float_range.h"
 #include "render/define_table.h"
 #include "shader/shader_library.h"
+#include "bench/bench_test_support.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -25,18 +25,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <vector>
 
 using namespace rl;
 namespace fs = std::filesystem;
 
 namespace {
-
-// One headless context for the whole process, made on first use.
-void ensureContext() {
-    static std::unique_ptr<GlContext> context = createHeadlessContext(Backend::Auto);
-}
 
 ShaderDefines with(ShaderDefines defines, const ShaderDefines& more) {
     for (const auto& [name, value] : more) defines[name] = value;
@@ -57,7 +51,7 @@ ShaderDefines genericDefines(const Scene& s) { return definesFor(s, Implementati
 const ShaderDefines kPictureOnly{{"RL_PICTURE_ONLY", "1"}};
 
 Rendering renderWith(const Scene& scene, const ShaderDefines& defines, const fs::path& impl = solutionsDir()) {
-    ensureContext();
+    test::ensureHeadlessContext();
     ShaderProgram program = buildRayTracer(Implementation{impl, {}}, defines);
     return renderOnce(program, scene, frameFromScene(scene));
 }
@@ -81,16 +75,6 @@ std::vector<fs::path> jsonFilesIn(const fs::path& dir) {
 }
 
 fs::path deepBounceScene() { return sourceRoot() / "tests" / "bench" / "deep-bounces.json"; }
-
-// The core's budget: at most 0.5% of pixels off by more than 1/255 in any
-// channel, mean difference under 0.2/255, no NaN or Inf.
-void expectWithinBudget(const Rendering& got, const Rendering& expected, const std::string& what) {
-    ImageDiff d = compareRenderings(got, expected);
-    SCOPED_TRACE(what + ": " + test::describe(d));
-    EXPECT_LE(d.offFraction, 0.005);
-    EXPECT_LT(d.meanLsb, 0.2);
-    EXPECT_EQ(d.nonFinite, 0);
-}
 
 double maxComponent(glm::dvec3 v) { return std::max(v.x, std::max(v.y, v.z)); }
 double minComponent(glm::dvec3 v) { return std::min(v.x, std::min(v.y, v.z)); }
@@ -143,10 +127,10 @@ TEST(Specialisation, EveryBundledSceneMatchesTheReferenceAndTheGenericShader) {
         Rendering reference = ref::renderCpu(s);
         Rendering specialised = renderWith(s, renderDefines(s));
         Rendering generic = renderWith(s, genericDefines(s));
-        expectWithinBudget(specialised, reference, name + ": specialised (render) vs CPU reference");
-        expectWithinBudget(generic, reference, name + ": generic vs CPU reference");
-        expectWithinBudget(specialised, generic, name + ": specialised (render) vs generic");
-        expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
+        test::expectWithinBudget(specialised, reference, name + ": specialised (render) vs CPU reference");
+        test::expectWithinBudget(generic, reference, name + ": generic vs CPU reference");
+        test::expectWithinBudget(specialised, generic, name + ": specialised (render) vs generic");
+        test::expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
     }
 }
 
@@ -159,8 +143,8 @@ TEST(Specialisation, HardScenesRenderAsWithTheGenericShader) {
         Scene s = load(file);
         std::string name = file.filename().string();
         Rendering generic = renderWith(s, genericDefines(s));
-        expectWithinBudget(renderWith(s, renderDefines(s)), generic, name + ": specialised (render) vs generic");
-        expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
+        test::expectWithinBudget(renderWith(s, renderDefines(s)), generic, name + ": specialised (render) vs generic");
+        test::expectWithinBudget(renderWith(s, fullDefines(s)), generic, name + ": specialised (every view) vs generic");
     }
 }
 
@@ -172,7 +156,7 @@ TEST(Specialisation, SpecialisedRenderMatchesAtFourSamplesAndEveryDisplayStep) {
             Scene s = base;
             s.render.tonemap = op;
             s.render.srgb = srgb;
-            expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s),
+            test::expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s),
                                "tone map " + toneMapName(op) + (srgb ? ", sRGB" : ", gamma 2.2"));
         }
 }
@@ -214,12 +198,12 @@ TEST(Specialisation, SingleSphereShadowsWithoutShadowRaysSeenFromInside) {
     s = sized(s, 96, 72);
     ShaderDefines defines = renderDefines(s);
     ASSERT_TRUE(defines.count("RL_SINGLE_SPHERE"));
-    expectWithinBudget(renderWith(s, defines), ref::renderCpu(s), "inside one sphere");
+    test::expectWithinBudget(renderWith(s, defines), ref::renderCpu(s), "inside one sphere");
     // And from outside, lit by both lights.
     s.camera.position = {0, 0, 6};
     s.camera.target = {0, 0, 0};
     s.lights[1].position = {3, 3, 4};
-    expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s), "outside one sphere");
+    test::expectWithinBudget(renderWith(s, renderDefines(s)), ref::renderCpu(s), "outside one sphere");
 }
 
 // ---- which defines ------------------------------------------------------------------------
@@ -515,8 +499,8 @@ TEST(PictureValues, BenchScenesRenderAsWithoutThePictureValues) {
     for (const char* name : {"course-row-ground.json", "random-30.json"}) {
         Scene s = sized(load(sourceRoot() / "tests" / "bench" / name));
         Rendering picture = renderWith(s, renderDefines(s));
-        expectWithinBudget(picture, ref::renderCpu(s), std::string(name) + ": render vs CPU reference");
-        expectWithinBudget(picture, renderWith(s, with(fullDefines(s), kPictureOnly)),
+        test::expectWithinBudget(picture, ref::renderCpu(s), std::string(name) + ": render vs CPU reference");
+        test::expectWithinBudget(picture, renderWith(s, with(fullDefines(s), kPictureOnly)),
                            std::string(name) + ": render vs structure and picture only");
     }
 }
@@ -713,7 +697,7 @@ TEST(BounceCutoff, SpecialisedShaderStopsWithinOneStepOfTheFullTrace) {
         Scene s = sized(load(deepBounceScene()), 96, 72);
         s.render.spp = spp;
         Rendering specialised = renderWith(s, renderDefines(s));
-        expectWithinBudget(specialised, ref::renderCpu(s), std::to_string(spp) + " spp: specialised vs reference");
+        test::expectWithinBudget(specialised, ref::renderCpu(s), std::to_string(spp) + " spp: specialised vs reference");
         ImageDiff d = compareRenderings(specialised, renderWith(s, genericDefines(s)));
         SCOPED_TRACE(std::to_string(spp) + " spp, specialised vs generic: " + test::describe(d));
         EXPECT_LE(d.offFraction, 0.001);  // float noise between two programs aside, at most one step
