@@ -164,14 +164,7 @@ std::string liveCourseSource(const Scene& original, const FrameSettings& frame) 
                       << "].y);\n";
                 }
             }
-            s << "            if (!blk) {\n"
-                 "                s = lu * il + v; ss = dot(s, s); ns = dot(n, s); vec3 cx = cross(n, s);\n"
-                 "                den = a2 * ns * ns + dot(cx, cx);\n"
-                 "                x = 1.0 - min(0.5 * sqrt(ss), 1.0); x5 = x * x; x5 *= x5 * x;\n"
-                 "                F = F0 + (1.0 - F0) * x5;\n"
-                 "                c += ((1.0 - F) * KD + F * (a2 * ss * ss / ("
-              << num(kPi) << " * den * den) * gv / (NoL * (1.0 - k1) + k1))) * (LW[" << L << "] * (NoL / d2));\n"
-              << "            }\n        }\n";
+            s << litLightTerm("LW[" + L + "]");
         }
         s << "        sum += " << (bounces ? "T * " : "") << "c;\n";
         if (bounces) {
@@ -212,17 +205,7 @@ std::string liveCourseSource(const Scene& original, const FrameSettings& frame) 
           << "            L += radiance(normalize(g.x * CA + g.y * CB + CC));\n"
           << "        }\n    L *= " << num(1.0 / (grid * grid)) << ";\n";
     }
-    s << "    vec3 c = L * u_exposure;\n";
-    switch (rs.tonemap) {
-    case ToneMap::Reinhard: s << "    c = c / (1.0 + c);\n"; break;
-    case ToneMap::Exponential: s << "    c = 1.0 - exp(-c);\n"; break;
-    case ToneMap::None: s << "    c = clamp(c, 0.0, 1.0);\n"; break;
-    }
-    if (rs.srgb)
-        s << "    c = mix(12.92 * c, 1.055 * pow(c, vec3(" << num(1 / 2.4) << ")) - 0.055, step(0.0031308, c));\n";
-    else
-        s << "    c = pow(c, vec3(1.0 / u_gamma));\n";
-    s << "    o_display = vec4(c, 1.0);\n    o_radiance = vec4(L, 1.0);\n}\n";
+    s << displayStep(rs, "u_exposure", "1.0 / u_gamma");
     return s.str();
 }
 

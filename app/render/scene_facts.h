@@ -63,4 +63,19 @@ bool mayBlock(const glm::dvec3& L, const glm::dvec3& ck, double rk, const glm::d
 
 Facts factsOf(const Scene& scene);
 
+// GLSL that the course's two generated programs share word for word
+// (render/course_program.cpp with values as literals, render/
+// live_course_program.cpp with values as uniforms); the expert yardstick
+// keeps its own text, so that it does not move with what it measures.
+
+// The end of one light's loop body: where the light is not blocked (`blk`),
+// GGX + Lambert with h never normalised added to `c`, `power` (a GLSL
+// expression: a literal or a uniform) the light's power in d2's units.
+std::string litLightTerm(const std::string& power);
+
+// The display step from the pixel's radiance `L`: times `exposure`, the
+// scene's tone map, sRGB or 1 / gamma (`inverseGamma`: GLSL expressions), and
+// both outputs; closes main().
+std::string displayStep(const RenderSettings& rs, const std::string& exposure, const std::string& inverseGamma);
+
 }  // namespace rl::scene_facts
