@@ -1,8 +1,9 @@
 // What a per-scene shader generator knows about its scene, computed on the
 // host in double, and how it writes numbers as GLSL: shared by the bench's
-// expert yardstick (bench/expert.cpp) and the course's picture program
-// (render/course_program.cpp). Each writes its own shader; only these facts
-// of the scene and the literal forms are common.
+// expert yardstick (bench/expert.cpp) and the course's picture programs
+// (render/course_program.cpp, render/live_course_program.cpp). Each writes
+// its own shader; only these facts of the scene and the literal forms are
+// common (and, between the two course programs, the GLSL pieces below).
 #pragma once
 
 #include "core/scene.h"
