@@ -279,7 +279,12 @@ TEST(BenchCli, TinyRunWritesTheCsvAndThePlot) {
                              svg);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("specialised"), std::string::npos);
-    EXPECT_NE(r.output.find("against the strongest yardstick (expert"), std::string::npos) << r.output;
+    // The strongest yardstick is the faster of the two in this run: with one
+    // frame at 24x16 either may win (CI once measured the expert at 2.2 ms
+    // against the textbook's 0.28 ms), so the line names one of them.
+    EXPECT_TRUE(r.output.find("against the strongest yardstick (expert") != std::string::npos ||
+                r.output.find("against the strongest yardstick (textbook") != std::string::npos)
+        << r.output;
 
     std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
     ASSERT_GE(rows.size(), 20u);  // 4 modes, bounces, spp, resolutions, 7 models, 3 strategies
@@ -421,7 +426,10 @@ TEST(BenchCli, TheExpertYardstickRendersTheModelWithinTheBudget) {
         EXPECT_LE(std::stod(row["off_frac"]), std::stod(specialised[scene]["off_frac"]) + 0.005) << scene;
     }
     // Its error is reported beside the ratios.
-    EXPECT_NE(r.output.find("against the strongest yardstick (expert, "), std::string::npos) << r.output;
+    // (The faster of the two yardsticks in this one-frame run: either may be.)
+    EXPECT_TRUE(r.output.find("against the strongest yardstick (expert, ") != std::string::npos ||
+                r.output.find("against the strongest yardstick (textbook, ") != std::string::npos)
+        << r.output;
 }
 
 // The live view's sweep reports its programs against the generic one and
@@ -431,7 +439,10 @@ TEST(BenchCli, TheViewSweepReportsTheLiveProgramAgainstTheYardstick) {
     auto r = test::runRaylab("bench --sweeps view --size 64x36 --warmup 1 --frames 1");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("view final: live "), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("the speed of the strongest yardstick, expert"), std::string::npos) << r.output;
+    // The faster of expert and textbook in this one-frame run: either may win.
+    EXPECT_TRUE(r.output.find("the speed of the strongest yardstick, expert") != std::string::npos ||
+                r.output.find("the speed of the strongest yardstick, textbook") != std::string::npos)
+        << r.output;
     std::istringstream lines(r.output);
     bool sawTextbook = false;
     for (std::string line; std::getline(lines, line);) {
