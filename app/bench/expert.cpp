@@ -248,7 +248,9 @@ std::string expertFragmentSource(const Scene& original) {
     else
         s << "    c = pow(c, vec3(" << num(1.0 / rs.gamma) << "));\n";
     s << "    o_display = vec4(c, 1.0);\n    o_radiance = vec4(L, 1.0);\n}\n";
-    return s.str();
+    // Tables of few values as selects: what a hand-written shader does rather
+    // than index an array per pixel (scene_facts.h, selectTables).
+    return selectTables(s.str());
 }
 
 ShaderProgram buildExpert(const Scene& scene) {

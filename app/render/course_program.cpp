@@ -478,6 +478,7 @@ std::string programText(const Scene& scene, const Facts& f, const CourseProgramO
     s << displayStep(rs, num(rs.exposure), num(1.0 / rs.gamma));
     std::string text = s.str();
     text.insert(globalsAt, globals.str());
+    if (options.selectTables) text = selectTables(text);
     if (!options.uniformTables) return text;
     // The tables indexed by a value (the hit's id, a list position) as uniforms
     // with their values as initialisers: a dynamically indexed const array is

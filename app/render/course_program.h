@@ -31,6 +31,7 @@ namespace rl {
 // what skips work is a scissored draw (the sky tiles) or a loop that ends.
 struct CourseProgramOptions {
     bool skyTiles = true;           // a program with no sphere for the sky tiles (render/sky_tiles.h): 1.2-2.6x
+    bool selectTables = true;       // tables of at most 8 values as functions of selects (scene_facts.h): 1.1-1.2x
     bool uniformTables = true;      // per-id tables as initialised uniforms: equal to 1.2x (a const array indexed per pixel is rebuilt per group)
     bool branchFreeShadows = true;  // shadow tests without `if`, the receiver by its id: equal, within noise
     bool screenRects = false;       // camera rays: per-sphere pixel bounds around the test: costs 0-8%

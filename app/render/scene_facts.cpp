@@ -3,7 +3,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <sstream>
 
 namespace rl::scene_facts {
 
@@ -86,6 +88,89 @@ std::string displayStep(const RenderSettings& rs, const std::string& exposure, c
     else
         s += "    c = pow(c, vec3(" + inverseGamma + "));\n";
     return s + "    o_display = vec4(c, 1.0);\n    o_radiance = vec4(L, 1.0);\n}\n";
+}
+
+namespace {
+
+// The comma-separated items of `list` at bracket depth 0.
+std::vector<std::string> topLevelItems(const std::string& list) {
+    std::vector<std::string> items(1);
+    int depth = 0;
+    for (char c : list) {
+        depth += (c == '(') - (c == ')');
+        if (c == ',' && depth == 0) {
+            items.emplace_back();
+            continue;
+        }
+        if (!(items.back().empty() && c == ' ')) items.back() += c;
+    }
+    return items;
+}
+
+bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// `text` with every `name[index]` (index without nested brackets) as `name(index)`.
+std::string callsForIndexing(const std::string& text, const std::string& name) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t found; (found = text.find(name + "[", at)) != std::string::npos;) {
+        const std::size_t close = text.find(']', found);
+        if ((found > 0 && identifierChar(text[found - 1])) || close == std::string::npos) {
+            out += text.substr(at, found + name.size() + 1 - at);
+            at = found + name.size() + 1;
+            continue;
+        }
+        const std::size_t open = found + name.size();
+        out += text.substr(at, found - at) + name + "(" + text.substr(open + 1, close - open - 1) + ")";
+        at = close + 1;
+    }
+    return out + text.substr(at);
+}
+
+}  // namespace
+
+std::string selectTables(const std::string& text, int maxDistinct) {
+    std::istringstream in(text);
+    std::string out;
+    std::vector<std::string> names;
+    for (std::string line; std::getline(in, line);) {
+        // const T NAME[N] = T[N](items);
+        std::istringstream words(line);
+        std::string keyword, type, declared;
+        words >> keyword >> type >> declared;
+        const std::size_t bracket = declared.find('['), open = line.find('(');
+        const bool table = keyword == "const" && bracket != std::string::npos && open != std::string::npos &&
+                           line.size() > open + 2 && line.compare(line.size() - 2, 2, ");") == 0;
+        std::vector<std::string> items;
+        if (table) items = topLevelItems(line.substr(open + 1, line.size() - open - 3));
+        std::vector<std::pair<std::string, std::vector<int>>> at;  // distinct values in order of first id, their ids
+        for (int i = 0; i < int(items.size()); ++i) {
+            auto it = std::find_if(at.begin(), at.end(), [&](const auto& v) { return v.first == items[i]; });
+            if (it == at.end()) at.push_back({items[i], {i}});
+            else it->second.push_back(i);
+        }
+        if (!table || items.empty() || int(at.size()) > maxDistinct) {
+            out += line + "\n";
+            continue;
+        }
+        const std::string name = declared.substr(0, bracket);
+        names.push_back(name);
+        // The most frequent value (ties: the last) needs no test; the others
+        // in order of their first id.
+        std::size_t common = 0;
+        for (std::size_t v = 0; v < at.size(); ++v)
+            if (at[v].second.size() >= at[common].second.size()) common = v;
+        std::string expression = at[common].first;
+        for (std::size_t v = at.size(); v-- > 0;) {
+            if (v == common) continue;
+            std::string test;
+            for (int id : at[v].second) test += (test.empty() ? "i == " : " || i == ") + std::to_string(id);
+            expression = "(" + test + ") ? " + at[v].first + " : " + expression;
+        }
+        out += type + " " + name + "(int i) { return " + expression + "; }\n";
+    }
+    for (const std::string& name : names) out = callsForIndexing(out, name);
+    return out;
 }
 
 }  // namespace rl::scene_facts

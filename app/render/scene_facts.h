@@ -64,6 +64,18 @@ bool mayBlock(const glm::dvec3& L, const glm::dvec3& ck, double rk, const glm::d
 
 Facts factsOf(const Scene& scene);
 
+// The per-sphere tables of a generated shader (lines `const T NAME[N] =
+// T[N](v0, ...);`, read as NAME[index]) that hold at most `maxDistinct`
+// different values, written as functions of selects instead (NAME(index):
+// `index == 2 || index == 5 ? v : ...`, the most frequent value last, with
+// no test). On llvmpipe a dynamically indexed const array is built anew by
+// every 8-pixel group and a uniform array is a gather per component: a few
+// selects per component cost less (`raylab bench`, docs/performance.md,
+// "Tables as selects"). A rule any hand-written shader can follow, so both
+// the expert yardstick and the course programs use it. Other lines unchanged.
+inline constexpr int kSelectTableMax = 8;
+std::string selectTables(const std::string& text, int maxDistinct = kSelectTableMax);
+
 // GLSL that the course's two generated programs share word for word
 // (render/course_program.cpp with values as literals, render/
 // live_course_program.cpp with values as uniforms); the expert yardstick
