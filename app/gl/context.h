@@ -31,6 +31,11 @@ public:
 // with one line saying what was tried and why each failed.
 std::unique_ptr<GlContext> createHeadlessContext(Backend backend);
 
+// Tells the C library to keep freed memory for the driver's next frame
+// instead of returning it to the system (glibc; a no-op elsewhere). Called
+// by createHeadlessContext() and the window's context; idempotent.
+void keepDriverHeap();
+
 namespace detail {
 // Each returns nullptr and fills `why` when the backend cannot start.
 std::unique_ptr<GlContext> createEglContext(std::string& why);

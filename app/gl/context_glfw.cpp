@@ -3,6 +3,7 @@
 #include "gl/context_glfw.h"
 
 #include "core/error.h"
+#include "gl/context.h"
 #include "gl/gl_api.h"
 
 #define GLFW_INCLUDE_NONE  // gl_api.h brings the GL declarations; GLFW must not add its own
@@ -43,6 +44,7 @@ GLFWmonitor* monitorOf(GLFWwindow* window) {
 }  // namespace
 
 GlfwWindowContext::GlfwWindowContext(const WindowSettings& settings) {
+    keepDriverHeap();
     if (!glfwInit())
         throw Error("no window system (" + lastGlfwError("glfwInit failed") + ")" +
                     (settings.visible ? "; use `raylab render` for pictures without a window" : ""));

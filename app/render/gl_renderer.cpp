@@ -74,17 +74,36 @@ void GlRenderer::resize(int width, int height) {
     }
 }
 
-void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) {
-    resize(frame.width, frame.height);
-    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    gl::Viewport(0, 0, frame.width, frame.height);
-    setFrameUniforms(program, scene_, frame);
-    glm::dvec3 eye = framePosition(frame);
+void GlRenderer::uploadFor(const FrameSettings& frame) {
+    const glm::dvec3 eye = framePosition(frame);
     if (!uploaded_ || eye != uploadedEye_) {  // the live view's camera moves: the block follows it
         sceneBlock_.upload(scene_, eye, sceneAnchor(scene_));
         uploaded_ = true;
         uploadedEye_ = eye;
     }
+}
+
+const SkyTiles& GlRenderer::skyTilesFor(const FrameSettings& frame) {
+    auto sameCamera = [&](const FrameSettings& f) {
+        return f.cameraToWorld == frame.cameraToWorld && f.fovYRadians == frame.fovYRadians && f.width == frame.width &&
+               f.height == frame.height;
+    };
+    if (!skyTiles_ || !sameCamera(skyTiles_->first)) skyTiles_.emplace(frame, skyTiles(scene_, frame));
+    return skyTiles_->second;
+}
+
+void GlRenderer::prepare(const FrameSettings& frame) {
+    resize(frame.width, frame.height);
+    uploadFor(frame);
+    skyTilesFor(frame);
+}
+
+void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) {
+    resize(frame.width, frame.height);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl::Viewport(0, 0, frame.width, frame.height);
+    setFrameUniforms(program, scene_, frame);
+    uploadFor(frame);
     sceneBlock_.bind(program);
     if (environment_ && scene_.environment) environment_->bind(program, *scene_.environment);
     gl::BindVertexArray(vertexArray_);
@@ -113,12 +132,7 @@ void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame)
         return;
     }
     if (!picture.sky) return draw(picture.program, frame);
-    auto sameCamera = [&](const FrameSettings& f) {
-        return f.cameraToWorld == frame.cameraToWorld && f.fovYRadians == frame.fovYRadians && f.width == frame.width &&
-               f.height == frame.height;
-    };
-    if (!skyTiles_ || !sameCamera(skyTiles_->first)) skyTiles_.emplace(frame, skyTiles(scene_, frame));
-    const SkyTiles& tiles = skyTiles_->second;
+    const SkyTiles& tiles = skyTilesFor(frame);
     if (tiles.sky.empty()) return draw(picture.program, frame);
     gl::Enable(GL_SCISSOR_TEST);
     for (const PixelRect& r : tiles.sky) {

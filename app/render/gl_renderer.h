@@ -49,6 +49,10 @@ public:
     // with an environment also gets its tables for `environment` (cached per
     // image and settings: render/environment_resources.h), bound by draw().
     void setScene(const Scene& scene, const EnvironmentSettings& environment = {});
+    // What draw() would do first for `frame` that depends only on the scene
+    // and the camera (the targets' size, the scene block's upload, the sky
+    // tiles), done now: the bench calls it outside its clock.
+    void prepare(const FrameSettings& frame);
     // Renders one frame into the offscreen targets (resized as needed).
     void draw(const ShaderProgram& program, const FrameSettings& frame);
     // The picture program where some camera ray may hit a sphere, its sky
@@ -67,6 +71,8 @@ public:
 private:
     void resize(int width, int height);
     double timed(const std::function<void()>& drawing);  // ms of GL_TIME_ELAPSED around it
+    void uploadFor(const FrameSettings& frame);              // the scene block, relative to the frame's camera
+    const SkyTiles& skyTilesFor(const FrameSettings& frame);  // cached per camera
     Scene scene_;
     std::unique_ptr<EnvironmentTextures> environment_;  // for scene_.environment, else null
     SceneUniformBlock sceneBlock_;

@@ -219,7 +219,7 @@ ShaderProgram buildLiveCourseProgram(const std::string& source) {
 }
 
 PictureProgram buildLiveCoursePicture(const Scene& scene, const std::string& source) {
-    PictureProgram picture{buildLiveCourseProgram(source), std::nullopt};
+    PictureProgram picture{buildLiveCourseProgram(source), std::nullopt, {}};
     if (!scene.spheres.empty()) {
         Scene sky = scene;
         sky.spheres.clear();
