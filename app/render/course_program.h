@@ -32,7 +32,7 @@ namespace rl {
 struct CourseProgramOptions {
     bool skyTiles = true;           // a program with no sphere for the sky tiles (render/sky_tiles.h): 1.2-2.6x
     bool selectTables = true;       // tables of at most 8 values as functions of selects (scene_facts.h): 1.1-1.2x
-    bool uniformTables = true;      // per-id tables as initialised uniforms: equal to 1.2x (a const array indexed per pixel is rebuilt per group)
+    bool uniformTables = false;     // per-id tables as initialised uniforms: as fast as const arrays at best, and in some processes 1.3-1.5x slower (random-30: 40-47 ms of CPU against 32)
     bool branchFreeShadows = true;  // shadow tests without `if`, the receiver by its id: equal, within noise
     bool screenRects = false;       // camera rays: per-sphere pixel bounds around the test: costs 0-8%
     bool bounceGroups = false;      // bounce rays: bounding spheres of clusters around the tests: costs 0-8%
