@@ -6,17 +6,19 @@
 // docs/performance.md quotes is against it, measured in the same run; the
 // straightforward yardstick (bench/textbook.h) stays beside it.
 //
-// Techniques (issue #25): scene data and loops as constants; the camera
-// basis folded into one pixel-to-direction expression; camera-relative
-// centres and per-sphere |oc|^2 - R^2 in double on the host; the near root as
-// one expression when the camera is outside; branch-free nearest hit; no ray
-// offsets (a ray never re-tests the sphere it leaves from outside; from inside
-// the far root is 2R(n.d)); shadow tests from the light's side with
-// per-(light, sphere) constants and no square root; a per-(light, receiver)
-// mask of the spheres that can block at all; `if` blocks that llvmpipe's
-// 8-pixel groups skip together; lights behind the surface skipped before any
-// shadow work; h never normalised; n.l and n.v cancelled out of G/(4 n.l n.v);
-// x^5 by multiplications; no work after the last bounce.
+// Techniques (issue #25): scene data and loops as constants, per-sphere
+// tables of few values as selects (never an array indexed per pixel where
+// it can be helped); the camera basis folded into one pixel-to-direction
+// expression; camera-relative centres and per-sphere |oc|^2 - R^2 in double
+// on the host; the near root as one expression when the camera is outside;
+// branch-free nearest hit; no ray offsets (a ray never re-tests the sphere it
+// leaves from outside; from inside the far root is 2R(n.d)); shadow tests
+// from the light's side with per-(light, sphere) constants and no square
+// root, branch-free (llvmpipe runs an `if` body for the whole 8-pixel group
+// anyway), only for the spheres some (light, receiver) pair lets block;
+// lights behind the surface skipped before any shadow work; h never
+// normalised; n.l and n.v cancelled out of G/(4 n.l n.v); x^5 by
+// multiplications; no work after the last bounce.
 #pragma once
 
 #include "core/scene.h"
