@@ -342,8 +342,11 @@ std::string imagePath(const fs::path& dir, const std::string& scene, const std::
 
 // `shared`: the context of checkExercises()' child, current, kept from one
 // exercise to the next (the driver is loaded once); nullptr: its own.
+// `portable`: the student's files already compiled as GLSL ES without an
+// error (checkExercises(): all of them in one program), so this check's own
+// GLSL ES compile is left out.
 ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
-                         const std::vector<CheckScene>& scenes, GlContext* shared = nullptr) {
+                         const std::vector<CheckScene>& scenes, GlContext* shared = nullptr, bool portable = false) {
     ExerciseReport report;
     report.number = exercise.number;
     report.id = exercise.id;
@@ -378,7 +381,7 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     }
     // Portable GLSL: the same files as GLSL ES 3.00, which stricter drivers
     // and browsers compile; a COMPILE ERROR marked "portability error" (docs/decisions.md).
-    if (std::string errors = portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
+    if (std::string errors = portable ? "" : portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
         !errors.empty()) {
         report.status = CheckStatus::CompileError;
         report.message = errors.substr(0, errors.find('\n'));
@@ -561,10 +564,28 @@ std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*
             setPhase("starting the OpenGL context");
             fastShaderCompiles();
             auto context = createHeadlessContext(parseBackend(options.backend));
+            // Every checked file of the student in one GLSL ES program: where it
+            // compiles, so does each check's (its file with the others' from
+            // solutions/, which are portable, and a clash between files is the
+            // desktop compile's error first), and those compiles are left out.
+            // Any error, in any file: each check compiles its own, as before,
+            // so that the error is reported by the exercise it belongs to.
+            bool portable = false;
+            if (!options.probesOnly) {
+                try {
+                    Implementation all = checkCompanions(*exercises[checked[0]], exerciseFile(*exercises[checked[0]], options), options);
+                    for (std::size_t k : checked) all.overrides[exercises[k]->file()] = exerciseFile(*exercises[k], options);
+                    portable = portabilityErrors(assembleShader("main.frag", all, {}, GlslDialect::Es300)).empty();
+                } catch (const Error&) {  // a refused file or include: each check says so itself
+                    portable = false;
+                }
+                while (gl::GetError() != GL_NO_ERROR) {
+                }
+            }
             for (std::size_t k : checked) {
                 const auto start = std::chrono::steady_clock::now();
-                ExerciseReport report =
-                    runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes, context.get());
+                ExerciseReport report = runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes,
+                                                  context.get(), portable);
                 report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 all.push_back(toJson(report));
                 {
