@@ -2,6 +2,8 @@
 #include "core/file_handle.h"
 
 #include <cerrno>
+#include <chrono>
+#include <thread>
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -94,6 +96,15 @@ FileLock::FileLock(const fs::path& path) {
         return;
     }
     held_ = ::flock(fd_, LOCK_EX | LOCK_NB) == 0;
+}
+
+bool FileLock::waitFor(double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (fd_ >= 0 && !held_ && std::chrono::steady_clock::now() < end) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        held_ = ::flock(fd_, LOCK_EX | LOCK_NB) == 0;
+    }
+    return held_;
 }
 
 FileLock::~FileLock() {

@@ -75,6 +75,9 @@ public:
     FileLock& operator=(const FileLock&) = delete;
 
     bool held() const { return held_; }
+    // Tries again every 50 ms for at most `seconds` while another holder has
+    // it; returns held().
+    bool waitFor(double seconds);
     // Set when the lock file cannot be opened or created; clear (and held()
     // false) when another holder has the lock.
     const std::error_code& error() const { return error_; }

@@ -8,7 +8,11 @@ namespace rl {
 
 FolderLock::FolderLock(const fs::path& folder) : lock_(folder / ".lock") {
     if (lock_.error()) throw Error((folder / ".lock").string() + ": cannot create (" + lock_.error().message() + ")");
-    if (!lock_.held())
+    // A run killed outright releases the lock when the last of its workers
+    // and their check processes has ended: they end with it (PR_SET_PDEATHSIG),
+    // but tearing down a GL context takes a moment on a loaded machine, so a
+    // run started right after waits that long before it says so.
+    if (!lock_.held() && !lock_.waitFor(3.0))
         throw Error(folder.string() + ": another raylab grade is writing here; wait for it, or use another -o");
 }
 
