@@ -65,6 +65,7 @@ leave_out=(
     tests/bench/test_live_course_program.cpp tests/bench/test_environment_sweep.cpp
     tests/unit/test_shipped_stubs.cpp tests/unit/test_loop_guard.cpp
     tests/unit/test_define_table.cpp tests/unit/defines.golden  # its implementations are the solutions and mutants
+    shaders/yardstick/textbook.frag  # the model written out the plain way: every answer
     docs/exercises/images/make-images.sh scripts/judge-kinds.py
     scripts/student-edition.sh scripts/answer-leaks.py
 )

@@ -111,7 +111,9 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
     const RenderSettings& r = scene.render;
 
     if (wanted(options, "modes")) {
-        add("textbook", "modes", false, scene, false)->textbook = true;
+        Variant* textbook = add("textbook", "modes", false, scene, false);
+        textbook->textbook = true;
+        textbook->skipReason = textbookUnsupported();
         Variant* expert = add("expert", "modes", false, scene, false);
         expert->expert = true;
         expert->skipReason = expertUnsupported(scene);

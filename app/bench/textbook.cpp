@@ -1,5 +1,6 @@
 #include "bench/textbook.h"
 
+#include "core/paths.h"
 #include "gl/gl_api.h"
 #include "shader/shader_library.h"
 
@@ -7,9 +8,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <vector>
 
 namespace rl::bench {
+
+std::string textbookUnsupported() {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(shadersDir() / "yardstick" / "textbook.frag", ec)) return "";
+    return "not in this copy: a student edition leaves shaders/yardstick/textbook.frag out (it writes the model's formulas)";
+}
 
 ShaderProgram buildTextbook() {
     Implementation none;  // the textbook includes nothing

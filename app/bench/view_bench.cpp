@@ -89,18 +89,21 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         }
     if (!generatedApplies)
         log << "bench: view: the exercise files are not all the course's own: `live` draws with `before`'s program\n";
-    // The yardstick of every speed claim (bench/textbook.h): the picture only.
-    Entry textbook;
-    textbook.row.program = "textbook";
-    textbook.row.view = viewName(View::Final);
-    textbook.row.width = scene.render.width;
-    textbook.row.height = scene.render.height;
-    textbook.row.clock = clockName;
-    const auto textbookStart = std::chrono::steady_clock::now();
-    textbook.program.program = buildTextbook();
-    setTextbookUniforms(textbook.program.program, scene);
-    textbook.row.compileMs = msSince(textbookStart);
-    entries.push_back(std::move(textbook));
+    // The straightforward yardstick (bench/textbook.h): the picture only;
+    // not in a student edition.
+    if (textbookUnsupported().empty()) {
+        Entry textbook;
+        textbook.row.program = "textbook";
+        textbook.row.view = viewName(View::Final);
+        textbook.row.width = scene.render.width;
+        textbook.row.height = scene.render.height;
+        textbook.row.clock = clockName;
+        const auto textbookStart = std::chrono::steady_clock::now();
+        textbook.program.program = buildTextbook();
+        setTextbookUniforms(textbook.program.program, scene);
+        textbook.row.compileMs = msSince(textbookStart);
+        entries.push_back(std::move(textbook));
+    }
     // The expert yardstick (bench/expert.h), the strongest: the picture only.
     if (expertUnsupported(scene).empty()) {
         Entry expert;
