@@ -79,6 +79,13 @@ step "quick start: ./raylab render -o raylab.png shows the stubs"
 cmp -s "$clone/raylab.png" "$scratch/stubs.png" || fail "the edition's picture is not the stubs' picture"
 ! cmp -s "$clone/raylab.png" "$scratch/solutions.png" || fail "the edition renders the solutions' picture"
 
+step "no plain-GLSL model in the edition: ./raylab bench says why its textbook row is skipped"
+[ ! -e "$clone/shaders/yardstick/textbook.frag" ] || fail "the edition ships shaders/yardstick/textbook.frag"
+(cd "$clone" && ./raylab bench --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1) >"$scratch/bench.txt" 2>&1 ||
+    { cat "$scratch/bench.txt"; fail "bench"; }
+grep -q "not in this copy: a student edition leaves shaders/yardstick/textbook.frag out" "$scratch/bench.txt" ||
+    { cat "$scratch/bench.txt"; fail "bench does not say why the textbook row is skipped"; }
+
 step "./raylab view (Xvfb): exercises/ by default, the shipped stubs beside a partial folder"
 mkdir -p "$scratch/partial"
 cp "$src/solutions/01-camera.glsl" "$src/solutions/02-intersect.glsl" "$scratch/partial/"
