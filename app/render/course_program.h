@@ -43,9 +43,10 @@ struct CourseProgramOptions {
     // host in double), each group drawn (scissored) by a program whose first
     // hit tests only those; the bounces as before. A cost model picks how many
     // programs: draw time saved against compiles over `frames` frames and a
-    // per-program cost per frame. Random-30: 1.40-1.43x the expert against
-    // 1.26x without (12 programs); lecture: 5 programs 0.8-0.9x against
-    // 1.3-1.4x (what costs is not known), so the model keeps it off there.
+    // per-program cost per frame. Off everywhere: once the driver's heap was
+    // kept between frames (gl/context.h) the one program with its sky tiles
+    // was faster on every scene measured (random-30 33 ms of CPU a frame
+    // against 38 ms in 13 programs; docs/decisions.md, "Per-tile programs").
     bool tilePrograms = false;
     int frames = 1;     // frames the program will draw: one for `raylab render`
     int tileSize = 16;  // pixels a side
