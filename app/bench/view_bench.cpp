@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -89,34 +90,28 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         }
     if (!generatedApplies)
         log << "bench: view: the exercise files are not all the course's own: `live` draws with `before`'s program\n";
-    // The straightforward yardstick (bench/textbook.h): the picture only;
-    // not in a student edition.
-    if (textbookUnsupported().empty()) {
-        Entry textbook;
-        textbook.row.program = "textbook";
-        textbook.row.view = viewName(View::Final);
-        textbook.row.width = scene.render.width;
-        textbook.row.height = scene.render.height;
-        textbook.row.clock = clockName;
-        const auto textbookStart = std::chrono::steady_clock::now();
-        textbook.program.program = buildTextbook();
-        setTextbookUniforms(textbook.program.program, scene);
-        textbook.row.compileMs = msSince(textbookStart);
-        entries.push_back(std::move(textbook));
-    }
-    // The expert yardstick (bench/expert.h), the strongest: the picture only.
-    if (expertUnsupported(scene).empty()) {
-        Entry expert;
-        expert.row.program = "expert";
-        expert.row.view = viewName(View::Final);
-        expert.row.width = scene.render.width;
-        expert.row.height = scene.render.height;
-        expert.row.clock = clockName;
-        const auto expertStart = std::chrono::steady_clock::now();
-        expert.program.program = buildExpert(scene);
-        expert.row.compileMs = msSince(expertStart);
-        entries.push_back(std::move(expert));
-    }
+    // The yardsticks, the picture only: the straightforward one
+    // (bench/textbook.h; not in a student edition) and the expert
+    // (bench/expert.h), the strongest.
+    auto addYardstick = [&](const char* name, const std::function<ShaderProgram()>& build) {
+        Entry e;
+        e.row.program = name;
+        e.row.view = viewName(View::Final);
+        e.row.width = scene.render.width;
+        e.row.height = scene.render.height;
+        e.row.clock = clockName;
+        const auto start = std::chrono::steady_clock::now();
+        e.program.program = build();
+        e.row.compileMs = msSince(start);
+        entries.push_back(std::move(e));
+    };
+    if (textbookUnsupported().empty())
+        addYardstick("textbook", [&] {
+            ShaderProgram p = buildTextbook();
+            setTextbookUniforms(p, scene);
+            return p;
+        });
+    if (expertUnsupported(scene).empty()) addYardstick("expert", [&] { return buildExpert(scene); });
 
     GlRenderer renderer;
     renderer.setScene(scene);
