@@ -135,15 +135,8 @@ std::string expertFragmentSource(const Scene& original) {
         if (lights > 0) s << "        vec3 lu, s, F;\n        float d2, il, NoL, E, ss, ns, den;\n        bool blk;\n";
         for (int l = 0; l < lights; ++l) {
             const Light& light = scene.lights[l];
-            // The model's d2 <= 1e-12 (a light on the surface adds nothing), in
-            // the scene's units: a light within 1e-6 of every surface point is
-            // left out; the test is written only where some point is that close.
-            double nearest = 1e300, farthest = 0;
-            for (int k = 0; k < n; ++k) {
-                double dc = glm::length(f.light[l] - f.c[k]) / f.scale, r = f.r[k] / f.scale;
-                nearest = std::min(nearest, std::abs(dc - r));
-                farthest = std::max(farthest, dc + r);
-            }
+            // The model's d2 <= 1e-12 (scene_facts.h, Facts::lightNearest).
+            const double nearest = f.lightNearest[l], farthest = f.lightFarthest[l];
             if (farthest * farthest <= 1e-12) continue;
             const std::string onSurface =
                 nearest * nearest <= 1e-12 * (1 + 1e-6) ? " && d2 > " + num(1e-12 * f.scale * f.scale) : "";

@@ -58,18 +58,6 @@ Seen seenFrom(const Scene& original, const FrameSettings& frame) {
 double clampedRoughness(const Material& m) { return std::clamp(m.roughness, 0.045, 1.0); }
 glm::dvec3 f0Of(const Material& m) { return glm::mix(glm::dvec3(0.04), m.albedo, m.metallic); }
 
-// Lights that every surface point is within 1e-6 of add nothing (the
-// model's d2 <= 1e-12); where some point is that close the test is written.
-void lightReach(const Facts& f, int l, double& nearest, double& farthest) {
-    nearest = 1e300;
-    farthest = 0;
-    for (int k = 0; k < f.n; ++k) {
-        double dc = glm::length(f.light[l] - f.c[k]) / f.scale, r = f.r[k] / f.scale;
-        nearest = std::min(nearest, std::abs(dc - r));
-        farthest = std::max(farthest, dc + r);
-    }
-}
-
 
 }  // namespace
 
@@ -137,8 +125,7 @@ std::string liveCourseSource(const Scene& original, const FrameSettings& frame) 
              "        float a2 = SP[id].z, k1 = SP[id].w, gv = 0.25 / (NoV * (1.0 - k1) + k1), x, x5;\n";
         if (lights > 0) s << "        vec3 lu, s, F, w;\n        float d2, il, NoL, E, ss, ns, den;\n        vec4 o;\n        bool blk;\n";
         for (int l = 0; l < lights; ++l) {
-            double nearest = 0, farthest = 0;
-            lightReach(f, l, nearest, farthest);
+            const double nearest = f.lightNearest[l], farthest = f.lightFarthest[l];  // scene_facts.h
             if (farthest * farthest <= 1e-12) continue;
             const std::string L = std::to_string(l);
             const std::string onSurface = nearest * nearest <= 1e-12 * (1 + 1e-6) ? " && d2 > LP[" + L + "].w" : "";

@@ -47,6 +47,16 @@ Facts factsOf(const Scene& scene) {
         for (int j = i + 1; j < f.n; ++j)
             if (glm::length(f.c[i] - f.c[j]) < f.r[i] + f.r[j]) f.simple = false;
     for (const Light& l : scene.lights) f.light.push_back((l.position - eye) * f.scale);
+    for (const glm::dvec3& L : f.light) {
+        double nearest = 1e300, farthest = 0;
+        for (int k = 0; k < f.n; ++k) {
+            double dc = glm::length(L - f.c[k]) / f.scale, r = f.r[k] / f.scale;
+            nearest = std::min(nearest, std::abs(dc - r));
+            farthest = std::max(farthest, dc + r);
+        }
+        f.lightNearest.push_back(nearest);
+        f.lightFarthest.push_back(farthest);
+    }
     f.huge.assign(f.n, false);
     for (int i = 0; i < f.n && f.n > 1; ++i) {
         double smallest = 1e300;

@@ -44,6 +44,12 @@ struct Facts {
     std::vector<glm::dvec3> c;       // centres relative to the camera
     std::vector<double> r, cc;       // radius, |c|^2 - R^2 (camera outside where > 0)
     std::vector<glm::dvec3> light;   // lights relative to the camera
+    // Per light, in the scene's own units: the least and the greatest
+    // distance from it to a point of some sphere's surface. The model's
+    // d2 <= 1e-12 (a light on the surface adds nothing): a light with
+    // farthest^2 <= 1e-12 adds nothing anywhere; the test is written only
+    // where nearest^2 <= 1e-12.
+    std::vector<double> lightNearest, lightFarthest;
     // Nothing starts inside a sphere: the camera is outside every sphere and
     // no two spheres overlap, so every hit is from outside, every bounce ray
     // starts outside every sphere and no point of a surface lies inside
