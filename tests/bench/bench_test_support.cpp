@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <sstream>
 
 namespace rl::test {
 
@@ -27,6 +28,36 @@ void expectWithinBudget(const Rendering& got, const Rendering& expected, const s
     EXPECT_LE(d.offFraction, 0.005);
     EXPECT_LT(d.meanLsb, 0.2);
     EXPECT_EQ(d.nonFinite, 0);
+}
+
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& text) {
+    std::vector<std::map<std::string, std::string>> out;
+    std::stringstream s(text);
+    std::vector<std::string> header;
+    for (std::string line; std::getline(s, line);) {
+        if (line.empty()) continue;
+        std::vector<std::string> fields = csvFields(line);
+        if (header.empty()) {
+            header = fields;
+            continue;
+        }
+        EXPECT_EQ(fields.size(), header.size()) << line;
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
+        out.push_back(row);
+    }
+    return out;
 }
 
 }  // namespace rl::test

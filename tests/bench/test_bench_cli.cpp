@@ -2,6 +2,7 @@
 // functions, then the command end to end on a tiny size. Times are never
 // asserted: only that they are measured and written.
 #include "bench/bench.h"
+#include "bench/bench_test_support.h"
 #include "bench/pareto.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -22,47 +23,12 @@
 using namespace rl;
 using namespace rl::bench;
 namespace fs = std::filesystem;
+using rl::test::readCsv;
 
 namespace {
 
 std::vector<bool> front(const std::vector<ParetoPoint>& points) { return paretoFront(points); }
 
-// Splits one CSV line into fields (double-quoted fields may hold commas).
-std::vector<std::string> csvFields(const std::string& line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (char c : line) {
-        if (c == '"') quoted = !quoted;
-        else if (c == ',' && !quoted) out.emplace_back();
-        else out.back() += c;
-    }
-    return out;
-}
-
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream s(text);
-    std::string line;
-    while (std::getline(s, line))
-        if (!line.empty()) out.push_back(line);
-    return out;
-}
-
-// The CSV as one map per row, header names as keys.
-std::vector<std::map<std::string, std::string>> readCsv(const std::string& text) {
-    std::vector<std::string> rows = lines(text);
-    std::vector<std::map<std::string, std::string>> out;
-    if (rows.empty()) return out;
-    std::vector<std::string> header = csvFields(rows[0]);
-    for (std::size_t i = 1; i < rows.size(); ++i) {
-        std::vector<std::string> fields = csvFields(rows[i]);
-        EXPECT_EQ(fields.size(), header.size()) << rows[i];
-        std::map<std::string, std::string> row;
-        for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
-        out.push_back(row);
-    }
-    return out;
-}
 
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;

@@ -3,6 +3,7 @@
 // references, its own Markdown section, and the default approximation held
 // to the error budget written beside the table. Times are never asserted.
 #include "bench/bench.h"
+#include "bench/bench_test_support.h"
 #include "bench/environment_sweep.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
@@ -10,7 +11,6 @@
 #include "render/gl_renderer.h"
 #include "render/implementation_facts.h"
 #include "shader/shader_library.h"
-#include "bench/bench_test_support.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -26,39 +26,9 @@
 using namespace rl;
 using namespace rl::bench;
 namespace fs = std::filesystem;
+using rl::test::readCsv;
 
 namespace {
-
-std::vector<std::string> csvFields(const std::string& line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (char c : line) {
-        if (c == '"') quoted = !quoted;
-        else if (c == ',' && !quoted) out.emplace_back();
-        else out.back() += c;
-    }
-    return out;
-}
-
-std::vector<std::map<std::string, std::string>> readCsv(const std::string& text) {
-    std::vector<std::map<std::string, std::string>> out;
-    std::stringstream s(text);
-    std::string line;
-    std::vector<std::string> header;
-    while (std::getline(s, line)) {
-        if (line.empty()) continue;
-        std::vector<std::string> fields = csvFields(line);
-        if (header.empty()) {
-            header = fields;
-            continue;
-        }
-        EXPECT_EQ(fields.size(), header.size()) << line;
-        std::map<std::string, std::string> row;
-        for (std::size_t k = 0; k < header.size() && k < fields.size(); ++k) row[header[k]] = fields[k];
-        out.push_back(row);
-    }
-    return out;
-}
 
 std::string environmentScene(const char* name) {
     return (scenesDir() / "environments" / (std::string(name) + ".json")).string();
