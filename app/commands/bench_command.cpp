@@ -1,5 +1,5 @@
 // raylab bench [SCENE...] [--csv FILE] [--plot FILE] [--markdown FILE] [--size WxH] [--warmup N]
-//              [--frames N] [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
+//              [--frames N] [--compiles N] [--yardstick FILE]... [--reference-spp N] [--sweeps LIST] [--backend B] [--clock C] [--impl DIR]
 // Time per frame against error for every variant and setting
 // (app/bench/bench.h), as a table, a CSV and an SVG plot with the Pareto front.
 #include "commands/commands.h"
@@ -25,6 +25,7 @@ struct BenchCommandOptions {
     std::string markdown;
     std::string size = "320x240";
     int warmup = 2;
+    int compiles = 2;
     int frames = 5;
     int referenceSpp = 16;
     int environmentSamples = bench::kExactReferenceSamples;
@@ -32,6 +33,7 @@ struct BenchCommandOptions {
     std::string backend = "auto";
     std::string clock = "auto";
     std::string impl;
+    std::vector<std::string> yardsticks;
     bool sizeGiven = false;  // --size on the command line (the view sweep's default is 1280x720)
 };
 
@@ -58,10 +60,12 @@ std::string commandLine(const BenchCommandOptions& o) {
     option("--clock", o.clock, defaults.clock);
     option("--warmup", std::to_string(o.warmup), std::to_string(defaults.warmup));
     option("--frames", std::to_string(o.frames), std::to_string(defaults.frames));
+    option("--compiles", std::to_string(o.compiles), std::to_string(defaults.compiles));
     option("--reference-spp", std::to_string(o.referenceSpp), std::to_string(defaults.referenceSpp));
     option("--environment-samples", std::to_string(o.environmentSamples), std::to_string(defaults.environmentSamples));
     option("--backend", o.backend, defaults.backend);
     option("--impl", o.impl, defaults.impl);
+    for (const std::string& file : o.yardsticks) line += " --yardstick " + file;
     option("--csv", o.csv, defaults.csv);
     option("--plot", o.plot, defaults.plot);
     option("--markdown", o.markdown, defaults.markdown);
@@ -82,12 +86,17 @@ void runBenchCommand(const BenchCommandOptions& o) {
     options.width = size.width;
     options.height = size.height;
     options.warmup = o.warmup;
+    options.compiles = o.compiles;
     options.frames = o.frames;
     options.referenceSpp = o.referenceSpp;
     options.environmentSamples = o.environmentSamples;
     options.sweeps = splitList(o.sweeps);
     options.backend = o.backend;
     options.implDir = o.impl;
+    for (const std::string& file : o.yardsticks) {
+        readRegularFile(file, std::uintmax_t(1) << 20, "yardstick shader");  // before minutes of measuring
+        options.yardsticks.push_back(file);
+    }
     if (o.clock == "auto") options.clock = bench::Clock::Auto;
     else if (o.clock == "gpu") options.clock = bench::Clock::Gpu;
     else if (o.clock == "wall") options.clock = bench::Clock::Wall;
@@ -154,6 +163,15 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", options->frames, "Timed frames per variant (the median is reported)")
         ->capture_default_str()
         ->check(wholeNumberIn(1, 10000));
+    cmd->add_option("--yardstick", options->yardsticks,
+                    "A fragment shader from outside to time beside raylab's programs (row outside:NAME); the "
+                    "strongest yardstick of a run is the fastest of expert, textbook and these (docs/performance.md)")
+        ->check(notEmpty());
+    cmd->add_option("--compiles", options->compiles,
+                    "Copies of each variant's program, each compiled on its own; the fastest copy is timed "
+                    "(every variant alike: on llvmpipe some copies of the same code run slower)")
+        ->capture_default_str()
+        ->check(wholeNumberIn(1, 8));
     cmd->add_option("--reference-spp", options->referenceSpp, "Samples per pixel of the converged CPU reference")
         ->capture_default_str()
         ->check(squareNumberIn(1, 1024));

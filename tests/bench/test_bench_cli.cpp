@@ -162,6 +162,30 @@ TEST(BenchOutput, TableAndComparisonName) {
     EXPECT_EQ(modeComparisons(rows)[0].overStrongest(), 0.8);
 }
 
+// A yardstick from outside is the strongest when it is the fastest within the
+// error budget of raylab's picture program; one that draws less is listed,
+// not counted (drawing less is not drawing faster).
+TEST(BenchOutput, AnOutsideYardstickCountsOnlyWithinTheBudget) {
+    Measurement generic = measurement("lecture", "generic", 30, 0.1), specialised = measurement("lecture", "specialised", 10, 0.1);
+    generic.mode = "generic";
+    Measurement expert = measurement("lecture", "expert", 12, 0.1);
+    expert.mode = "expert";
+    Measurement hand = measurement("lecture", "outside:hand", 11, 0.14), sloppy = measurement("lecture", "outside:sloppy", 5, 0.2);
+    hand.mode = sloppy.mode = "outside";
+    std::vector<Measurement> rows = {expert, hand, sloppy, generic, specialised};
+    std::string comparison = formatComparisons(rows);
+    EXPECT_NE(comparison.find("against the strongest yardstick (outside:hand, 11.00 ms"), std::string::npos) << comparison;
+    EXPECT_NE(comparison.find("specialised 1.10x (10.00 ms"), std::string::npos) << comparison;
+    EXPECT_NE(comparison.find("expert (the expert yardstick) 0.92x"), std::string::npos) << comparison;
+    EXPECT_NE(comparison.find("outside:sloppy (from outside, not counted: its picture is off by more than the budget) 2.20x"),
+              std::string::npos) << comparison;
+    EXPECT_EQ(modeComparisons(rows)[0].strongest()->variant, "outside:hand");
+    // The budget's other half: pixels off by over 1/255.
+    Measurement& h = rows[1];
+    h.error.offFraction = specialised.error.offFraction + 0.006;
+    EXPECT_EQ(modeComparisons(rows)[0].strongest()->variant, "expert");
+}
+
 TEST(BenchOutput, NearestResamplingKeepsBlocks) {
     Rendering small;
     small.display = {2, 1, {10, 10, 10, 200, 200, 200}};
@@ -456,6 +480,45 @@ TEST(BenchCli, VariantsThatDoNotBuildAreSkippedWithTheReason) {
     }
 }
 
+// `--yardstick FILE` as a user outside the team would use it: a shader file
+// of their own (here the textbook's text under another name, since it is the
+// model written the plain way) is timed beside raylab's programs, its picture
+// compared with the reference; a file with an error ends the run with the
+// file and line; a missing one is refused before any measuring.
+TEST(BenchCli, AYardstickFromOutsideIsTimedAndCompared) {
+    const fs::path textbook = shadersDir() / "yardstick" / "textbook.frag";
+    if (!fs::is_regular_file(textbook)) GTEST_SKIP() << "a student edition has no textbook shader";
+    fs::path dir = test::freshTempDir("bench_outside");
+    test::writeText(dir / "hand.frag", test::readText(textbook));
+    test::writeText(dir / "blank.frag", "layout(location = 0) out vec4 o_display;\nvoid main() { o_display = vec4(0.0, 0.0, 0.0, 1.0); }\n");
+    const std::string csv = (dir / "bench.csv").string();
+    auto r = test::runRaylab("bench --sweeps modes --size 32x24 --warmup 0 --frames 1 --reference-spp 1 --yardstick " +
+                             (dir / "hand.frag").string() + " --yardstick " + (dir / "blank.frag").string() + " --csv " + csv);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::map<std::string, std::map<std::string, std::string>> rows;
+    for (auto& row : readCsv(test::readText(csv))) rows[row["variant"]] = row;
+    ASSERT_EQ(rows.count("outside:hand"), 1u) << r.output;
+    EXPECT_EQ(rows["outside:hand"]["mode"], "outside");
+    EXPECT_EQ(rows["outside:hand"]["skipped"], "0") << rows["outside:hand"]["note"];
+    // The same text as the textbook: the same picture, so the same error.
+    EXPECT_EQ(rows["outside:hand"]["err_mean_lsb"], rows["textbook"]["err_mean_lsb"]);
+    EXPECT_GT(std::stod(rows["outside:blank"]["err_mean_lsb"]), 1.0);
+    EXPECT_NE(r.output.find("outside:blank (from outside, not counted"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("against the strongest yardstick (outside:blank"), std::string::npos) << r.output;
+    // Every row, the outside ones included, is the fastest of two copies of its program.
+    EXPECT_NE(r.output.find("the fastest of 2 copies of each program"), std::string::npos) << r.output;
+
+    test::writeText(dir / "broken.frag", "layout(location = 0) out vec4 o;\nvoid main() { o = vec4(1.0) }\n");
+    auto broken = test::runRaylab("bench --sweeps modes --size 8x6 --warmup 0 --frames 1 --reference-spp 1 --yardstick " +
+                                  (dir / "broken.frag").string());
+    EXPECT_EQ(broken.status, 1) << broken.output;
+    EXPECT_NE(broken.output.find("broken.frag:2: error"), std::string::npos) << broken.output;
+    auto missing = test::runRaylab("bench --size 8x6 --yardstick " + (dir / "nope.frag").string());
+    EXPECT_EQ(missing.status, 1) << missing.output;
+    EXPECT_NE(missing.output.find("nope.frag: cannot read yardstick shader"), std::string::npos) << missing.output;
+    EXPECT_EQ(missing.output.find("bench: "), std::string::npos) << missing.output;  // nothing measured
+}
+
 TEST(BenchCli, BadOptionsAreOneClearError) {
     auto sweep = test::runRaylab("bench --sweeps modes,frobnicate --size 8x8");
     EXPECT_EQ(sweep.status, 1);
@@ -463,6 +526,9 @@ TEST(BenchCli, BadOptionsAreOneClearError) {
     auto frames = test::runRaylab("bench --frames 0 --size 8x8");
     EXPECT_EQ(frames.status, 2);  // a usage error (main.cpp)
     EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
+    auto compiles = test::runRaylab("bench --compiles 0 --size 8x8");
+    EXPECT_EQ(compiles.status, 2);
+    EXPECT_NE(compiles.output.find("--compiles"), std::string::npos) << compiles.output;
     auto spp = test::runRaylab("bench --reference-spp 5 --size 8x8");
     EXPECT_EQ(spp.status, 2);
     EXPECT_NE(spp.output.find("square number"), std::string::npos) << spp.output;
