@@ -96,7 +96,7 @@ struct Options {
     // included): on llvmpipe one copy in ten of the very same machine code runs
     // 1.4 to 2x slower for as long as it lives (docs/performance.md, "One copy
     // in ten"), so one copy per variant made a ratio a lottery.
-    int compiles = 2;
+    int compiles = 3;
     // Yardsticks from outside (bench/outside.h): fragment shader files timed
     // in the modes sweep of every scene as rows "outside:<stem>".
     std::vector<std::filesystem::path> yardsticks;

@@ -25,7 +25,7 @@ struct BenchCommandOptions {
     std::string markdown;
     std::string size = "320x240";
     int warmup = 2;
-    int compiles = 2;
+    int compiles = 3;
     int frames = 5;
     int referenceSpp = 16;
     int environmentSamples = bench::kExactReferenceSamples;

@@ -63,6 +63,7 @@ void GlRenderer::resize(int width, int height) {
     }
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl::DrawBuffers(2, buffers);
+    drawsRadiance_ = true;
     GLenum status = gl::CheckFramebufferStatus(GL_FRAMEBUFFER);
     GLenum error = gl::GetError();
     if (status != GL_FRAMEBUFFER_COMPLETE || error != GL_NO_ERROR) {
@@ -101,6 +102,11 @@ void GlRenderer::prepare(const FrameSettings& frame) {
 void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) {
     resize(frame.width, frame.height);
     gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    if (frame.radiance != drawsRadiance_) {  // the shader's o_radiance goes nowhere without it
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, frame.radiance ? GLenum(GL_COLOR_ATTACHMENT1) : GLenum(GL_NONE)};
+        gl::DrawBuffers(2, buffers);
+        drawsRadiance_ = frame.radiance;
+    }
     gl::Viewport(0, 0, frame.width, frame.height);
     setFrameUniforms(program, scene_, frame);
     uploadFor(frame);
@@ -169,8 +175,8 @@ Rendering GlRenderer::readBack() const {
     gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     gl::PixelStorei(GL_PACK_ALIGNMENT, 1);
     out.display = {width_, height_, std::vector<std::uint8_t>(std::size_t(width_) * height_ * 3)};
-    out.radiance = {width_, height_, std::vector<float>(std::size_t(width_) * height_ * 3)};
-    for (int target = 0; target < 2; ++target) {
+    if (drawsRadiance_) out.radiance = {width_, height_, std::vector<float>(std::size_t(width_) * height_ * 3)};
+    for (int target = 0; target < (drawsRadiance_ ? 2 : 1); ++target) {
         gl::ReadBuffer(GL_COLOR_ATTACHMENT0 + target);
         gl::ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, pixels.data());
         for (int y = 0; y < height_; ++y) {  // GL rows start at the bottom

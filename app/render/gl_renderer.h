@@ -61,7 +61,8 @@ public:
     // Like draw(), measuring the GPU time with a GL_TIME_ELAPSED query (ms).
     double drawTimed(const ShaderProgram& program, const FrameSettings& frame);
     double drawTimed(const PictureProgram& picture, const FrameSettings& frame);
-    // The last frame, rows top to bottom.
+    // The last frame, rows top to bottom; its radiance is empty when that frame
+    // did not store it (FrameSettings::radiance).
     Rendering readBack() const;
     // The framebuffer holding the last frame (attachment 0 = display colour).
     GLuint framebuffer() const { return framebuffer_; }
@@ -83,6 +84,7 @@ private:
     GLuint targets_[2] = {0, 0};
     GLuint timer_ = 0;
     int width_ = 0, height_ = 0;
+    bool drawsRadiance_ = true;      // the draw buffers: both targets, or the display alone
     // The sky tiles of the last frame drawn with a sky program, for that frame's camera.
     std::optional<std::pair<FrameSettings, SkyTiles>> skyTiles_;
 };

@@ -412,6 +412,7 @@ void ViewApp::renderPicture(bool fullResolution) {
     frame.height = std::max(1, int(std::lround(fbHeight_ * scale)));
     frame.view = state_.view;
     frame.viewBounce = state_.viewBounce;
+    frame.radiance = false;  // the window shows the display target; the radiance is never read here
     const int split = wipeActive() ? int(std::lround(state_.divider * frame.width)) : frame.width;
     const PictureProgram* generated[2] = {generatedPicture(sides_[0], frame),
                                           sides_.size() > 1 ? generatedPicture(sides_[1], frame) : nullptr};

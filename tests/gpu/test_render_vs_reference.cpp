@@ -7,6 +7,8 @@
 #include "core/scene_io.h"
 #include "core/scene_transform.h"
 #include "reference/cpu_reference.h"
+#include "render/course_program.h"
+#include "render/gl_renderer.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -133,4 +135,36 @@ TEST(RenderVsReference, EveryToneMapAndGamma) {
             s.render.exposure = 2.5;
             expectMatchesReference(s, toneMapName(op) + (srgb ? " srgb" : " gamma 2.2"));
         }
+}
+
+// A frame without its radiance (FrameSettings::radiance = false: the live
+// view's and the bench's timed frames) draws the same display bytes, and
+// readBack() then gives no radiance rather than the last frame's; the next
+// frame with it stores fresh radiance again.
+TEST(RenderVsReference, ADisplayOnlyFrameDrawsTheSamePicture) {
+    Scene scene = sized(loadSceneFile((scenesDir() / "lecture.json").string()).scene, 64, 48);
+    const Rendering both = test::renderGl(scene);  // makes the context current
+    PictureProgram picture = buildCoursePicture(scene);
+    GlRenderer renderer;
+    renderer.setScene(scene);
+    FrameSettings frame = frameFromScene(scene);
+    renderer.draw(picture, frame);
+    const Rendering first = renderer.readBack();
+    ASSERT_FALSE(first.radiance.rgb.empty());
+    frame.radiance = false;
+    renderer.draw(picture, frame);
+    const Rendering displayOnly = renderer.readBack();
+    EXPECT_TRUE(displayOnly.radiance.rgb.empty());
+    EXPECT_EQ(displayOnly.display.rgb, first.display.rgb);
+    // Another background changes the radiance of the sky: drawn with its
+    // radiance, the renderer stores the new values, not the first frame's.
+    Scene other = scene;
+    other.render.background = glm::dvec3(0.5, 0.2, 0.1);
+    renderer.setScene(other);
+    frame.radiance = true;
+    renderer.draw(buildCoursePicture(other), frame);
+    const Rendering second = renderer.readBack();
+    ASSERT_EQ(second.radiance.rgb.size(), first.radiance.rgb.size());
+    EXPECT_NE(second.radiance.rgb, first.radiance.rgb);
+    expectWithinBudget(first, both, "the course's program against the ray tracer");
 }
