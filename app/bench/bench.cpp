@@ -19,11 +19,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <iomanip>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <iomanip>
 #include <memory>
 #include <ostream>
 #include <sstream>

@@ -142,17 +142,17 @@ Rendering resampleNearest(const Rendering& image, int width, int height);
 // Marks Measurement::onFront per scene (skipped rows are never on it).
 void markParetoFronts(std::vector<Measurement>& measurements);
 
-// Specialised against generic at the scene's own settings, with the two
-// intermediate modes that split the speed-up into its parts (null if not run).
 // Whether a yardstick's picture is as right as raylab's picture program
 // (`program`, the specialised row) within the budget every yardstick is held
 // to: mean error at most 0.05 LSB above it and at most 0.5% more pixels off
 // by over 1/255 (BenchCli.TheExpertYardstickRendersTheModelWithinTheBudget
 // holds the expert to it; the ratios of issue #25 are "at equal or lower
-// error"). A yardstick from outside outside it does not count as the
-// strongest: drawing less is not drawing faster.
+// error"). A yardstick from outside that is beyond it does not count as
+// the strongest: drawing less is not drawing faster.
 bool withinYardstickBudget(const Measurement& yardstick, const Measurement& program);
 
+// Specialised against generic at the scene's own settings, with the two
+// intermediate modes that split the speed-up into its parts (null if not run).
 struct ModeComparison {
     std::string scene;
     const Measurement* generic = nullptr;

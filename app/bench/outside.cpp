@@ -26,8 +26,7 @@ bool hasVersionLine(const std::string& text) {
 }  // namespace
 
 ShaderProgram buildOutside(const fs::path& file, const Scene& scene) {
-    constexpr std::uintmax_t kMaxBytes = 1 << 20;  // a shader, not a data file: 50x the expert's largest
-    const std::string text = readRegularFile(file, kMaxBytes, "yardstick shader");
+    const std::string text = readRegularFile(file, kOutsideShaderMaxBytes, "yardstick shader");
     const std::string shown = file.lexically_normal().string();
     AssembledSource fragment;
     if (!hasVersionLine(text)) {

@@ -20,15 +20,19 @@
 #include "core/scene.h"
 #include "shader/program.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
 namespace rl::bench {
 
+// The most a yardstick file may hold: a shader, not a data file.
+constexpr std::uintmax_t kOutsideShaderMaxBytes = std::uintmax_t(1) << 20;
+
 // The bench's row name for FILE: "outside:" and the file's stem.
 std::string outsideVariantName(const std::filesystem::path& file);
 
-// Reads FILE (at most 1 MiB) and compiles it with fullscreen.vert; a compile
+// Reads FILE (at most kOutsideShaderMaxBytes) and compiles it with fullscreen.vert; a compile
 // error names FILE and its line (ShaderError), an unreadable file is an
 // rl::Error naming it. The tb_ uniforms of `scene` are set on the program.
 ShaderProgram buildOutside(const std::filesystem::path& file, const Scene& scene);

@@ -5,6 +5,7 @@
 #include "commands/commands.h"
 
 #include "bench/bench.h"
+#include "bench/outside.h"
 #include "bench/view_bench.h"
 #include "core/error.h"
 #include "core/message.h"
@@ -94,7 +95,7 @@ void runBenchCommand(const BenchCommandOptions& o) {
     options.backend = o.backend;
     options.implDir = o.impl;
     for (const std::string& file : o.yardsticks) {
-        readRegularFile(file, std::uintmax_t(1) << 20, "yardstick shader");  // before minutes of measuring
+        readRegularFile(file, bench::kOutsideShaderMaxBytes, "yardstick shader");  // before minutes of measuring
         options.yardsticks.push_back(file);
     }
     if (o.clock == "auto") options.clock = bench::Clock::Auto;
