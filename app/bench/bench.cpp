@@ -3,6 +3,7 @@
 #include "bench/frame_clock.h"
 #include "bench/pareto.h"
 #include "bench/expert.h"
+#include "bench/fastest_copy.h"
 #include "render/course_program.h"
 #include "bench/outside.h"
 #include "bench/textbook.h"
@@ -314,59 +315,6 @@ PictureProgram buildVariant(const Variant& v, const fs::path& implDir, const Opt
     return buildPictureProgram(impl, defines);
 }
 
-// One frame of a program, timed by the bench's clock (the renderer prepared).
-double timeFrame(GlRenderer& renderer, const PictureProgram& program, const FrameSettings& frame, Clock clock) {
-    if (clock == Clock::Gpu) return renderer.drawTimed(program, frame);
-    gl::Finish();
-    if (clock == Clock::Cpu) {
-        const double t0 = processCpuMs();
-        renderer.draw(program, frame);
-        gl::Finish();
-        return processCpuMs() - t0;
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    renderer.draw(program, frame);
-    gl::Finish();
-    return msSince(t0);
-}
-
-// Keeps the fastest of Options::compiles copies of a built and warmed
-// program: each further copy is built, drawn once (llvmpipe compiles and
-// places it), and every copy is timed over a few frames; the copy with the
-// smallest median stays. The same for every variant, so that no ratio
-// depends on which copy of the yardstick or of raylab's program the run drew.
-// Measured (docs/performance.md, "One copy in ten"): identical machine code
-// at the same page offsets ran 30 or 42-62 ms a frame, copy by copy, in one
-// process; a frame or three tells the two apart.
-// Returns the copies' trial times, in ms, for the log.
-std::vector<double> keepFastestCopy(PictureProgram& program, const Variant& v, const fs::path& implDir, const Options& o,
-                                    GlRenderer& renderer, const FrameSettings& frame, Clock clock) {
-    std::vector<double> trials;
-    if (o.compiles <= 1) return trials;
-    constexpr int kTrialFrames = 3;
-    auto trial = [&](const PictureProgram& p) {
-        std::vector<double> t;
-        renderer.prepare(frame);
-        renderer.draw(p, frame);  // warm (the copy before evicted it)
-        for (int k = 0; k < kTrialFrames; ++k) t.push_back(timeFrame(renderer, p, frame, clock));
-        return median(t);
-    };
-    double best = trial(program);
-    trials.push_back(best);
-    for (int copy = 1; copy < o.compiles; ++copy) {
-        PictureProgram other = buildVariant(v, implDir, o);
-        renderer.draw(other, frame);  // llvmpipe compiles here
-        gl::Finish();
-        const double t = trial(other);
-        trials.push_back(t);
-        if (t < best) {
-            best = t;
-            program = std::move(other);
-        }
-    }
-    return trials;
-}
-
 // Measures every variant of one scene. Programs are built first (a variant
 // that does not build is skipped with the first line of its error), each is
 // warmed up and its picture compared with the reference, then the timed
@@ -424,16 +372,21 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 gl::Finish();
                 FrameSettings timedFrame = frame;
                 timedFrame.radiance = false;  // the live view's frame: frames timed below store the display alone
-                const std::vector<double> trials = keepFastestCopy(programs[i], v, implDir, o, renderer, timedFrame, clock);
+                const std::vector<double> trials = keepFastestCopy(
+                    programs[i], o.compiles, [&] { return buildVariant(v, implDir, o); },
+                    [&](const PictureProgram& p) {
+                        renderer.prepare(timedFrame);
+                        return timeFrame(renderer, p, timedFrame, clock);
+                    });
                 if (!trials.empty()) {
                     std::ostringstream line;
                     line << "bench: " << sceneName << " " << m.variant << ": copies";
                     for (double t : trials) line << " " << std::fixed << std::setprecision(2) << t;
                     line << " ms a frame, the fastest kept\n";
                     log << line.str();
+                    renderer.draw(programs[i], frame);  // the picture compared below: the kept copy's, with its radiance
+                    gl::Finish();
                 }
-                renderer.draw(programs[i], frame);  // the picture compared below: the kept copy's, with its radiance
-                gl::Finish();
                 Rendering got = renderer.readBack();
                 const Rendering& expected = v.environment && exact ? exact->withVisibility : reference;
                 if (got.display.width != expected.display.width || got.display.height != expected.display.height)

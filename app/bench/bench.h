@@ -9,6 +9,7 @@
 #pragma once
 
 #include "bench/environment_sweep.h"
+#include "bench/frame_clock.h"
 #include "core/image.h"
 #include "core/scene.h"
 #include "shader/shader_library.h"
@@ -78,13 +79,6 @@ struct Measurement {
     // larger setting costs, since every row costs the same per frame.
     double tablesMs = 0;
 };
-
-// How a frame is timed: GL_TIME_ELAPSED queries; the wall clock around
-// draw + glFinish (software rasterisers, whose queries miss the worker
-// threads); or the CPU time of the whole process around draw + glFinish
-// (software rasterisers on a busy machine: other processes do not inflate it,
-// but it adds up the worker threads, so it is about cores x wall time).
-enum class Clock { Auto, Gpu, Wall, Cpu };
 
 struct Options {
     std::vector<std::string> scenes;  // scene files; empty: scenes/lecture.json

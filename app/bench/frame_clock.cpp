@@ -1,5 +1,7 @@
 #include "bench/frame_clock.h"
 
+#include "gl/gl_api.h"
+
 #include <algorithm>
 #include <ctime>
 
@@ -19,6 +21,21 @@ double processCpuMs() {
 
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double timeFrame(GlRenderer& renderer, const PictureProgram& program, const FrameSettings& frame, Clock clock) {
+    if (clock == Clock::Gpu) return renderer.drawTimed(program, frame);
+    gl::Finish();
+    if (clock == Clock::Cpu) {
+        const double t0 = processCpuMs();
+        renderer.draw(program, frame);
+        gl::Finish();
+        return processCpuMs() - t0;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    renderer.draw(program, frame);
+    gl::Finish();
+    return msSince(t0);
 }
 
 double median(std::vector<double> v) {

@@ -1,6 +1,7 @@
 #include "bench/view_bench.h"
 
 #include "bench/expert.h"
+#include "bench/fastest_copy.h"
 #include "bench/frame_clock.h"
 #include "bench/textbook.h"
 
@@ -126,43 +127,25 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
 
     GlRenderer renderer;
     renderer.setScene(scene);
-    auto drawOne = [&](Entry& e) {
+    // A frame of `program` (the entry's, or another copy of it) as the live view draws it.
+    auto drawProgram = [&](const Entry& e, const PictureProgram& program) {
         FrameSettings frame = frameFromScene(scene);
         frame.view = e.view;
         frame.radiance = false;  // the live view shows the display target alone
-        if (e.generated) setLiveCourseValues(e.program.program, scene, frame);  // as the view does every frame
-        if (clock == Clock::Gpu) return renderer.drawTimed(e.program, frame);
-        gl::Finish();
-        const double cpu0 = processCpuMs();
-        const auto t0 = std::chrono::steady_clock::now();
-        renderer.draw(e.program, frame);
-        gl::Finish();
-        return clock == Clock::Cpu ? processCpuMs() - cpu0 : msSince(t0);
+        if (e.generated) setLiveCourseValues(program.program, scene, frame);  // as the view does every frame
+        return timeFrame(renderer, program, frame, clock);
     };
+    auto drawOne = [&](Entry& e) { return drawProgram(e, e.program); };
     for (Entry& e : entries) {
         const auto start = std::chrono::steady_clock::now();
         drawOne(e);
         e.row.firstDrawMs = msSince(start);
         for (int k = 1; k < options.warmup; ++k) drawOne(e);
-        // The fastest of Options::compiles copies, as in the error sweep
-        // (bench.h): one copy in ten of the same code runs 1.3-2x slower.
-        auto trial = [&] {
-            drawOne(e);  // warm
-            std::vector<double> t;
-            for (int k = 0; k < 3; ++k) t.push_back(drawOne(e));
-            std::sort(t.begin(), t.end());
-            return t[1];
-        };
-        double best = options.compiles > 1 ? trial() : 0;
-        for (int copy = 1; copy < options.compiles; ++copy) {
-            PictureProgram kept = std::move(e.program);
-            e.program = e.build();
-            drawOne(e);  // llvmpipe compiles here
-            const double t = trial();
-            if (t < best) best = t;
-            else e.program = std::move(kept);
-        }
-        drawOne(e);
+        // The fastest of Options::compiles copies, as in the error sweep.
+        if (!keepFastestCopy(e.program, options.compiles, e.build,
+                             [&](const PictureProgram& p) { return drawProgram(e, p); })
+                 .empty())
+            drawOne(e);  // the kept copy's picture, read below
         e.picture = renderer.readBack();
     }
     // Rounds, one frame of each program per round: a change of the machine's
