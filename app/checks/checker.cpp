@@ -340,174 +340,6 @@ std::string imagePath(const fs::path& dir, const std::string& scene, const std::
     return (dir / (scene + "-" + kind + ".png")).string();
 }
 
-// `shared`: the context of checkExercises()' child, current, kept from one
-// exercise to the next (the driver is loaded once); nullptr: its own.
-// `portable`: the student's files already compiled as GLSL ES without an
-// error (checkExercises(): all of them in one program), so this check's own
-// GLSL ES compile is left out.
-ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
-                         const std::vector<CheckScene>& scenes, GlContext* shared = nullptr, bool portable = false) {
-    ExerciseReport report;
-    report.number = exercise.number;
-    report.id = exercise.id;
-    fastShaderCompiles();
-    std::unique_ptr<GlContext> context;
-    if (!shared) context = createHeadlessContext(parseBackend(options.backend));
-    else
-        while (gl::GetError() != GL_NO_ERROR) {  // nothing of the exercise before reaches this one's checks
-        }
-    const Implementation impl = checkCompanions(exercise, file, options);
-    ShaderProgram probe, program;
-    setPhase("compiling");
-    try {
-        AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
-        // Only this exercise's functions in the probe: the compiler drops the rest.
-        ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
-        probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
-        if (!options.probesOnly) {  // the probes alone need no ray tracer
-            setPhase("compiling the ray tracer");
-            // Without the teaching views where the course's 09 traces: a third
-            // less code for LLVM, the same picture (Purpose::Probe, one program
-            // for every check scene, so none of them is passed).
-            program = buildRayTracer(impl, definesFor(Scene{}, implementationFacts(impl), Purpose::Probe));
-        }
-    } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
-        report.status = CheckStatus::CompileError;
-        std::string text = e.what();
-        report.message = text.substr(0, text.find('\n'));
-        report.details = text;
-        report.hint = "fix the first error; the line after it is the line it is about";
-        return report;
-    }
-    // Portable GLSL: the same files as GLSL ES 3.00, which stricter drivers
-    // and browsers compile; a COMPILE ERROR marked "portability error" (docs/decisions.md).
-    if (std::string errors = portable ? "" : portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
-        !errors.empty()) {
-        report.status = CheckStatus::CompileError;
-        report.message = errors.substr(0, errors.find('\n'));
-        report.details = errors;
-        report.hint = kPortabilityHint;
-        return report;
-    }
-
-    // Probes.
-    Scene scene = probeScene();
-    std::vector<std::pair<std::string, ProbeOutcome>> outcomes;
-    for (const ProbeSpec& spec : probesForExercise(exercise.number)) {
-        setPhase(std::string("running the probe ") + spec.name);
-        std::vector<std::array<float, 4>> raw = runProbe(probe, spec, spec.needsScene ? &scene : nullptr);
-        std::vector<float> alpha;
-        for (const auto& texel : raw) alpha.push_back(texel[3]);
-        if (int loop = trippedLoop(alpha)) {
-            // Name the kind of input it ran away on, and that kind's hint.
-            const std::size_t k = std::size_t(std::find_if(alpha.begin(), alpha.end(), [](float a) { return a < 0; }) -
-                                              alpha.begin());
-            const std::string group = k < spec.cases.size() ? spec.cases[k].group : "";
-            loopTimeout(report, probe, loop,
-                        "for one input of " + spec.name + (group.empty() ? "" : " (" + group + ")"));
-            for (const auto& [name, hint] : spec.groupHints)
-                if (name == group) report.hint = hint;
-            return report;
-        }
-        outcomes.emplace_back(spec.signature, evaluateProbe(spec, raw));
-    }
-    bool allStub = std::all_of(outcomes.begin(), outcomes.end(), [](const auto& o) { return o.second.allStub; });
-    if (allStub) {
-        report.status = CheckStatus::NotStarted;
-        report.message = "every function still returns NOT_STARTED";
-        report.hint = "start with the handout: " + exercise.handout();
-        return report;
-    }
-    std::string table;
-    for (const auto& [signature, outcome] : outcomes) {
-        report.probes.push_back(outcome.summary);
-        if (outcome.summary.passed == outcome.summary.total) continue;
-        if (outcome.allStub) {  // one function done, this one not yet
-            std::string line = outcome.summary.name + " is not started: it still returns NOT_STARTED";
-            if (report.message.empty()) {
-                report.message = line;
-                report.hint = "finish every function of the exercise: " + exercise.handout();
-            }
-            table += "  " + signature + ": not started (returns NOT_STARTED)\n";
-            continue;
-        }
-        if (report.message.empty()) {
-            report.message = outcome.firstFailure;
-            report.hint = outcome.hint;
-        }
-        table += outcome.table;
-    }
-
-    if (options.probesOnly) {
-        report.details = table;
-        report.status = std::all_of(report.probes.begin(), report.probes.end(),
-                                    [](const ProbeSummary& p) { return p.passed == p.total; })
-                            ? CheckStatus::Pass
-                            : CheckStatus::Fail;
-        return report;
-    }
-
-    // Images: this exercise from the student, every other from solutions/
-    // (from the student too in a student edition: checkCompanions()).
-    GlRenderer renderer;
-    fs::path outDir = options.outputDir / exercise.id;
-    for (const CheckScene& c : scenes) {
-        setPhase("rendering the check scene " + c.name);
-        renderer.setScene(c.scene);
-        renderer.draw(program, frameFromScene(c.scene));
-        if (int loop = trippedLoopInFramebuffer(renderer.framebuffer(), 1, renderer.width(), renderer.height()))
-            return loopTimeout(report, program, loop, "in one pixel of the check scene " + c.name);
-        Rendering got = renderer.readBack();
-        ImageDiff diff = compareRenderings(got, c.reference);
-        ImageSummary s;
-        s.scene = c.name;
-        s.offFraction = diff.offFraction;
-        s.meanLsb = diff.meanLsb;
-        s.nonFinite = diff.nonFinite;
-        // The core's budget (issue 2): <= 0.5% of pixels off by more than
-        // 1/255, mean difference < 0.2/255, no NaN or Inf.
-        const bool pixelsOk = diff.offFraction <= 0.005, meanOk = diff.meanLsb < 0.2, finite = diff.nonFinite == 0;
-        s.passed = pixelsOk && meanOk && finite;
-        if (!s.passed || options.writeAllImages) {
-            std::error_code ec;
-            fs::create_directories(outDir, ec);
-            s.expectedPng = imagePath(outDir, c.name, "expected");
-            s.gotPng = imagePath(outDir, c.name, "got");
-            s.diffPng = imagePath(outDir, c.name, "diff");
-            if (options.writeExpectedImages) writePng(s.expectedPng, c.reference.display);
-            writePng(s.gotPng, got.display);
-            writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
-        }
-        if (!s.passed) {
-            // Each budget with its number and whether this image is over it.
-            char line[320];
-            std::snprintf(line, sizeof line,
-                          "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%: %s), mean error %.2f/255 "
-                          "(budget 0.2/255: %s)%s\n",
-                          c.name.c_str(), 100 * diff.offFraction, pixelsOk ? "within" : "OVER", diff.meanLsb,
-                          meanOk ? "within" : "OVER",
-                          finite ? "" : (", " + std::to_string(diff.nonFinite) + " NaN/Inf values (budget 0: OVER)").c_str());
-            table += line;
-            table += "    expected " + s.expectedPng + "\n    got      " + s.gotPng + "\n    diff     " + s.diffPng + "\n";
-            if (report.message.empty()) {
-                report.message = std::string(line + 2);
-                report.message.pop_back();
-                report.hint = "the probes pass but the picture differs: compare " + s.gotPng + " with " + s.expectedPng;
-            }
-        }
-        report.images.push_back(s);
-    }
-    report.details = table;
-    bool probesOk = std::all_of(report.probes.begin(), report.probes.end(),
-                                [](const ProbeSummary& p) { return p.passed == p.total; });
-    report.status = probesOk && report.imageFraction() == 1.0 ? CheckStatus::Pass : CheckStatus::Fail;
-    return report;
-}
-
-}  // namespace
-
-namespace {
-
 // The exercise's file, and its report when no check needs to run (missing,
 // the unchanged stub).
 fs::path exerciseFile(const ExerciseInfo& exercise, const CheckOptions& options) {
@@ -535,6 +367,285 @@ std::optional<ExerciseReport> withoutCheck(const ExerciseInfo& exercise, const f
     return std::nullopt;
 }
 
+
+// One exercise's check in two stages, so that checkExercises() can run every
+// exercise's probes before any picture (a file that is slow shows there,
+// before it costs the others their images) and draw the check scenes once
+// for the whole submission.
+
+// What the probe stage leaves: the report so far (its probes, the first
+// failure's message and hint, the failure table in `details`), and whether
+// it is the verdict already (not started, a compile error, a loop that ran
+// away, the probes alone asked for). Otherwise the image stage finishes it.
+struct ProbeStage {
+    ExerciseReport report;
+    bool final = false;
+};
+
+// A check scene drawn once with the student's whole submission (every file
+// whose probes pass; checkExercises()) and within the budget: the exercises
+// in it take this picture instead of drawing their own.
+struct SharedPicture {
+    ImageDiff diff;
+    std::string gotPng, diffPng;  // written once, for every exercise (CheckOptions::writeAllImages)
+};
+
+// The check scenes are within the budget of the course's core (issue 2):
+// <= 0.5% of pixels off by more than 1/255, mean difference < 0.2/255, no
+// NaN or Inf.
+bool withinImageBudget(const ImageDiff& diff) {
+    return diff.offFraction <= 0.005 && diff.meanLsb < 0.2 && diff.nonFinite == 0;
+}
+
+ExerciseReport& compileError(ExerciseReport& report, const Error& e) {
+    report.status = CheckStatus::CompileError;
+    std::string text = e.what();
+    report.message = text.substr(0, text.find('\n'));
+    report.details = text;
+    report.hint = "fix the first error; the line after it is the line it is about";
+    report.probes.clear();
+    report.images.clear();
+    return report;
+}
+
+// The ray tracer of the check scenes: without the teaching views where the
+// course's 09 traces (a third less code for LLVM, the same picture;
+// Purpose::Probe, one program for every check scene, so none is passed).
+ShaderProgram checkRayTracer(const Implementation& impl) {
+    return buildRayTracer(impl, definesFor(Scene{}, implementationFacts(impl), Purpose::Probe));
+}
+
+// `portable`: the student's files already compiled as GLSL ES without an
+// error (checkExercises(): all of them in one program), so this check's own
+// GLSL ES compile is left out. Runs in the current GL context.
+ProbeStage probeStage(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
+                      bool portable) {
+    ProbeStage stage;
+    ExerciseReport& report = stage.report;
+    report.number = exercise.number;
+    report.id = exercise.id;
+    stage.final = true;  // until the probes have run
+    while (gl::GetError() != GL_NO_ERROR) {  // nothing of the exercise before reaches this one's checks
+    }
+    const Implementation impl = checkCompanions(exercise, file, options);
+    ShaderProgram probe;
+    setPhase("compiling");
+    try {
+        AssembledSource vertex = assembleShader("fullscreen.vert", impl, {});
+        // Only this exercise's functions in the probe: the compiler drops the rest.
+        ShaderDefines only{{"RL_PROBE_EXERCISE", std::to_string(exercise.number)}};
+        probe = ShaderProgram(vertex, assembleShader("probe.frag", impl, only));
+    } catch (const Error& e) {  // ShaderError (compile/link) or a refused file or include
+        compileError(report, e);
+        return stage;
+    }
+    // Portable GLSL: the same files as GLSL ES 3.00, which stricter drivers
+    // and browsers compile; a COMPILE ERROR marked "portability error" (docs/decisions.md).
+    if (std::string errors = portable ? "" : portabilityErrors(assembleShader("main.frag", impl, {}, GlslDialect::Es300));
+        !errors.empty()) {
+        report.status = CheckStatus::CompileError;
+        report.message = errors.substr(0, errors.find('\n'));
+        report.details = errors;
+        report.hint = kPortabilityHint;
+        return stage;
+    }
+
+    Scene scene = probeScene();
+    std::vector<std::pair<std::string, ProbeOutcome>> outcomes;
+    for (const ProbeSpec& spec : probesForExercise(exercise.number)) {
+        setPhase(std::string("running the probe ") + spec.name);
+        std::vector<std::array<float, 4>> raw = runProbe(probe, spec, spec.needsScene ? &scene : nullptr);
+        std::vector<float> alpha;
+        for (const auto& texel : raw) alpha.push_back(texel[3]);
+        if (int loop = trippedLoop(alpha)) {
+            // Name the kind of input it ran away on, and that kind's hint.
+            const std::size_t k = std::size_t(std::find_if(alpha.begin(), alpha.end(), [](float a) { return a < 0; }) -
+                                              alpha.begin());
+            const std::string group = k < spec.cases.size() ? spec.cases[k].group : "";
+            loopTimeout(report, probe, loop,
+                        "for one input of " + spec.name + (group.empty() ? "" : " (" + group + ")"));
+            for (const auto& [name, hint] : spec.groupHints)
+                if (name == group) report.hint = hint;
+            return stage;
+        }
+        outcomes.emplace_back(spec.signature, evaluateProbe(spec, raw));
+    }
+    bool allStub = std::all_of(outcomes.begin(), outcomes.end(), [](const auto& o) { return o.second.allStub; });
+    if (allStub) {
+        report.status = CheckStatus::NotStarted;
+        report.message = "every function still returns NOT_STARTED";
+        report.hint = "start with the handout: " + exercise.handout();
+        return stage;
+    }
+    std::string table;
+    for (const auto& [signature, outcome] : outcomes) {
+        report.probes.push_back(outcome.summary);
+        if (outcome.summary.passed == outcome.summary.total) continue;
+        if (outcome.allStub) {  // one function done, this one not yet
+            std::string line = outcome.summary.name + " is not started: it still returns NOT_STARTED";
+            if (report.message.empty()) {
+                report.message = line;
+                report.hint = "finish every function of the exercise: " + exercise.handout();
+            }
+            table += "  " + signature + ": not started (returns NOT_STARTED)\n";
+            continue;
+        }
+        if (report.message.empty()) {
+            report.message = outcome.firstFailure;
+            report.hint = outcome.hint;
+        }
+        table += outcome.table;
+    }
+    report.details = table;
+    const bool probesPass = std::all_of(report.probes.begin(), report.probes.end(),
+                                        [](const ProbeSummary& p) { return p.passed == p.total; });
+    report.status = probesPass ? CheckStatus::Pass : CheckStatus::Fail;  // the image stage decides the rest
+    stage.final = options.probesOnly;  // the probes alone need no ray tracer
+    return stage;
+}
+
+// Images: this exercise from the student, every other from solutions/ (from
+// the student too in a student edition: checkCompanions()). A scene in
+// `shared` (by index) takes the whole submission's picture instead of this
+// exercise's own ray tracer, which is compiled only when a scene needs it.
+ExerciseReport imageStage(ProbeStage stage, const ExerciseInfo& exercise, const fs::path& file,
+                          const CheckOptions& options, const std::vector<CheckScene>& scenes,
+                          const std::map<std::size_t, SharedPicture>& shared = {}) {
+    ExerciseReport& report = stage.report;
+    const bool probesPass = report.status == CheckStatus::Pass;
+    std::string table = report.details;
+    std::optional<ShaderProgram> program;
+    GlRenderer renderer;
+    fs::path outDir = options.outputDir / exercise.id;
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const CheckScene& c = scenes[i];
+        ImageSummary s;
+        s.scene = c.name;
+        ImageDiff diff;
+        auto whole = shared.find(i);
+        if (whole != shared.end()) {
+            diff = whole->second.diff;
+            s.gotPng = whole->second.gotPng;
+            s.diffPng = whole->second.diffPng;
+            if (options.writeAllImages) {
+                s.expectedPng = imagePath(outDir, c.name, "expected");
+                if (options.writeExpectedImages) {
+                    std::error_code ec;
+                    fs::create_directories(outDir, ec);
+                    writePng(s.expectedPng, c.reference.display);
+                }
+            }
+        } else {
+            if (!program) {
+                setPhase("compiling the ray tracer");
+                try {
+                    program = checkRayTracer(checkCompanions(exercise, file, options));
+                } catch (const Error& e) {
+                    return compileError(report, e);
+                }
+            }
+            setPhase("rendering the check scene " + c.name);
+            renderer.setScene(c.scene);
+            renderer.draw(*program, frameFromScene(c.scene));
+            if (int loop = trippedLoopInFramebuffer(renderer.framebuffer(), 1, renderer.width(), renderer.height()))
+                return loopTimeout(report, *program, loop, "in one pixel of the check scene " + c.name);
+            Rendering got = renderer.readBack();
+            diff = compareRenderings(got, c.reference);
+            if (!withinImageBudget(diff) || options.writeAllImages) {
+                std::error_code ec;
+                fs::create_directories(outDir, ec);
+                s.expectedPng = imagePath(outDir, c.name, "expected");
+                s.gotPng = imagePath(outDir, c.name, "got");
+                s.diffPng = imagePath(outDir, c.name, "diff");
+                if (options.writeExpectedImages) writePng(s.expectedPng, c.reference.display);
+                writePng(s.gotPng, got.display);
+                writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
+            }
+        }
+        s.offFraction = diff.offFraction;
+        s.meanLsb = diff.meanLsb;
+        s.nonFinite = diff.nonFinite;
+        s.passed = withinImageBudget(diff);
+        if (!s.passed) {
+            // Each budget with its number and whether this image is over it.
+            const bool pixelsOk = diff.offFraction <= 0.005, meanOk = diff.meanLsb < 0.2, finite = diff.nonFinite == 0;
+            char line[320];
+            std::snprintf(line, sizeof line,
+                          "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%: %s), mean error %.2f/255 "
+                          "(budget 0.2/255: %s)%s\n",
+                          c.name.c_str(), 100 * diff.offFraction, pixelsOk ? "within" : "OVER", diff.meanLsb,
+                          meanOk ? "within" : "OVER",
+                          finite ? "" : (", " + std::to_string(diff.nonFinite) + " NaN/Inf values (budget 0: OVER)").c_str());
+            table += line;
+            table += "    expected " + s.expectedPng + "\n    got      " + s.gotPng + "\n    diff     " + s.diffPng + "\n";
+            if (report.message.empty()) {
+                report.message = std::string(line + 2);
+                report.message.pop_back();
+                report.hint = "the probes pass but the picture differs: compare " + s.gotPng + " with " + s.expectedPng;
+            }
+        }
+        report.images.push_back(s);
+    }
+    report.details = table;
+    report.status = probesPass && report.imageFraction() == 1.0 ? CheckStatus::Pass : CheckStatus::Fail;
+    return report;
+}
+
+// One exercise's whole check (checkExercise()'s child, or in-process).
+ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, const CheckOptions& options,
+                         const std::vector<CheckScene>& scenes) {
+    fastShaderCompiles();
+    auto context = createHeadlessContext(parseBackend(options.backend));
+    ProbeStage stage = probeStage(exercise, file, options, false);
+    return stage.final ? stage.report : imageStage(std::move(stage), exercise, file, options, scenes);
+}
+
+// The check scenes drawn once with the student's files of `inWhole` (every
+// other from the companions, as a check has them): those within the budget,
+// by index, their got/diff PNGs written once to OUT/all-files/ when asked.
+// None when the program does not compile or a loop runs away (each exercise
+// then draws its own, which says why).
+std::map<std::size_t, SharedPicture> wholeSubmissionPictures(const std::vector<const ExerciseInfo*>& inWhole,
+                                                             const CheckOptions& options,
+                                                             const std::vector<CheckScene>& scenes) {
+    std::map<std::size_t, SharedPicture> pictures;
+    if (inWhole.size() < 2) return pictures;  // one exercise: its own ray tracer is the same program
+    Implementation whole = checkCompanions(*inWhole[0], exerciseFile(*inWhole[0], options), options);
+    for (const ExerciseInfo* e : inWhole) whole.overrides[e->file()] = exerciseFile(*e, options);
+    ShaderProgram program;
+    setPhase("compiling the ray tracer of every file");
+    try {
+        program = checkRayTracer(whole);
+    } catch (const Error&) {
+        while (gl::GetError() != GL_NO_ERROR) {
+        }
+        return pictures;
+    }
+    GlRenderer renderer;
+    const fs::path outDir = options.outputDir / "all-files";
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+        const CheckScene& c = scenes[i];
+        setPhase("rendering the check scene " + c.name + " with every file");
+        renderer.setScene(c.scene);
+        renderer.draw(program, frameFromScene(c.scene));
+        if (trippedLoopInFramebuffer(renderer.framebuffer(), 1, renderer.width(), renderer.height())) return {};
+        Rendering got = renderer.readBack();
+        SharedPicture p;
+        p.diff = compareRenderings(got, c.reference);
+        if (!withinImageBudget(p.diff)) continue;
+        if (options.writeAllImages) {
+            std::error_code ec;
+            fs::create_directories(outDir, ec);
+            p.gotPng = imagePath(outDir, c.name, "got");
+            p.diffPng = imagePath(outDir, c.name, "diff");
+            writePng(p.gotPng, got.display);
+            writePng(p.diffPng, differenceHeatMap(got.display, c.reference.display));
+        }
+        pictures[i] = p;
+    }
+    return pictures;
+}
+
 }  // namespace
 
 std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
@@ -549,72 +660,124 @@ std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*
             checked.push_back(k);
     }
     if (options.isolate && checked.size() > 1) {
-        // One child for all of them: the work of each one's child, one after
-        // another; each report's seconds its own check's.
-        // The reports done so far, replaced after each check (a scratch file
-        // for this process only: renamed into place, so a killed child leaves
-        // the last whole list), so that a failed child costs only the checks
-        // from the one it failed in onward.
+        // One child for all of them, in two rounds: every exercise's probes
+        // (a file that is slow or runs away shows there, before any picture),
+        // then the check scenes, drawn once with every file whose probes pass
+        // (wholeSubmissionPictures()) and by an exercise's own ray tracer only
+        // where that picture is not within the budget. What the child has
+        // done is kept in a scratch file after each step (renamed into place,
+        // so a killed child leaves the last whole state): when it dies while
+        // probing an exercise, that exercise is checked in its own child and
+        // the others in a new shared child with the probes they passed kept;
+        // after a second death, or one while drawing, the rest are checked
+        // each in its own child, as checkExercise() does.
         std::error_code ec;
         fs::create_directories(options.outputDir, ec);
         const fs::path progress = options.outputDir / ".checked-so-far.json";
-        fs::remove(progress, ec);
-        auto work = [&]() {
-            json all = json::array();
-            setPhase("starting the OpenGL context");
-            fastShaderCompiles();
-            auto context = createHeadlessContext(parseBackend(options.backend));
-            // Every checked file of the student in one GLSL ES program: where it
-            // compiles, so does each check's (its file with the others' from
-            // solutions/, which are portable, and a clash between files is the
-            // desktop compile's error first), and those compiles are left out.
-            // Any error, in any file: each check compiles its own, as before,
-            // so that the error is reported by the exercise it belongs to.
-            bool portable = false;
-            if (!options.probesOnly) {
-                try {
-                    Implementation all = checkCompanions(*exercises[checked[0]], exerciseFile(*exercises[checked[0]], options), options);
-                    for (std::size_t k : checked) all.overrides[exercises[k]->file()] = exerciseFile(*exercises[k], options);
-                    portable = portabilityErrors(assembleShader("main.frag", all, {}, GlslDialect::Es300)).empty();
-                } catch (const Error&) {  // a refused file or include: each check says so itself
-                    portable = false;
+        std::map<std::size_t, ExerciseReport> probed;  // probe stage done, images not (index in `exercises`)
+        std::vector<std::size_t> pending = checked;
+        for (int deaths = 0; !pending.empty() && deaths < 2 && !interruptRequested();) {
+            fs::remove(progress, ec);
+            auto work = [&]() {
+                json state = {{"probed", json::object()}, {"done", json::object()}};
+                auto keep = [&](const char* what, std::size_t k, const ExerciseReport& report) {
+                    state[what][std::to_string(k)] = toJson(report);
+                    {
+                        std::ofstream out(progress.string() + ".new", std::ios::binary | std::ios::trunc);
+                        out << state.dump();
+                    }
+                    std::error_code renamed;
+                    fs::rename(progress.string() + ".new", progress, renamed);
+                };
+                auto seconds = [](std::chrono::steady_clock::time_point start) {
+                    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                };
+                setPhase("starting the OpenGL context");
+                fastShaderCompiles();
+                auto context = createHeadlessContext(parseBackend(options.backend));
+                // Every checked file of the student in one GLSL ES program: where it
+                // compiles, so does each check's (its file with the others' from
+                // solutions/, which are portable, and a clash between files is the
+                // desktop compile's error first), and those compiles are left out.
+                // Any error, in any file: each check compiles its own, as before,
+                // so that the error is reported by the exercise it belongs to.
+                bool portable = false;
+                if (!options.probesOnly) {
+                    try {
+                        Implementation all = checkCompanions(*exercises[pending[0]], exerciseFile(*exercises[pending[0]], options), options);
+                        for (std::size_t k : pending) all.overrides[exercises[k]->file()] = exerciseFile(*exercises[k], options);
+                        portable = portabilityErrors(assembleShader("main.frag", all, {}, GlslDialect::Es300)).empty();
+                    } catch (const Error&) {  // a refused file or include: each check says so itself
+                        portable = false;
+                    }
+                    while (gl::GetError() != GL_NO_ERROR) {
+                    }
                 }
-                while (gl::GetError() != GL_NO_ERROR) {
+                std::map<std::size_t, ProbeStage> stages;  // waiting for their images
+                for (std::size_t k : pending) {
+                    auto known = probed.find(k);
+                    if (known != probed.end()) {
+                        stages[k] = ProbeStage{known->second, false};
+                        continue;
+                    }
+                    const auto start = std::chrono::steady_clock::now();
+                    ProbeStage stage = probeStage(*exercises[k], exerciseFile(*exercises[k], options), options, portable);
+                    stage.report.seconds = seconds(start);
+                    keep(stage.final ? "done" : "probed", k, stage.report);
+                    if (!stage.final) stages[k] = std::move(stage);
                 }
-            }
-            for (std::size_t k : checked) {
-                const auto start = std::chrono::steady_clock::now();
-                ExerciseReport report = runChecks(*exercises[k], exerciseFile(*exercises[k], options), options, scenes,
-                                                  context.get(), portable);
-                report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                all.push_back(toJson(report));
-                {
-                    std::ofstream out(progress.string() + ".new", std::ios::binary | std::ios::trunc);
-                    out << all.dump();
+                std::vector<const ExerciseInfo*> inWhole;
+                for (const auto& [k, stage] : stages)
+                    if (stage.report.status == CheckStatus::Pass) inWhole.push_back(exercises[k]);
+                const std::map<std::size_t, SharedPicture> pictures = wholeSubmissionPictures(inWhole, options, scenes);
+                for (auto& [k, stage] : stages) {
+                    const auto start = std::chrono::steady_clock::now();
+                    const bool inPictures = stage.report.status == CheckStatus::Pass;
+                    ExerciseReport report = imageStage(std::move(stage), *exercises[k], exerciseFile(*exercises[k], options),
+                                                       options, scenes, inPictures ? pictures : std::map<std::size_t, SharedPicture>{});
+                    report.seconds += seconds(start);
+                    keep("done", k, report);
                 }
-                std::error_code renamed;
-                fs::rename(progress.string() + ".new", progress, renamed);
+                return state.dump();
+            };
+            IsolationLimits limits;
+            limits.timeoutSeconds = options.timeoutSeconds;  // one exercise's: a normal submission takes a few seconds
+            IsolatedResult result = runIsolated(work, limits);
+            const bool finished = result.outcome == IsolatedResult::Outcome::Finished;
+            json state;
+            try {
+                state = finished ? json::parse(result.output)
+                        : fs::exists(progress, ec) ? json::parse(readRegularFile(progress, std::uintmax_t(1) << 30))
+                                                   : json::object();
+            } catch (const std::exception&) {  // unreadable: every one again
+                state = json::object();
             }
-            return all.dump();
-        };
-        IsolationLimits limits;
-        limits.timeoutSeconds = options.timeoutSeconds;  // one exercise's: a normal submission takes a few seconds
-        IsolatedResult result = runIsolated(work, limits);
-        std::size_t done = 0;  // checks whose reports came back
-        try {
-            json all = result.outcome == IsolatedResult::Outcome::Finished ? json::parse(result.output)
-                       : fs::exists(progress, ec)                           ? json::parse(readRegularFile(progress, std::uintmax_t(1) << 30))
-                                                                            : json::array();
-            if (all.is_array() && all.size() <= checked.size()) {
-                for (std::size_t i = 0; i < all.size(); ++i) reports[checked[i]] = reportFromJson(all[i]);
-                done = all.size();
+            fs::remove(progress, ec);
+            auto recorded = [&](const char* what, std::size_t k) -> const json* {
+                if (!state.is_object() || !state.contains(what) || !state[what].is_object()) return nullptr;
+                auto it = state[what].find(std::to_string(k));
+                return it == state[what].end() ? nullptr : &*it;
+            };
+            std::vector<std::size_t> left;
+            for (std::size_t k : pending) {
+                if (const json* done = recorded("done", k)) {
+                    reports[k] = reportFromJson(*done);
+                    continue;
+                }
+                if (const json* stage = recorded("probed", k)) probed[k] = reportFromJson(*stage);
+                left.push_back(k);
             }
-        } catch (const std::exception&) {  // unreadable: every one again
-            done = 0;
+            pending = left;
+            if (finished || pending.empty()) break;  // a finished child left nothing: each in its own child
+            ++deaths;
+            // Died while probing: that exercise in its own child, a new shared child for the rest.
+            auto probing = std::find_if(pending.begin(), pending.end(), [&](std::size_t k) { return !probed.count(k); });
+            if (probing == pending.end()) break;  // died drawing: each in its own child
+            if (interruptRequested()) break;
+            reports[*probing] = checkExercise(*exercises[*probing], options, scenes);
+            pending.erase(probing);
         }
-        fs::remove(progress, ec);
-        // From the one it failed in onward: each in its own child, as checkExercise() does.
-        checked.erase(checked.begin(), checked.begin() + std::ptrdiff_t(done));
+        checked = pending;
     }
     for (std::size_t k : checked) {
         if (interruptRequested()) break;  // Ctrl-C: the caller discards what is left (grading throws Interrupted)

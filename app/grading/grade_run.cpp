@@ -283,8 +283,8 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
     PoolLimits limits;
     limits.jobs = settings.jobs;
     // A worker that outlives every one of its checks timing out, plus staging, is stuck.
-    // (+ one timeout: the shared child of checkExercises() before the fallback)
-    limits.deadlineSeconds = double(settings.rubric.exercises.size() + 1) * (settings.timeoutSeconds + 15) + 120;
+    // (+ two timeouts: the shared children of checkExercises() that may die before the fallback)
+    limits.deadlineSeconds = double(settings.rubric.exercises.size() + 2) * (settings.timeoutSeconds + 15) + 120;
     // A check process orphaned by a killed worker still ends: each worker
     // (and each check it starts) gets at most this much CPU time, well above
     // what a check's wall-clock timeout allows llvmpipe's threads, so the

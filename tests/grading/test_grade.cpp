@@ -535,6 +535,63 @@ TEST(GradeRun, TheRunsShaderCacheCannotCarryResultsBetweenStudents) {
     if (!HasFailure()) fs::remove_all(root);
 }
 
+// A student's check scenes are drawn once with every file whose probes pass
+// (checkExercises(), docs/grading.md "Scale"), and an exercise draws its own
+// only where that picture is not within the budget: a complete submission
+// written differently from solutions/ (the course's alternatives) takes the
+// shared pictures and full marks; a file whose probes pass but whose picture
+// is wrong (10-display blacking out all but the first rows: the probes' grid
+// is one or two rows high) fails its images alone, and every other exercise
+// earns its marks from its own ray tracer, with the solution's 10-display.
+TEST(GradeRun, TheWholeSubmissionIsDrawnOnceAndAWrongPictureByEachFile) {
+    fs::path root = freshTempDir("grade_whole");
+    fs::path sub = root / "submissions", out = root / "out";
+    std::map<std::string, std::string> alternatives;
+    for (const std::string& exercise : kAll) {
+        std::vector<fs::path> files;
+        std::error_code ec;
+        for (fs::directory_iterator it(rl::courseDir() / exercise / "alternatives", ec), end; !ec && it != end;
+             it.increment(ec))
+            files.push_back(it->path());
+        std::sort(files.begin(), files.end());
+        if (!files.empty()) alternatives[exercise + ".glsl"] = readText(files.front());
+    }
+    ASSERT_GE(alternatives.size(), 6u) << "the course's alternatives";
+    writeFolder(sub / "alternatives", solutionFiles(alternatives));
+    std::string display = solutionFiles()["10-display.glsl"];
+    const std::string head = "vec3 toneMap(vec3 c, int op) {\n";
+    ASSERT_NE(display.find(head), std::string::npos);
+    display.insert(display.find(head) + head.size(), "    if (gl_FragCoord.y > 24.0) return vec3(0.0);\n");
+    writeFolder(sub / "picture-only", solutionFiles({{"10-display.glsl", display}}));
+    CommandResult run = runRaylab(gradeArgs(sub, out));
+    ASSERT_EQ(run.status, 0) << run.output;
+
+    auto images = [](const Graded& g) { return g.record.at("images"); };
+    Student alt = load(out, "alternatives");
+    EXPECT_DOUBLE_EQ(alt.score, 100);
+    expectOthersFull(alt, "alternatives", {});
+    for (const std::string& exercise : kAll)
+        for (const json& image : images(alt.exercises.at(exercise)))
+            EXPECT_EQ(image.at("got").get<std::string>(), "images/all-files/" + image.at("scene").get<std::string>() + "-got.png")
+                << exercise << ": the whole submission's picture";
+    EXPECT_FALSE(fs::exists(out / "alternatives" / "images" / "05-ggx")) << "no exercise drew its own";
+
+    Student wrong = load(out, "picture-only");
+    const Graded& shown = wrong.exercises.at("10-display");
+    EXPECT_EQ(shown.status, "FAIL") << shown.message;
+    EXPECT_DOUBLE_EQ(shown.record.at("probe_fraction").get<double>(), 1.0);
+    EXPECT_LT(shown.record.at("image_fraction").get<double>(), 1.0);
+    EXPECT_TRUE(contains(shown.message, "of pixels off")) << shown.message;
+    expectOthersFull(wrong, "picture-only", {"10-display"});
+    for (const std::string& exercise : kAll) {
+        int own = 0;
+        for (const json& image : images(wrong.exercises.at(exercise)))
+            own += image.at("got").get<std::string>().rfind("images/" + exercise + "/", 0) == 0;
+        EXPECT_GT(own, 0) << exercise << ": a scene the whole submission fails is drawn by the exercise's own ray tracer";
+    }
+    if (!HasFailure()) fs::remove_all(root);
+}
+
 TEST(GradeRun, ShardsMergeToTheUnshardedGrades) {
     fs::path root = freshTempDir("grade_shards");
     fs::path sub = root / "submissions";
