@@ -512,6 +512,8 @@ ExerciseReport imageStage(ProbeStage stage, const ExerciseInfo& exercise, const 
                           const CheckOptions& options, const std::vector<CheckScene>& scenes,
                           const std::map<std::size_t, SharedPicture>& shared = {}) {
     ExerciseReport& report = stage.report;
+    while (gl::GetError() != GL_NO_ERROR) {  // nothing drawn before reaches this exercise's pictures
+    }
     const bool probesPass = report.status == CheckStatus::Pass;
     std::string table = report.details;
     std::optional<ShaderProgram> program;
@@ -602,7 +604,8 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
 
 // The check scenes drawn once with the student's files of `inWhole` (every
 // other from the companions, as a check has them): those within the budget,
-// by index, their got/diff PNGs written once to OUT/all-files/ when asked.
+// by index, their got/diff PNGs written once to <outputDir>/all-files/ when
+// asked (grading: OUT/<id>/images/all-files/).
 // None when the program does not compile or a loop runs away (each exercise
 // then draws its own, which says why).
 std::map<std::size_t, SharedPicture> wholeSubmissionPictures(const std::vector<const ExerciseInfo*>& inWhole,
