@@ -102,13 +102,19 @@ std::vector<CheckScene> makeCheckScenes();
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
                              const std::vector<CheckScene>& scenes);
 
-// The same verdicts as checkExercise() for each of `exercises` (in that
-// order), with options.isolate their checks share one child process (one
-// driver start for a student's ten exercises instead of ten; issue #25).
-// When that child does not finish cleanly within one exercise's timeout
-// (a crash, a loop, the memory limit) or returns fewer reports, every
-// exercise is checked again in its own child, as checkExercise() does:
-// such a submission gets the verdicts per-exercise isolation gives.
+// The verdicts of checkExercise() for each of `exercises` (in that order).
+// With options.isolate their checks share one child process (one driver
+// start for a student's ten exercises instead of ten; issue #25), in two
+// rounds: every exercise's probes, then the check scenes drawn once by one
+// ray tracer of every file whose probes pass; an exercise takes each of
+// those pictures that is within the budget, and draws a scene with its own
+// ray tracer (its file, the companions for the rest) only where it is not
+// (docs/decisions.md, "The check scenes drawn once per student"). When that
+// child dies while probing an exercise (its timeout, a crash, the memory
+// limit), that exercise is checked in its own child and the rest in a new
+// shared child that keeps the probes they passed; after a second death, or
+// one while drawing, each exercise left is checked in its own child, as
+// checkExercise() does.
 std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*>& exercises,
                                            const CheckOptions& options, const std::vector<CheckScene>& scenes);
 
