@@ -390,12 +390,17 @@ struct SharedPicture {
     std::string gotPng, diffPng;  // written once, for every exercise (CheckOptions::writeAllImages)
 };
 
-// The check scenes are within the budget of the course's core (issue 2):
-// <= 0.5% of pixels off by more than 1/255, mean difference < 0.2/255, no
-// NaN or Inf.
-bool withinImageBudget(const ImageDiff& diff) {
-    return diff.offFraction <= 0.005 && diff.meanLsb < 0.2 && diff.nonFinite == 0;
+// The budget of a check scene, the course core's (issue 2): <= 0.5% of
+// pixels off by more than 1/255, mean difference < 0.2/255, no NaN or Inf;
+// each part apart, for the failure's message.
+struct ImageBudget {
+    bool pixelsOk, meanOk, finite;
+    bool within() const { return pixelsOk && meanOk && finite; }
+};
+ImageBudget imageBudget(const ImageDiff& diff) {
+    return {diff.offFraction <= 0.005, diff.meanLsb < 0.2, diff.nonFinite == 0};
 }
+bool withinImageBudget(const ImageDiff& diff) { return imageBudget(diff).within(); }
 
 ExerciseReport& compileError(ExerciseReport& report, const Error& e) {
     report.status = CheckStatus::CompileError;
@@ -529,14 +534,6 @@ ExerciseReport imageStage(ProbeStage stage, const ExerciseInfo& exercise, const 
             diff = whole->second.diff;
             s.gotPng = whole->second.gotPng;
             s.diffPng = whole->second.diffPng;
-            if (options.writeAllImages) {
-                s.expectedPng = imagePath(outDir, c.name, "expected");
-                if (options.writeExpectedImages) {
-                    std::error_code ec;
-                    fs::create_directories(outDir, ec);
-                    writePng(s.expectedPng, c.reference.display);
-                }
-            }
         } else {
             if (!program) {
                 setPhase("compiling the ray tracer");
@@ -556,10 +553,8 @@ ExerciseReport imageStage(ProbeStage stage, const ExerciseInfo& exercise, const 
             if (!withinImageBudget(diff) || options.writeAllImages) {
                 std::error_code ec;
                 fs::create_directories(outDir, ec);
-                s.expectedPng = imagePath(outDir, c.name, "expected");
                 s.gotPng = imagePath(outDir, c.name, "got");
                 s.diffPng = imagePath(outDir, c.name, "diff");
-                if (options.writeExpectedImages) writePng(s.expectedPng, c.reference.display);
                 writePng(s.gotPng, got.display);
                 writePng(s.diffPng, differenceHeatMap(got.display, c.reference.display));
             }
@@ -567,17 +562,25 @@ ExerciseReport imageStage(ProbeStage stage, const ExerciseInfo& exercise, const 
         s.offFraction = diff.offFraction;
         s.meanLsb = diff.meanLsb;
         s.nonFinite = diff.nonFinite;
-        s.passed = withinImageBudget(diff);
+        const ImageBudget budget = imageBudget(diff);
+        s.passed = budget.within();
+        if (!s.passed || options.writeAllImages) {
+            s.expectedPng = imagePath(outDir, c.name, "expected");
+            if (options.writeExpectedImages) {
+                std::error_code ec;
+                fs::create_directories(outDir, ec);
+                writePng(s.expectedPng, c.reference.display);
+            }
+        }
         if (!s.passed) {
             // Each budget with its number and whether this image is over it.
-            const bool pixelsOk = diff.offFraction <= 0.005, meanOk = diff.meanLsb < 0.2, finite = diff.nonFinite == 0;
             char line[320];
             std::snprintf(line, sizeof line,
                           "  image %s: %.2f%% of pixels off by more than 1/255 (budget 0.5%%: %s), mean error %.2f/255 "
                           "(budget 0.2/255: %s)%s\n",
-                          c.name.c_str(), 100 * diff.offFraction, pixelsOk ? "within" : "OVER", diff.meanLsb,
-                          meanOk ? "within" : "OVER",
-                          finite ? "" : (", " + std::to_string(diff.nonFinite) + " NaN/Inf values (budget 0: OVER)").c_str());
+                          c.name.c_str(), 100 * diff.offFraction, budget.pixelsOk ? "within" : "OVER", diff.meanLsb,
+                          budget.meanOk ? "within" : "OVER",
+                          budget.finite ? "" : (", " + std::to_string(diff.nonFinite) + " NaN/Inf values (budget 0: OVER)").c_str());
             table += line;
             table += "    expected " + s.expectedPng + "\n    got      " + s.gotPng + "\n    diff     " + s.diffPng + "\n";
             if (report.message.empty()) {
@@ -602,6 +605,14 @@ ExerciseReport runChecks(const ExerciseInfo& exercise, const fs::path& file, con
     return stage.final ? stage.report : imageStage(std::move(stage), exercise, file, options, scenes);
 }
 
+// The files of a check of every exercise in `own` at once: theirs from the
+// student, the rest as a check has them (checkCompanions()).
+Implementation withOwnFiles(const std::vector<const ExerciseInfo*>& own, const CheckOptions& options) {
+    Implementation impl = checkCompanions(*own.front(), exerciseFile(*own.front(), options), options);
+    for (const ExerciseInfo* e : own) impl.overrides[e->file()] = exerciseFile(*e, options);
+    return impl;
+}
+
 // The check scenes drawn once with the student's files of `inWhole` (every
 // other from the companions, as a check has them): those within the budget,
 // by index, their got/diff PNGs written once to <outputDir>/all-files/ when
@@ -613,12 +624,10 @@ std::map<std::size_t, SharedPicture> wholeSubmissionPictures(const std::vector<c
                                                              const std::vector<CheckScene>& scenes) {
     std::map<std::size_t, SharedPicture> pictures;
     if (inWhole.size() < 2) return pictures;  // one exercise: its own ray tracer is the same program
-    Implementation whole = checkCompanions(*inWhole[0], exerciseFile(*inWhole[0], options), options);
-    for (const ExerciseInfo* e : inWhole) whole.overrides[e->file()] = exerciseFile(*e, options);
     ShaderProgram program;
     setPhase("compiling the ray tracer of every file");
     try {
-        program = checkRayTracer(whole);
+        program = checkRayTracer(withOwnFiles(inWhole, options));
     } catch (const Error&) {
         while (gl::GetError() != GL_NO_ERROR) {
         }
@@ -707,9 +716,9 @@ std::vector<ExerciseReport> checkExercises(const std::vector<const ExerciseInfo*
                 bool portable = false;
                 if (!options.probesOnly) {
                     try {
-                        Implementation all = checkCompanions(*exercises[pending[0]], exerciseFile(*exercises[pending[0]], options), options);
-                        for (std::size_t k : pending) all.overrides[exercises[k]->file()] = exerciseFile(*exercises[k], options);
-                        portable = portabilityErrors(assembleShader("main.frag", all, {}, GlslDialect::Es300)).empty();
+                        std::vector<const ExerciseInfo*> own;
+                        for (std::size_t k : pending) own.push_back(exercises[k]);
+                        portable = portabilityErrors(assembleShader("main.frag", withOwnFiles(own, options), {}, GlslDialect::Es300)).empty();
                     } catch (const Error&) {  // a refused file or include: each check says so itself
                         portable = false;
                     }
