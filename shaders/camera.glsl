@@ -22,12 +22,42 @@ float cameraFovY() {
 #endif
 }
 
+// The camera's basis (columns of u_cameraToWorld) and the picture's size;
+// a program for one picture gets them as constants (RL_CAMERA_RIGHT, ...:
+// app/render/define_table.cpp), so that exercise 01's ray folds.
+vec3 cameraRight() {
+#ifdef RL_CAMERA_RIGHT
+    return RL_CAMERA_RIGHT;
+#else
+    return u_cameraToWorld[0].xyz;
+#endif
+}
+vec3 cameraUp() {
+#ifdef RL_CAMERA_UP
+    return RL_CAMERA_UP;
+#else
+    return u_cameraToWorld[1].xyz;
+#endif
+}
+// forward / tan(fov_y / 2): the same directions as forward with fov_y.
+vec3 cameraForward() {
+#ifdef RL_CAMERA_BACK
+    return -RL_CAMERA_BACK;
+#else
+    return -u_cameraToWorld[2].xyz;
+#endif
+}
+vec2 resolution() {
+#ifdef RL_RESOLUTION
+    return RL_RESOLUTION;
+#else
+    return u_resolution;
+#endif
+}
+
 // The direction of sample s (of n*n) in the pixel whose lower-left corner is
 // `pixel` (column i, row j from the bottom), by exercise 01.
 vec3 primaryRayDirection(vec2 pixel, int s, int n) {
     vec2 offset = sampleOffset(s, n);
-    vec3 right = u_cameraToWorld[0].xyz;
-    vec3 up = u_cameraToWorld[1].xyz;
-    vec3 forward = -u_cameraToWorld[2].xyz;  // forward / tan(fov_y / 2): the same directions as forward with fov_y
-    return cameraRayDirection(pixel + offset, u_resolution, cameraFovY(), right, up, forward);
+    return cameraRayDirection(pixel + offset, resolution(), cameraFovY(), cameraRight(), cameraUp(), cameraForward());
 }

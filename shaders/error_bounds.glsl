@@ -17,11 +17,6 @@ const float UNIT_ROUNDOFF = 5.9604644775390625e-8;
 // error of k chained roundings.
 float roundingGamma(float k) { return k * UNIT_ROUNDOFF / (1.0 - k * UNIT_ROUNDOFF); }
 
-// Precomputed by the host in double for each sphere: |centre|^2 - r^2 (the
-// centre relative to the anchor), the constant term of the quadratic of a ray
-// from the anchor (scene.glsl, u_sphereExtra.z).
-float sphereAnchorC(int i) { return u_sphereExtra[i].z; }
-
 // Whether closestHit() refines the exercise's roots on sphere i: the huge
 // spheres of the scene (radius at least REFINE_RADIUS_RATIO times the
 // smallest), the only ones whose |o - c|^2 - r^2 the exercise's float32
@@ -96,8 +91,8 @@ float rootFromC(vec3 o, vec3 d, vec3 c, float C) {
 // double for the camera of this frame (SceneUniformBlock::upload, every frame
 // of the live view), and whether the exercise's float32 cannot tell the
 // camera's side of it (then closestHit() takes the camera ray's root from it).
-float cameraC(int i) { return u_sphereFromCamera[i].x; }
-bool cameraSideFromHost(int i) { return u_sphereFromCamera[i].y != 0.0; }
+float cameraC(int i) { return cameraSphere(i).x; }
+bool cameraSideFromHost(int i) { return cameraSphere(i).y != 0.0; }
 
 // Secondary rays near a huge sphere (refinesRoot): C from the anchor form
 // C_a - 2 o.c + |o|^2, which rounds by u (|C_a| + 2 |o|.|c| + |o|^2), small

@@ -50,5 +50,13 @@ bool rl_loop(bool condition, int loop) {
     return true;
 }
 
+// The condition of a loop that needs no guard (a counter up to a small
+// bound, shader/loop_guard.h), counted in the invocation's total so that the
+// guards of the loops around it see its iterations.
+bool rl_counted(bool condition) {
+    rl_loopTotal += condition ? 1 : 0;
+    return condition;
+}
+
 // The alpha an output carries: `normal`, or -ID of the loop that went over.
 float loopGuardAlpha(float normal) { return rl_loopTripped != 0 ? -float(rl_loopTripped) : normal; }

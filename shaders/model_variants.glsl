@@ -33,7 +33,13 @@
 const float MIN_ONE_MINUS_F0 = 1e-8;
 
 // The conductor edge tint of sphere i (Gulbrandsen's g, linear rgb in [0, 1]).
-vec3 sphereEdgeTint(int i) { return u_sphereEdgeTint[i].rgb; }
+vec3 sphereEdgeTint(int i) {
+#ifdef RL_SPHERE_EDGE_TINT
+    return RL_SPHERE_EDGE_TINT(i);
+#else
+    return u_sphereEdgeTint[i].rgb;
+#endif
+}
 
 // x^5 (a name no exercise file uses: students' helpers must not collide).
 float fifthPower(float x) {

@@ -4,8 +4,10 @@
 // target; along the way each value of an exercise function is "recorded":
 // the k-th value goes to the fragment of column k, as (value, key). Nothing
 // but a draw and a float read-back: the same in WebGL2 (no SSBO, no atomics).
-// Included by raytracer.glsl before lighting.glsl only with RL_PIXEL_DEBUG;
-// lighting.glsl's shadeHit() and backgroundRadiance() call it.
+// Included by raytracer.glsl after lighting.glsl only with RL_PIXEL_DEBUG;
+// trace.glsl's shadeHit() and backgroundRadiance(), the exercises' entries to
+// the light, call debugShadeHit() and debugBackgroundRadiance() instead of
+// lighting.glsl's hitRadiance() and missRadiance(), which these wrap.
 
 // What a value is (the host's PixelValueKind, app/render/pixel_debugger.h).
 const int DBG_SAMPLE_OFFSET = 1;   // 01 sampleOffset(0, n), n
@@ -46,8 +48,6 @@ void debugRecord(int kind, int bounce, int light, vec3 value) {
     ++g_debugCount;
 }
 
-float shadowVisibility(Hit hit, vec3 lightPosition);  // lighting.glsl
-
 // Everything the exercises compute at one hit, light by light, with the
 // same inputs as the picture's shadeHit().
 void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
@@ -67,10 +67,7 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
         debugRecord(DBG_IRRADIANCE, bounce, i, E);
         debugRecord(DBG_LAMBERT, bounce, i, Fd_Lambert(m.albedo));
         float visibility = -1.0;
-        if (E != vec3(0.0)) {  // as lightTerm(): no shadow ray where the light adds nothing
-            g_shadowLight = i;
-            visibility = shadowVisibility(hit, lightPosition(i));
-        }
+        if (E != vec3(0.0)) visibility = lightShadow(hit, i);  // as lightTerm(): no shadow ray where the light adds nothing
         debugRecord(DBG_VISIBILITY, bounce, i, vec3(visibility, 0.0, 0.0));
         debugRecord(DBG_D, bounce, i, vec3(D_GGX(hit.n, h, ggxAlpha(m.roughness)), 0.0, 0.0));
         debugRecord(DBG_G, bounce, i, vec3(G_SchlickGGX(NoV, NoL, m.roughness), 0.0, 0.0));
@@ -82,4 +79,23 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
         debugRecord(DBG_SPECULAR, bounce, i, specularBRDF(hit.n, v, l, m) * lit);
         debugRecord(DBG_BRDF, bounce, i, cookTorranceBRDF(hit.n, v, l, m) * lit);
     }
+}
+
+// shadeHit() of the debugger's program: this bounce's weight (1), or its
+// values recorded on the way to the hit's radiance.
+vec3 debugShadeHit(Hit hit, vec3 v, int bounce) {
+    if (g_debugUnitWeight) return vec3(1.0);
+    if (!g_debugRecording) return hitRadiance(hit, v);
+    debugRecordHit(hit, v, sphereMaterial(hit.sphere), bounce);
+    vec3 radiance = hitRadiance(hit, v);
+    debugRecord(DBG_SHADED, bounce, -1, radiance);
+    return radiance;
+}
+
+// backgroundRadiance() of the debugger's program; `kept`: the bounce view
+// keeps this ray's light, `bounce`: the ray's place on the path (0: the camera's).
+vec3 debugBackgroundRadiance(bool cameraRay, bool kept, int bounce) {
+    if (g_debugRecording) debugRecord(DBG_MISS, bounce, -1, backgroundColour());
+    if (g_debugUnitWeight) return kept ? vec3(1.0) : vec3(0.0);
+    return kept ? missRadiance(cameraRay) : vec3(0.0);
 }

@@ -41,7 +41,7 @@ vec4 evaluateProbe() {
     Material m = Material(a.xyz, a.w, b.x, b.y);
     // visibility: p, n, light (c), error, sphere (NO_SPHERE: only the offset keeps the ray off the surface)
     int sphere = int(d.w);
-    Hit hit = Hit(1.0, a.xyz, b.xyz, d.xyz, sphere, sphere >= 0 ? u_sphereGeometry[max(sphere, 0)] : vec4(0.0));
+    Hit hit = Hit(1.0, a.xyz, b.xyz, d.xyz, sphere, sphere >= 0 ? sphereGeometry(max(sphere, 0)) : vec4(0.0));
     vec4 r = vec4(0.0);
     int f = u_probeFunction;
     // The units' probe calls (course/*/unit.json, "probe"), written by the

@@ -57,9 +57,67 @@ int maxBounces() {
 #endif
 }
 
+// ---- The scene's numbers, read through one accessor each ----------------------------------
+//
+// A program for one scene gets them compiled in (the RL_ macros below, rows
+// of app/render/define_table.cpp: each a chain of selects on the index, data
+// only, the same float32 values the host would upload): on llvmpipe a
+// constant folds into the code that reads it, where a uniform is a load per
+// use that nothing folds (a frame of the lecture scene took 2.5 times as
+// long with its spheres read from the uniform block, docs/performance.md).
+// The generic program reads the uniform block.
+
+// The sphere's centre relative to the anchor (xyz) and its radius (w), scene units.
+vec4 sphereGeometry(int i) {
+#ifdef RL_SPHERE_GEOMETRY
+    return RL_SPHERE_GEOMETRY(i);
+#else
+    return u_sphereGeometry[i];
+#endif
+}
+
+Material sphereMaterial(int i) {
+#ifdef RL_SPHERE_MATERIAL
+    return RL_SPHERE_MATERIAL(i);
+#else
+    Material m;
+    m.albedo = u_sphereSurface[i].rgb;
+    m.roughness = u_sphereSurface[i].a;
+    m.metallic = u_sphereExtra[i].x;
+    m.ao = u_sphereExtra[i].y;
+    return m;
+#endif
+}
+
+// |centre|^2 - r^2 of sphere i, the centre relative to the anchor: the
+// constant term of the quadratic of a ray from the anchor, from double
+// (error_bounds.glsl).
+float sphereAnchorC(int i) {
+#ifdef RL_SPHERE_ANCHOR_C
+    return RL_SPHERE_ANCHOR_C(i);
+#else
+    return u_sphereExtra[i].z;
+#endif
+}
+
+vec3 lightPosition(int i) {
+#ifdef RL_LIGHT_POSITION
+    return RL_LIGHT_POSITION(i);
+#else
+    return u_lightPosition[i].xyz;
+#endif
+}
+
+vec3 lightIntensity(int i) {
+#ifdef RL_LIGHT_INTENSITY
+    return RL_LIGHT_INTENSITY(i);
+#else
+    return u_lightIntensity[i].rgb;
+#endif
+}
+
 // The camera's position, where every camera ray starts. A program for one
-// picture gets it as a constant (RL_CAMERA_FROM_ANCHOR,
-// app/render/define_table.cpp), so that what the camera rays share folds.
+// picture gets it as a constant, so that what the camera rays share folds.
 vec3 cameraFromAnchor() {
 #ifdef RL_CAMERA_FROM_ANCHOR
     return RL_CAMERA_FROM_ANCHOR;
@@ -68,24 +126,42 @@ vec3 cameraFromAnchor() {
 #endif
 }
 
-Material sphereMaterial(int i) {
-    Material m;
-    m.albedo = u_sphereSurface[i].rgb;
-    m.roughness = u_sphereSurface[i].a;
-#ifdef RL_NO_METALS
-    m.metallic = 0.0;  // specialised to a scene without metals: F0 = 0.04, the metal terms fold away
+// Camera rays: |camera - centre|^2 - r^2 of sphere i from double, for this
+// frame's camera (x), and whether the exercise's float32 cannot tell the
+// camera's side of it (y: 1), error_bounds.glsl.
+vec2 cameraSphere(int i) {
+#ifdef RL_CAMERA_SPHERE
+    return RL_CAMERA_SPHERE(i);
 #else
-    m.metallic = u_sphereExtra[i].x;
+    return u_sphereFromCamera[i].xy;
 #endif
-    m.ao = u_sphereExtra[i].y;
-    return m;
 }
 
-vec3 lightPosition(int i) { return u_lightPosition[i].xyz; }
-vec3 lightIntensity(int i) { return u_lightIntensity[i].rgb; }
-
 // A light on, or closer to a sphere's surface than float32 can tell apart
-// (docs/model.md, "A light on a surface"): that sphere's index, or -1; and
-// which side of it the host found in double (-1 inside, 0 on, 1 outside).
-int lightSurfaceSphere(int k) { return k >= 0 ? int(u_lightSurface[k].x) : -1; }
-float lightSurfaceSide(int k) { return u_lightSurface[k].y; }
+// (docs/model.md, "A light on a surface"): that sphere's index, or -1 (x);
+// and which side of it the host found in double (y: -1 inside, 0 on, 1 outside).
+vec2 lightSurface(int k) {
+#ifdef RL_LIGHT_SURFACE
+    return RL_LIGHT_SURFACE(k);
+#else
+    return u_lightSurface[k].xy;
+#endif
+}
+int lightSurfaceSphere(int k) { return k >= 0 ? int(lightSurface(k).x) : -1; }
+float lightSurfaceSide(int k) { return lightSurface(k).y; }
+
+float ambientFactor() {
+#ifdef RL_AMBIENT
+    return RL_AMBIENT;
+#else
+    return u_ambient;
+#endif
+}
+
+vec3 backgroundColour() {
+#ifdef RL_BACKGROUND
+    return RL_BACKGROUND;
+#else
+    return u_background;
+#endif
+}

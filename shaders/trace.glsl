@@ -1,5 +1,42 @@
 // trace.glsl: the radiance along a camera ray, by exercise 09's traceRay():
-// the first hit and its Fresnel-weighted mirror bounces.
+// the first hit and its Fresnel-weighted mirror bounces. traceRay() gets the
+// light of each hit and of each ray that leaves the scene from shadeHit()
+// and backgroundRadiance() below (lighting.glsl computes it).
+
+// The teaching view "bounce k" keeps only the k-th surface hit (0 = primary)
+// or the background seen after k bounces: shadeHit() and backgroundRadiance()
+// count the calls a camera ray makes and return 0 for the others.
+int g_onlyBounce = -1;  // -1: keep every bounce
+int g_bounceCounter = 0;
+
+bool keepThisBounce() {
+    bool keep = g_onlyBounce < 0 || g_bounceCounter == g_onlyBounce;
+    ++g_bounceCounter;
+    return keep;
+}
+
+// The light of a hit, for exercise 09 (declarations.glsl). The pixel
+// debugger's program records what the exercises compute there first
+// (pixel_debug.glsl, debugShadeHit).
+vec3 shadeHit(Hit hit, vec3 v) {
+    if (!keepThisBounce()) return vec3(0.0);
+#ifdef RL_PIXEL_DEBUG
+    return debugShadeHit(hit, v, g_bounceCounter - 1);
+#else
+    return hitRadiance(hit, v);
+#endif
+}
+
+// The light of a ray that leaves the scene, for exercise 09.
+vec3 backgroundRadiance() {
+    bool cameraRay = g_bounceCounter == 0;
+    bool kept = keepThisBounce();
+#ifdef RL_PIXEL_DEBUG
+    return debugBackgroundRadiance(cameraRay, kept, g_bounceCounter - 1);
+#else
+    return kept ? missRadiance(cameraRay) : vec3(0.0);
+#endif
+}
 
 vec3 radianceAlong(vec3 origin, vec3 dir) {
     g_bounceCounter = 0;

@@ -4,7 +4,6 @@
 #include "bench/pareto.h"
 #include "bench/expert.h"
 #include "bench/fastest_copy.h"
-#include "render/course_program.h"
 #include "bench/outside.h"
 #include "bench/textbook.h"
 #include "core/error.h"
@@ -125,11 +124,6 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
         add("specialised", "modes", true, scene, true);
-        // `raylab render`'s program before the course's generated one
-        // (render/course_program.h): the exercise API's picture program.
-        const fs::path impl = options.implDir.empty() ? defaultImplementationDir() : options.implDir;
-        if (courseProgramApplies(scene, implementationFacts(Implementation{impl, {}})))
-            add("specialised-api", "modes", true, scene, true)->exerciseApi = true;
     }
     if (wanted(options, "layers")) {
         // The course's picture program with one of its layers taken out
@@ -251,28 +245,12 @@ Measurement describe(const Variant& v) {
     m.variant = v.name;
     m.sweep = v.sweep;
     m.mode = v.textbook ? "textbook" : v.expert ? "expert" : !v.outside.empty() ? "outside" : v.exactWithoutVisibility ? "reference"
-           : v.exerciseApi ? "specialised-api" : modeName(v.specialised, v.picture);
+           : modeName(v.specialised, v.picture);
     m.width = v.scene.render.width;
     m.height = v.scene.render.height;
     m.spp = v.scene.render.spp;
     m.maxBounces = v.scene.render.maxBounces;
     return m;
-}
-
-// The course's program in the form a use that draws many frames gets (the
-// bench reports draw time, the compile in compile_ms): its cost model weighs
-// compiles against frames (render/course_program.h; `raylab render` draws
-// one and gets the one-program form).
-CourseProgramOptions benchCourseOptions(const Options&) {
-    CourseProgramOptions course;
-    // The per-tile programs stay off: with the driver's heap kept between
-    // frames (gl/context.h) they still cost more than they save on every
-    // scene measured (random-30: 35.7 ms of CPU a frame in 13 programs
-    // against 33.9 ms in one; docs/performance.md), so the bench draws what
-    // `raylab render` draws.
-    course.tilePrograms = false;
-    course.frames = 1000;
-    return course;
 }
 
 // One renderer per size, so that no timed frame reallocates its targets.
@@ -284,7 +262,7 @@ GlRenderer& rendererFor(std::map<std::pair<int, int>, std::unique_ptr<GlRenderer
 
 // Builds one variant's program (each call a copy of its own, compiled and
 // placed in memory anew: Options::compiles).
-PictureProgram buildVariant(const Variant& v, const fs::path& implDir, const Options& o) {
+PictureProgram buildVariant(const Variant& v, const fs::path& implDir) {
     PictureProgram program;
     if (v.textbook) {
         program.program = buildTextbook();
@@ -307,11 +285,6 @@ PictureProgram buildVariant(const Variant& v, const fs::path& implDir, const Opt
     ShaderDefines defines = definesFor(v.scene, facts, purpose);
     for (const std::string& name : v.withoutDefines) defines.erase(name);
     for (const auto& [name, value] : v.withDefines) defines[name] = value;
-    // What `raylab render` draws: the generated program where every
-    // exercise file is the course's own (render/course_program.h).
-    if (purpose == Purpose::Picture && !v.exerciseApi && v.withDefines.empty() && v.withoutDefines.empty() &&
-        v.overrides.empty() && courseProgramApplies(v.scene, facts))
-        return buildCoursePicture(v.scene, benchCourseOptions(o));
     return buildPictureProgram(impl, defines);
 }
 
@@ -355,7 +328,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
         if (v.skipReason.empty()) {
             try {
                 auto start = std::chrono::steady_clock::now();
-                programs[i] = buildVariant(v, implDir, o);
+                programs[i] = buildVariant(v, implDir);
                 m.compileMs = msSince(start);
                 GlRenderer& renderer = rendererFor(renderers, v.scene);
                 const auto tables = std::chrono::steady_clock::now();
@@ -365,7 +338,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 if (v.environment) m.tablesMs = msSince(tables);
                 FrameSettings frame = frameFromScene(v.scene);
                 const auto firstDraw = std::chrono::steady_clock::now();
-                renderer.draw(programs[i], frame);  // llvmpipe compiles here
+                renderer.drawChecked(programs[i], frame);  // llvmpipe compiles here; marked pixels: their exact program
                 gl::Finish();
                 m.firstDrawMs = msSince(firstDraw);
                 for (int k = 1; k < o.warmup; ++k) renderer.draw(programs[i], frame);
@@ -373,7 +346,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 FrameSettings timedFrame = frame;
                 timedFrame.radiance = false;  // the live view's frame: frames timed below store the display alone
                 const std::vector<double> trials = keepFastestCopy(
-                    programs[i], o.compiles, [&] { return buildVariant(v, implDir, o); },
+                    programs[i], o.compiles, [&] { return buildVariant(v, implDir); },
                     [&](const PictureProgram& p) {
                         renderer.prepare(timedFrame);
                         return timeFrame(renderer, p, timedFrame, clock);
@@ -384,7 +357,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     for (double t : trials) line << " " << std::fixed << std::setprecision(2) << t;
                     line << " ms a frame, the fastest kept\n";
                     log << line.str();
-                    renderer.draw(programs[i], frame);  // the picture compared below: the kept copy's, with its radiance
+                    renderer.drawChecked(programs[i], frame);  // the picture compared below: the kept copy's, with its radiance
                     gl::Finish();
                 }
                 Rendering got = renderer.readBack();

@@ -34,7 +34,6 @@ struct Variant {
     bool textbook = false;   // the straightforward yardstick instead (bench/textbook.h): none of the flags above apply
     // The picture program of the exercise API even where the course's own files
     // would get the generated one (render/course_program.h): what it saves.
-    bool exerciseApi = false;
     bool expert = false;     // the expert yardstick instead (bench/expert.h): none of the flags above apply
     std::filesystem::path outside;  // non-empty: a yardstick from outside, this file (bench/outside.h)
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)

@@ -1,6 +1,6 @@
 #include "bench/expert.h"
 
-#include "render/scene_facts.h"
+#include "bench/expert_scene.h"
 #include "shader/shader_library.h"
 
 #include <glm/geometric.hpp>

@@ -12,7 +12,6 @@
 #include "gl/context.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
-#include "render/live_course_program.h"
 
 #include <algorithm>
 #include <chrono>
@@ -31,9 +30,8 @@ namespace {
 struct Entry {
     ViewBenchRow row;
     View view = View::Final;
-    PictureProgram program;  // a sky program only for the generated one
+    PictureProgram program;  // a sky program only for the still one
     std::function<PictureProgram()> build;  // another copy of it (Options::compiles)
-    bool generated = false;  // the live view's course program: its values set before each draw
     Rendering picture;
 };
 
@@ -61,12 +59,11 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
 
     // The picture and one teaching view (D), each with the generic program
     // (what the view drew with before issue #12) and the live one; for the
-    // picture also `before`, the live program before issue #25 (the
-    // structure's defines, still what the view draws with for a student's
-    // own files and during a structural drag), and `live` is the course
-    // generator's program with values as uniforms where it applies
-    // (render/live_course_program.h).
-    const bool generatedApplies = liveCourseApplies(scene, facts);
+    // picture also `before`, the structure's program (Purpose::LiveView: what
+    // the view draws with while a slider moves), and `live` is the still
+    // picture's program (Purpose::LiveStill: the scene's numbers compiled in,
+    // the camera a uniform; the same path as `raylab render`, for whatever
+    // files are shown).
     std::vector<Entry> entries;
     for (View view : {View::Final, View::D})
         for (const char* program : {"generic", "before", "live"}) {
@@ -79,24 +76,19 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
             e.row.height = scene.render.height;
             e.row.clock = clockName;
             const auto start = std::chrono::steady_clock::now();
-            e.generated = e.row.program == "live" && isPictureView(view) && generatedApplies;
-            if (e.generated) {
-                e.build = [&scene] { return buildLiveCoursePicture(scene, liveCourseSource(scene, frameFromScene(scene))); };
-            } else {
-                const Purpose purpose =
-                    e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic : Purpose::LiveView;
-                e.build = [&impl, defines = definesFor(scene, facts, purpose)] {
-                    PictureProgram p;
-                    p.program = buildRayTracer(impl, defines);
-                    return p;
-                };
-            }
+            const Purpose purpose = e.row.program == "generic" || !isPictureView(view) ? Purpose::Generic
+                                    : e.row.program == "before"                        ? Purpose::LiveView
+                                                                                       : Purpose::LiveStill;
+            e.build = [&impl, purpose, defines = definesFor(scene, facts, purpose)] {
+                if (purpose == Purpose::LiveStill) return buildPictureProgram(impl, defines);
+                PictureProgram p;
+                p.program = buildRayTracer(impl, defines);
+                return p;
+            };
             e.program = e.build();
             e.row.compileMs = msSince(start);
             entries.push_back(std::move(e));
         }
-    if (!generatedApplies)
-        log << "bench: view: the exercise files are not all the course's own: `live` draws with `before`'s program\n";
     // The yardsticks, the picture only: the straightforward one
     // (bench/textbook.h; not in a student edition) and the expert
     // (bench/expert.h), the strongest.
@@ -132,13 +124,14 @@ std::vector<ViewBenchRow> runViewBench(const Options& options, std::ostream& log
         FrameSettings frame = frameFromScene(scene);
         frame.view = e.view;
         frame.radiance = false;  // the live view shows the display target alone
-        if (e.generated) setLiveCourseValues(program.program, scene, frame);  // as the view does every frame
         return timeFrame(renderer, program, frame, clock);
     };
     auto drawOne = [&](Entry& e) { return drawProgram(e, e.program); };
     for (Entry& e : entries) {
         const auto start = std::chrono::steady_clock::now();
-        drawOne(e);
+        FrameSettings first = frameFromScene(scene);
+        first.view = e.view;
+        renderer.drawChecked(e.program, first);  // as the view's first still frame: marked pixels get their program
         e.row.firstDrawMs = msSince(start);
         for (int k = 1; k < options.warmup; ++k) drawOne(e);
         // The fastest of Options::compiles copies, as in the error sweep.

@@ -12,7 +12,6 @@
 #include "checks/pixel_hint.h"
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
-#include "render/course_program.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
 #include "render/pixel_debugger.h"
@@ -131,16 +130,9 @@ void runRender(const RenderOptions& o) {
         // The picture (or a bounce view): the program for this picture, from
         // this camera; the term views need every view (render/define_table.h).
         const Purpose purpose = o.generic ? Purpose::Generic : isPictureView(view) ? Purpose::Picture : Purpose::EveryView;
-        const ImplementationFacts facts = implementationFacts(impl);
-        PictureProgram picture;
-        if (purpose == Purpose::Picture && view == View::Final && courseProgramApplies(scene, facts)) {
-            // Every exercise file is the course's own: the generated program
-            // renders the same picture faster (render/course_program.h).
-            picture = buildCoursePicture(scene);
-        } else {
-            const ShaderDefines defines = definesFor(scene, facts, purpose);
-            picture = buildPictureProgram(impl, defines);  // and its sky tiles' program
-        }
+        // Whatever the files: one program built from shaders/ and them,
+        // specialised to this picture (render/define_table.h).
+        PictureProgram picture = buildPictureProgram(impl, definesFor(scene, implementationFacts(impl), purpose));
         FrameSettings frame = frameFromScene(scene);
         frame.view = view;
         frame.viewBounce = bounce;

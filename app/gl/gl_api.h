@@ -79,7 +79,15 @@
     X(PFNGLBEGINQUERYPROC, BeginQuery)                                                \
     X(PFNGLENDQUERYPROC, EndQuery)                                                    \
     X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                    \
-    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)                              \
+    X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                                    \
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                              \
+    X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                                    \
+    X(PFNGLRENDERBUFFERSTORAGEPROC, RenderbufferStorage)                              \
+    X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)                      \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                          \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                  \
+    X(PFNGLDEPTHMASKPROC, DepthMask)
 
 namespace gl {
 

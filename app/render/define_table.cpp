@@ -4,6 +4,7 @@
 #include "render/define_table.h"
 
 #include "render/define_values.h"
+#include "render/scene_constants.h"
 
 #include <algorithm>
 
@@ -16,37 +17,26 @@ const Value kOne = std::string("1");
 const Value kNone = std::nullopt;
 
 Value when(bool condition) { return condition ? kOne : kNone; }
-bool has(const DefineInput& in, const char* name) { return in.sofar.count(name) != 0; }
 
 constexpr unsigned kPicture = purposeBit(Purpose::Picture);
 constexpr unsigned kEveryView = purposeBit(Purpose::EveryView);
 constexpr unsigned kLive = purposeBit(Purpose::LiveView);
+constexpr unsigned kLiveStill = purposeBit(Purpose::LiveStill);
 constexpr unsigned kProbe = purposeBit(Purpose::Probe);
 constexpr unsigned kGenericPicture = purposeBit(Purpose::GenericPicture);
 constexpr unsigned kGeneric = purposeBit(Purpose::Generic);
 // The model is compiled into every program drawn for a scene; the checker's
 // one program serves every check scene, so it has none.
-constexpr unsigned kEveryScene = kPicture | kEveryView | kLive | kGenericPicture | kGeneric;
+constexpr unsigned kEveryScene = kPicture | kEveryView | kLive | kLiveStill | kGenericPicture | kGeneric;
 // What a specialised program compiles in.
-constexpr unsigned kSpecialised = kPicture | kEveryView | kLive;
+constexpr unsigned kSpecialised = kPicture | kEveryView | kLive | kLiveStill;
+// What a program for the scene's values compiles in: the values too (the
+// live view's still program takes the camera from uniforms).
+constexpr unsigned kOnePicture = kPicture | kEveryView | kLiveStill;
+// The picture programs of the live view.
+constexpr unsigned kLivePictures = kLive | kLiveStill;
 
 int sphereCount(const DefineInput& in) { return int(in.scene.spheres.size()); }
-
-bool hasMetal(const Scene& scene) {
-    return std::any_of(scene.spheres.begin(), scene.spheres.end(),
-                       [](const Sphere& s) { return s.material.metallic != 0.0; });
-}
-
-// The shadow cones fit: two spheres or more (one casts no shadow ray), up to
-// three mask words of spheres, a light, and at most kShadowConeBudget cones.
-bool conesFit(const Scene& scene) {
-    const std::size_t spheres = scene.spheres.size();
-    return spheres >= 2 && spheres <= 3 * 31 && !scene.lights.empty() &&
-           spheres * scene.lights.size() <= kShadowConeBudget;
-}
-
-// The candidate loop without cones needs a sphere mask (one int) and a light.
-bool candidateLoopFits(const Scene& scene) { return scene.spheres.size() <= 31 && !scene.lights.empty(); }
 
 std::vector<DefineRow> makeTable() {
     std::vector<DefineRow> t;
@@ -85,25 +75,28 @@ std::vector<DefineRow> makeTable() {
                  "for a scene with an environment",
                  [](const DefineInput& in) { return when(in.scene.environment.has_value()); }});
 
-    // ---- the scene's structure (scene.glsl): loops unrolled, the uniform block read directly.
+    // ---- the scene's structure (scene.glsl): loops unrolled, every index a constant.
     t.push_back({"RL_SPHERE_COUNT", kStructure, kSpecialised, {}, {},
                  "the sphere loops unrolled with direct loads instead of a per-lane gather per iteration",
-                 [](const DefineInput& in) -> Value { return std::to_string(sphereCount(in)); },
-                 true, InSky::Zero});
+                 [](const DefineInput& in) -> Value { return std::to_string(sphereCount(in)); }});
     t.push_back({"RL_LIGHT_COUNT", kStructure, kSpecialised, {}, {}, "the light loop unrolled",
                  [](const DefineInput& in) -> Value { return std::to_string(in.scene.lights.size()); }});
     t.push_back({"RL_MAX_BOUNCES", kStructure, kSpecialised, {}, {},
                  "the bounce limit a constant; 0 folds traceRay's bounce code away",
                  [](const DefineInput& in) -> Value { return std::to_string(in.scene.render.maxBounces); }});
-    t.push_back({"RL_NO_METALS", kValues, kPicture | kEveryView, {}, {},
-                 "every metallic 0: F0 = 0.04, no metal terms (the live view's slider edits metallic)",
-                 [](const DefineInput& in) { return when(!hasMetal(in.scene)); }});
+    t.push_back({"RL_FOR_EACH_SPHERE(X)", kStructure, kSpecialised, {}, {},
+                 "the spheres written out one by one (closestHit, the shadow tests): every index, and with it "
+                 "every sphere's numbers, a constant",
+                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.spheres.size()); }});
+    t.push_back({"RL_FOR_EACH_LIGHT(X)", kStructure, kSpecialised, {}, {},
+                 "the lights written out one by one: each light's numbers and shadow tests fold",
+                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.lights.size()); }});
     t.push_back({"RL_SINGLE_SPHERE", kStructure, kSpecialised, {}, {},
                  "one convex sphere shadows only points seen from inside it: no shadow ray (lighting.glsl)",
-                 [](const DefineInput& in) { return when(sphereCount(in) == 1); }, true, InSky::Dropped});
+                 [](const DefineInput& in) { return when(sphereCount(in) == 1); }});
     t.push_back({"RL_REFINE_SPHERES", kGeometry, kSpecialised, {}, {},
                  "closestHit() refines the roots of these spheres only (error_bounds.glsl), from the radii alone",
-                 [](const DefineInput& in) { return refineSphereMask(in.scene); }, true, InSky::Dropped});
+                 [](const DefineInput& in) { return refineSphereMask(in.scene); }});
     // Stopping the bounces early (trace.glsl) needs a bound on what a path
     // can bring back, derived for the reference model only
     // (render/bounce_cutoff.h). Its test costs about 5% of a lecture-scene
@@ -117,8 +110,44 @@ std::vector<DefineRow> makeTable() {
                                  !in.scene.environment);
                  }});
 
+    // ---- the scene's numbers as constants (scene.glsl; render/scene_constants.h): data
+    // only, each a chain of selects on the index, the floats the uniform block would hold.
+    // Geometry for every specialised program (the live view's panel does not edit it),
+    // values for the programs that draw one picture (the live view's sliders edit them).
+    t.push_back({"RL_SPHERE_GEOMETRY(i)", kGeometry, kSpecialised, {}, {},
+                 "each sphere's centre and radius compiled in: what the ray tests share folds",
+                 [](const DefineInput& in) -> Value { return sphereGeometryMacro(in.scene); }});
+    t.push_back({"RL_SPHERE_ANCHOR_C(i)", kGeometry, kSpecialised, {}, {},
+                 "each sphere's |c|^2 - r^2 from the anchor, compiled in (error_bounds.glsl)",
+                 [](const DefineInput& in) -> Value { return sphereAnchorCMacro(in.scene); }});
+    t.push_back({"RL_SPHERE_MATERIAL(i)", kValues, kOnePicture, {}, {},
+                 "each sphere's material compiled in: the exercises' material terms fold",
+                 [](const DefineInput& in) -> Value { return sphereMaterialMacro(in.scene); }});
+    t.push_back({"RL_SPHERE_EDGE_TINT(i)", kValues | kModel, kOnePicture, {"RL_MODEL_VARIANTS"}, {},
+                 "each sphere's conductor edge tint compiled in (model_variants.glsl)",
+                 [](const DefineInput& in) -> Value { return sphereEdgeTintMacro(in.scene); }});
+    t.push_back({"RL_LIGHT_POSITION(i)", kValues, kOnePicture, {}, {}, "each light's position compiled in",
+                 [](const DefineInput& in) -> Value { return lightPositionMacro(in.scene); }});
+    t.push_back({"RL_LIGHT_INTENSITY(i)", kValues, kOnePicture, {}, {}, "each light's colour times intensity compiled in",
+                 [](const DefineInput& in) -> Value { return lightIntensityMacro(in.scene); }});
+    t.push_back({"RL_LIGHT_SURFACE(k)", kValues | kGeometry, kOnePicture, {}, {},
+                 "each light's nearness to a sphere's surface compiled in (docs/model.md, \"A light on a surface\")",
+                 [](const DefineInput& in) -> Value { return lightSurfaceMacro(in.scene); }});
+    t.push_back({"RL_AMBIENT", kValues, kOnePicture, {}, {}, "the ambient factor compiled in",
+                 [](const DefineInput& in) -> Value { return floatLiteral(float(in.scene.render.ambient)); }});
+    t.push_back({"RL_BACKGROUND", kValues, kOnePicture, {}, {}, "the background compiled in",
+                 [](const DefineInput& in) -> Value { return vec3Literal(glm::vec3(in.scene.render.background)); }});
+    t.push_back({"RL_EXPOSURE", kValues, kOnePicture, {}, {}, "the exposure compiled in (display.glsl)",
+                 [](const DefineInput& in) -> Value { return floatLiteral(float(in.scene.render.exposure)); }});
+    t.push_back({"RL_TONE_MAP", kValues, kOnePicture, {}, {}, "the tone map compiled in: exercise 10's choice folds",
+                 [](const DefineInput& in) -> Value { return std::to_string(int(in.scene.render.tonemap)); }});
+    t.push_back({"RL_GAMMA", kValues, kOnePicture, {}, {}, "the gamma compiled in (0: sRGB): exercise 10's choice folds",
+                 [](const DefineInput& in) -> Value {
+                     return floatLiteral(in.scene.render.srgb ? 0.0f : float(in.scene.render.gamma));
+                 }});
+
     // ---- one picture (or the live view's picture program), known before the program is built.
-    t.push_back({"RL_PICTURE_ONLY", kPurpose | kFiles, kPicture | kLive | kGenericPicture | kProbe, {}, {},
+    t.push_back({"RL_PICTURE_ONLY", kPurpose | kFiles, kPicture | kLivePictures | kGenericPicture | kProbe, {}, {},
                  "no teaching term views (main.frag) and no per-ray fallback behind a started traceRay (trace.glsl)",
                  [](const DefineInput& in) {
                      // The checker's program serves the check of exercise 09 too,
@@ -127,100 +156,59 @@ std::vector<DefineRow> makeTable() {
                      if (in.purpose == Purpose::Probe) return when(in.facts.courseFile("09-reflections.glsl"));
                      return kOne;
                  }});
-    t.push_back({"RL_RESIDUAL_SPHERES", kGeometry, kPicture | kLive, {}, {},
+    t.push_back({"RL_RESIDUAL_SPHERES", kGeometry, kPicture | kLivePictures, {}, {},
                  "makeHit()'s residual form only for huge spheres near the anchor (error_bounds.glsl)",
-                 [](const DefineInput& in) { return residualSphereMask(in.scene); }, true, InSky::Dropped,
-                 BenchLayer::Without});
-    t.push_back({"RL_SAMPLE_GRID", kValues, kPicture | kLive, {}, {},
+                 [](const DefineInput& in) { return residualSphereMask(in.scene); }, true, BenchLayer::Without});
+    t.push_back({"RL_SAMPLE_GRID", kValues, kPicture | kLivePictures, {}, {},
                  "n x n samples a constant: sampleOffset()'s division and the loop bound fold (the live view "
                  "keeps a program per count)",
-                 [](const DefineInput& in) -> Value { return sampleGrid(in.scene); }, true, InSky::Kept,
-                 BenchLayer::Without});
+                 [](const DefineInput& in) -> Value { return sampleGrid(in.scene); }, true, BenchLayer::Without});
     t.push_back({"RL_CAMERA_FROM_ANCHOR", kCamera, kPicture, {}, {},
                  "the camera's position a constant: what the camera rays share folds (scene.glsl)",
                  [](const DefineInput& in) -> Value { return cameraFromAnchor(in.scene); }});
+    t.push_back({"RL_CAMERA_SPHERE(i)", kCamera | kGeometry, kPicture, {}, {},
+                 "each sphere's |camera - c|^2 - r^2 from double compiled in (error_bounds.glsl, issue #23)",
+                 [](const DefineInput& in) -> Value { return cameraSphereMacro(in.scene); }});
+    t.push_back({"RL_CAMERA_RIGHT", kCamera, kPicture, {}, {},
+                 "the camera's basis and the picture's size compiled in (camera.glsl): exercise 01's ray folds",
+                 [](const DefineInput& in) -> Value { return cameraBasisColumn(in.scene, 0); }});
+    t.push_back({"RL_CAMERA_UP", kCamera, kPicture, {}, {}, "(with RL_CAMERA_RIGHT)",
+                 [](const DefineInput& in) -> Value { return cameraBasisColumn(in.scene, 1); }});
+    t.push_back({"RL_CAMERA_BACK", kCamera, kPicture, {}, {}, "(with RL_CAMERA_RIGHT)",
+                 [](const DefineInput& in) -> Value { return cameraBasisColumn(in.scene, 2); }});
+    t.push_back({"RL_RESOLUTION", kCamera, kPicture, {}, {}, "(with RL_CAMERA_RIGHT)",
+                 [](const DefineInput& in) -> Value {
+                     return "vec2(" + floatLiteral(float(in.scene.render.width)) + ", " +
+                            floatLiteral(float(in.scene.render.height)) + ")";
+                 }});
 
     // ---- what the implementation's files allow (ImplementationFacts).
-    t.push_back({"RL_EXERCISES_FINISHED", kFiles, kPicture | kLive, {}, {},
-                 "every exercise written, none names NOT_STARTED: what the specialisations below assume "
-                 "(the GLSL itself has no stub test: shader/readiness.h)",
-                 [](const DefineInput& in) { return when(in.facts.exercisesFinished); }, false, InSky::Kept,
-                 BenchLayer::Without});
-    t.push_back({"RL_SEGMENT_TEST", kFiles, kPicture | kLive, {}, {},
-                 "shadow rays need whether, not where: with the course's 02, a segment test without the root",
-                 [](const DefineInput& in) { return when(in.facts.courseFile("02-intersect.glsl")); }, true,
-                 InSky::Kept, BenchLayer::Without});
-    // The sky tiles follow the course's camera rays and roots: a student's
-    // camera or intersection draws every pixel itself, so that its mistakes
-    // show everywhere.
-    t.push_back({kSkyTilesDefine, kFiles | kGeometry | kCamera, kPicture, {}, {},
-                 "screen tiles no camera ray can hit a sphere in drawn by a program without spheres "
-                 "(render/sky_tiles.h), with the course's 01 and 02",
-                 [](const DefineInput& in) {
-                     return when(in.facts.courseFile("01-camera.glsl") && in.facts.courseFile("02-intersect.glsl"));
+    t.push_back({"RL_EXERCISES_FINISHED", kFiles, kPicture | kLivePictures, {}, {},
+                 "every exercise written, none names NOT_STARTED: the light terms summed by selects "
+                 "(lighting.glsl; the GLSL itself has no stub test: shader/readiness.h)",
+                 [](const DefineInput& in) { return when(in.facts.exercisesFinished); }, true, BenchLayer::Without});
+
+    // ---- assumptions checked pixel by pixel: where one does not hold, the pixel is marked
+    // and drawn again by the program without it (render/gl_renderer.h).
+    // Shadow rays from the light's side (shadow_light_side.glsl): one dot product per
+    // sphere against a constant, where the segment test takes four.
+    t.push_back({"RL_LIGHT_SIDE(k, j)", kGeometry | kValues, kPicture | kLiveStill, {"RL_FOR_EACH_LIGHT(X)", "RL_FOR_EACH_SPHERE(X)"},
+                 {}, "per light and sphere, whether the shadow test from the light's side is exact there",
+                 [](const DefineInput& in) -> Value {
+                     if (!lightSideFits(in.scene)) return kNone;
+                     return lightSideMacro(in.scene);
                  },
-                 false, InSky::Kept, BenchLayer::Without});
-    // No student's ray can start inside a sphere with the course's
-    // intersection, ray offset and bounce (a student's mistake there shows as
-    // it does in every other program).
-    t.push_back({"RL_CAMERA_OUTSIDE", kCamera | kGeometry | kFiles, kPicture, {}, {},
-                 "every hit seen from outside (closestHit): the camera outside every sphere, the course's 02, 04, 09",
-                 [](const DefineInput& in) {
-                     const ImplementationFacts& f = in.facts;
-                     return when(cameraOutsideEverySphere(in.scene) && f.courseFile("02-intersect.glsl") &&
-                                 f.courseFile("04-shadows.glsl") && f.courseFile("09-reflections.glsl"));
-                 },
-                 true, InSky::Kept, BenchLayer::Without});
-    // The shadow rays' candidates by their cones from each light
-    // (render/shadow_cones.h), with the course's own segment test and shadow
-    // ray, whose ray from the offset point to the light the cones assume. A
-    // cone costs a dot product against a constant, so the candidate loop
-    // pays from two spheres on. Each cone is a test written out per light and
-    // sphere, and Mesa's compile time grows faster than their count: with no
-    // shader cache, building and the first draw take 0.25 s for the
-    // lecture's 12 (2 lights, 6 spheres), 0.62 s for 180 (6 x 30), 0.84 s for
-    // 256 (4 x 64) and 8.9 s for 1024 (16 x 64), which no frame saving
-    // repays. So at most kShadowConeBudget.
-    t.push_back({"RL_SHADOW_CONES", kGeometry | kValues | kStructure | kFiles, kPicture, {"RL_EXERCISES_FINISHED"}, {},
-                 "shadow-ray candidates by constant cones from each light, with the course's 02 and 04, "
-                 "at most 256 cones",
-                 [](const DefineInput& in) {
-                     return when(in.facts.courseFile("02-intersect.glsl") && in.facts.courseFile("04-shadows.glsl") &&
-                                 conesFit(in.scene));
-                 },
-                 true, InSky::Dropped, BenchLayer::Without});
-    t.push_back({"RL_SHADOW_CONE_AXIS", kGeometry | kValues, kPicture, {"RL_SHADOW_CONES"}, {},
-                 "the cones' axes and cosines, light-major, as a constant array",
-                 [](const DefineInput& in) -> Value { return shadowConeAxes(in.scene); }, true, InSky::Dropped});
-    t.push_back({"RL_SHADOW_CONE_NEAREST", kGeometry | kValues, kPicture, {"RL_SHADOW_CONES"}, {},
-                 "the cones' nearest distances, light-major, as a constant array",
-                 [](const DefineInput& in) -> Value { return shadowConeNearest(in.scene); }, true, InSky::Dropped});
-    t.push_back({"RL_FOR_EACH_LIGHT(X)", kStructure, kPicture, {"RL_SHADOW_CONES"}, {},
-                 "the lights expanded one by one, so that every index into the cones is a constant",
-                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.lights.size()); }, true,
-                 InSky::Dropped});
-    t.push_back({"RL_FOR_EACH_SPHERE(X)", kStructure, kPicture, {"RL_SHADOW_CONES"}, {},
-                 "the spheres expanded one by one, so that every index into the cones is a constant",
-                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.spheres.size()); }, true,
-                 InSky::Dropped});
-    // Shadow rays ask every sphere a cheap question first and run the test
-    // proper in a loop over the spheres that pass (intersect_scene.glsl).
-    DefineRow candidates{"RL_CANDIDATE_SHADOWS", kStructure | kFiles, kPicture | kLive, {"RL_EXERCISES_FINISHED"}, {},
-                         "shadow rays test only candidate spheres: by the cones, or by mayHitSphere() from 12 spheres",
-                         [](const DefineInput& in) {
-                             return when(has(in, "RL_SHADOW_CONES") ||
-                                         (sphereCount(in) >= kCandidateShadowSpheres && candidateLoopFits(in.scene)));
-                         },
-                         true, InSky::Dropped, BenchLayer::Without};
-    candidates.benchWith = candidateLoopFits;  // the threshold's other side
-    t.push_back(candidates);
-    // With a stub, a shadow ray cast for a light facing away would mark a
-    // stub's frame; with the candidate loop, it would turn for lights that
-    // add nothing (8% slower on 30 spheres).
-    t.push_back({"RL_SELECT_LIGHTS", kFiles | kStructure, kPicture | kLive, {"RL_EXERCISES_FINISHED"},
-                 {"RL_CANDIDATE_SHADOWS"},
-                 "the direct light summed by selects, not branches (lighting.glsl), with unrolled shadow tests",
-                 [](const DefineInput&) { return kOne; }, true, InSky::Kept, BenchLayer::Without});
+                 true, BenchLayer::Without});
+    t.push_back({"RL_LIGHT_OCCLUDER(k, j)", kGeometry | kValues, kPicture | kLiveStill, {"RL_LIGHT_SIDE(k, j)"}, {},
+                 "per light and sphere, L - c and |L - c|^2 - r^2 from double (shadow_light_side.glsl)",
+                 [](const DefineInput& in) -> Value { return lightOccluderMacro(in.scene); }});
+    // The screen tiles no camera ray of the model can reach a sphere in, drawn by the
+    // picture program with no sphere to shade (RL_SKY, render/sky_tiles.h); each pixel
+    // checks with the exercises' own camera ray and intersection that its ray misses.
+    t.push_back({kSkyTilesDefine, kGeometry | kCamera, kPicture | kLiveStill, {}, {},
+                 "screen tiles no camera ray can hit a sphere in drawn by the program without shading "
+                 "(render/sky_tiles.h), each pixel's miss checked with the exercises' own code",
+                 [](const DefineInput& in) { return when(sphereCount(in) > 0); }, false, BenchLayer::Without});
     return t;
 }
 
@@ -231,6 +219,7 @@ const char* purposeName(Purpose purpose) {
         case Purpose::Picture: return "picture";
         case Purpose::EveryView: return "every-view";
         case Purpose::LiveView: return "live-view";
+        case Purpose::LiveStill: return "live-still";
         case Purpose::Probe: return "probe";
         case Purpose::GenericPicture: return "generic-picture";
         case Purpose::Generic: return "generic";
@@ -255,7 +244,10 @@ const std::vector<const char*>& nonSpecialisationNames() {
         "RL_LOOP_TOTAL_LIMIT",  // loop_guard.glsl: its total per invocation
         "RL_LOOP_TOTAL_FLAG",   // loop_guard.glsl: the mark that the total, not one loop, was met
         "RL_ADD_LIGHT",         // lighting.glsl: the X of RL_FOR_EACH_LIGHT
-        "RL_SHADOW_CANDIDATE",  // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE
+        "RL_NEAREST_STEP",      // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE in closestHit
+        "RL_SHADOW_STEP",       // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE in anyHitBefore
+        "RL_SKY",               // main.frag, intersect_scene.glsl: the sky tiles' program (skyProgramDefines())
+        "RL_MARKS_PIXELS",      // main.frag: the program marks the pixels whose assumption did not hold
         "RL_UNFINISHED",        // unfinished.glsl: a fact of the generated exercises.glsl (shader/readiness.h),
                                 // like RL_READY_<function>, not a specialisation
         "RL_UNIT_LIGHT",        // lighting.glsl, trace.glsl: the same, when a unit adds a light term
@@ -266,7 +258,7 @@ const std::vector<const char*>& nonSpecialisationNames() {
 
 ShaderDefines definesFor(const Scene& scene, const ImplementationFacts& facts, Purpose purpose) {
     if (!facts.traceStarted && purpose == Purpose::Picture) purpose = Purpose::EveryView;
-    if (!facts.traceStarted && purpose == Purpose::LiveView) purpose = Purpose::Generic;
+    if (!facts.traceStarted && (purpose == Purpose::LiveView || purpose == Purpose::LiveStill)) purpose = Purpose::Generic;
     ShaderDefines defines;
     const DefineInput in{scene, facts, purpose, defines};
     for (const DefineRow& row : defineTable()) {
@@ -288,14 +280,20 @@ ShaderDefines modelDefines(const ShadingModel& model) {
 
 std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture) {
     if (!picture.count(kSkyTilesDefine) || !picture.count("RL_PICTURE_ONLY")) return std::nullopt;
-    ShaderDefines sky = picture;
-    for (const DefineRow& row : defineTable()) {
-        auto it = sky.find(row.name);
-        if (it == sky.end()) continue;
-        if (row.inSky == InSky::Dropped) sky.erase(it);
-        if (row.inSky == InSky::Zero) it->second = "0";  // every camera ray misses: the rest is the picture's
-    }
+    ShaderDefines sky = withoutAssumptions(picture);  // no hit is shaded: no shadow ray
+    sky.erase(kSkyTilesDefine);
+    sky["RL_SKY"] = "1";
     return sky;
+}
+
+bool marksPixels(const ShaderDefines& defines) {
+    return defines.count("RL_LIGHT_SIDE(k, j)") != 0 || defines.count("RL_SKY") != 0;
+}
+
+ShaderDefines withoutAssumptions(const ShaderDefines& defines) {
+    ShaderDefines exact = defines;
+    for (const char* name : {"RL_LIGHT_SIDE(k, j)", "RL_LIGHT_OCCLUDER(k, j)", "RL_SKY", kSkyTilesDefine}) exact.erase(name);
+    return exact;
 }
 
 }  // namespace rl

@@ -30,14 +30,15 @@ enum class Purpose {
                      // "specialised" row, the accuracy tests
     EveryView,       // the scene's structure and values, every view compiled in: `raylab render --view d`,
                      // the bench's "specialised-full" row, the browser page
-    LiveView,        // the live view's picture program (`raylab view`, final and bounce views): nothing a
-                     // slider or the camera changes
+    LiveView,        // the live view's picture program while a slider moves (`raylab view`, final and
+                     // bounce views): nothing a slider or the camera changes
+    LiveStill,       // the live view's picture program otherwise: the scene's values too, not the camera
     Probe,           // the checker's ray tracer (`raylab check`): one program for every check scene
     GenericPicture,  // the bench's "generic-picture" row: the generic program without the term views
     Generic,         // the model only: `raylab render --generic`, the live view's term views, `raylab record`
 };
-inline constexpr int kPurposeCount = 6;
-const char* purposeName(Purpose purpose);  // "picture", "every-view", "live-view", "probe", ...
+inline constexpr int kPurposeCount = 7;
+const char* purposeName(Purpose purpose);  // "picture", "every-view", "live-view", "live-still", "probe", ...
 
 // What a row's value depends on (a bit set). The live view compiles only rows
 // of Model, Structure, Geometry and Files (and SampleGrid's spp, a program per
@@ -53,10 +54,6 @@ enum Depends : unsigned {
 };
 
 constexpr unsigned purposeBit(Purpose p) { return 1u << unsigned(p); }
-
-// What the sky tiles' program (render/sky_tiles.h: the picture program with
-// no sphere) does with a row of the picture program.
-enum class InSky { Kept, Dropped, Zero };  // Zero: defined as "0" (RL_SPHERE_COUNT)
 
 // Whether the bench's layers sweep (`raylab bench --sweeps layers`) measures
 // the picture program without this row ("without:NAME") and, where the row
@@ -82,7 +79,6 @@ struct DefineRow {
     const char* reason;               // one line: why it pays, or what it selects
     std::optional<std::string> (*value)(const DefineInput&);  // nullopt: not defined
     bool glsl = true;                 // false: read by the host only (RL_SKY_TILES)
-    InSky inSky = InSky::Kept;
     BenchLayer layer = BenchLayer::None;
     bool (*benchWith)(const Scene&) = nullptr;  // the layers sweep's "with:" row, where the scene allows it
 };
@@ -113,10 +109,20 @@ ShaderDefines modelDefines(const ShadingModel& model);
 // skyProgramDefines() (render/sky_tiles.h).
 inline constexpr const char* kSkyTilesDefine = "RL_SKY_TILES";
 
-// The program for the sky tiles of a picture program: the same defines as
-// the table's InSky column says (no sphere), so that it draws what the
-// picture program draws where every camera ray misses, by the same code.
-// None unless `picture` has kSkyTilesDefine and RL_PICTURE_ONLY.
+// The program for the sky tiles of a picture program: the picture's defines
+// and RL_SKY, with which closestHit() checks that the ray misses every sphere
+// (marking the pixel where it does not) and shades nothing (main.frag,
+// intersect_scene.glsl). None unless `picture` has kSkyTilesDefine and
+// RL_PICTURE_ONLY.
 std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture);
+
+// The rows whose program checks an assumption pixel by pixel and marks the
+// pixels where it does not hold (main.frag): RL_LIGHT_SIDE, and RL_SKY in a
+// sky program.
+bool marksPixels(const ShaderDefines& defines);
+
+// The program that draws a picture program's marked pixels again: its
+// defines without the assumptions (marksPixels() false for it).
+ShaderDefines withoutAssumptions(const ShaderDefines& defines);
 
 }  // namespace rl

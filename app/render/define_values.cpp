@@ -1,7 +1,8 @@
 #include "render/define_values.h"
 
 #include "core/float_range.h"
-#include "render/shadow_cones.h"
+#include "render/scene_constants.h"
+#include "render/scene_uniforms.h"
 
 #include <glm/geometric.hpp>
 
@@ -37,16 +38,6 @@ bool residualFormCandidate(glm::dvec3 centre, double radius) {
     return 4.0 * residualAtBest < roundingGamma(12) * (d + 2.0 * radius);
 }
 
-// A GLSL float literal that reads back as exactly x (9 significant digits
-// round-trip a float32).
-std::string floatLiteral(float x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", double(x));
-    std::string literal = text;
-    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
-    return literal;
-}
-
 }  // namespace
 
 std::optional<std::string> refineSphereMask(const Scene& scene) {
@@ -79,28 +70,9 @@ std::string cameraFromAnchor(const Scene& scene) {
     return "vec3(" + floatLiteral(camera.x) + ", " + floatLiteral(camera.y) + ", " + floatLiteral(camera.z) + ")";
 }
 
-// The shader holds the camera and the centres relative to the anchor, each
-// rounded by u of its distance from it; 1e-6 of those distances is 16 times that.
-bool cameraOutsideEverySphere(const Scene& scene) {
-    const glm::dvec3 anchor = sceneAnchor(scene), eye = scene.camera.position;
-    return std::all_of(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) {
-        double blur = 1e-6 * (glm::length(eye - anchor) + glm::length(s.center - anchor) + s.radius);
-        return glm::length(eye - s.center) - s.radius > blur;
-    });
-}
-
-std::string shadowConeAxes(const Scene& scene) {
-    std::string axes;
-    for (const ShadowCone& c : shadowCones(scene))
-        axes += (axes.empty() ? "" : ", ") + ("vec4(" + floatLiteral(c.axis.x) + ", " + floatLiteral(c.axis.y) + ", " +
-                                              floatLiteral(c.axis.z) + ", " + floatLiteral(c.minCos) + ")");
-    return "vec4[](" + axes + ")";
-}
-
-std::string shadowConeNearest(const Scene& scene) {
-    std::string nearest;
-    for (const ShadowCone& c : shadowCones(scene)) nearest += (nearest.empty() ? "" : ", ") + floatLiteral(c.nearest);
-    return "float[](" + nearest + ")";
+std::string cameraBasisColumn(const Scene& scene, int column) {
+    const glm::mat4 basis = shaderCameraBasis(frameFromScene(scene));
+    return vec3Literal(glm::vec3(basis[column]));
 }
 
 std::string forEachIndex(std::size_t count) {

@@ -34,23 +34,10 @@ std::string sampleGrid(const Scene& scene);
 // float32 value the scene block holds, as a GLSL vec3 literal.
 std::string cameraFromAnchor(const Scene& scene);
 
-// Whether the camera lies outside every sphere by more than float32 can blur.
-bool cameraOutsideEverySphere(const Scene& scene);
-
-// The most shadow cones (lights x spheres) a program for one picture writes
-// out: Mesa's compile time grows faster than their count (define_table.cpp).
-inline constexpr std::size_t kShadowConeBudget = 256;
-
-// From how many spheres on the candidate loop of the shadow rays pays
-// without the cones (docs/performance.md; the bench's layers sweep measures
-// both sides).
-inline constexpr int kCandidateShadowSpheres = 12;
-
-// The shadow cones (render/shadow_cones.h) as GLSL constant arrays:
-// RL_SHADOW_CONE_AXIS ("vec4[](...)": axis and minimum cosine) and
-// RL_SHADOW_CONE_NEAREST ("float[](...)").
-std::string shadowConeAxes(const Scene& scene);
-std::string shadowConeNearest(const Scene& scene);
+// RL_CAMERA_RIGHT, RL_CAMERA_UP, RL_CAMERA_BACK: column 0, 1 or 2 of the
+// camera basis the shader gets (shaderCameraBasis(), render/scene_uniforms.h),
+// from the scene's camera and size, as a GLSL vec3 literal.
+std::string cameraBasisColumn(const Scene& scene, int column);
 
 // RL_FOR_EACH_LIGHT(X) and RL_FOR_EACH_SPHERE(X): " X(0) X(1) ...", so that
 // every index into the constant arrays is a constant (indexed by a variable,

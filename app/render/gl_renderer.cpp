@@ -12,19 +12,25 @@ GlRenderer::GlRenderer() {
     gl::GenVertexArrays(1, &vertexArray_);  // core profile draws need a bound VAO, even an empty one
     gl::GenFramebuffers(1, &framebuffer_);
     gl::GenTextures(2, targets_);
+    gl::GenRenderbuffers(1, &depth_);
     gl::GenQueries(1, &timer_);
 }
 
 GlRenderer::~GlRenderer() {
     gl::DeleteQueries(1, &timer_);
+    gl::DeleteRenderbuffers(1, &depth_);
     gl::DeleteTextures(2, targets_);
     gl::DeleteFramebuffers(1, &framebuffer_);
     gl::DeleteVertexArrays(1, &vertexArray_);
 }
 
 PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines) {
-    PictureProgram picture{buildRayTracer(impl, defines), std::nullopt, {}};
-    if (std::optional<ShaderDefines> sky = skyProgramDefines(defines)) picture.sky = buildRayTracer(impl, *sky);
+    PictureProgram picture;
+    picture.program = buildRayTracer(impl, defines);
+    std::optional<ShaderDefines> sky = skyProgramDefines(defines);
+    if (sky) picture.sky = buildRayTracer(impl, *sky);
+    picture.marks = marksPixels(defines) || (sky && marksPixels(*sky));
+    if (picture.marks) picture.buildExact = [impl, exact = withoutAssumptions(defines)] { return buildRayTracer(impl, exact); };
     return picture;
 }
 
@@ -61,6 +67,9 @@ void GlRenderer::resize(int width, int height) {
         gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl::FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, targets_[i], 0);
     }
+    gl::BindRenderbuffer(GL_RENDERBUFFER, depth_);
+    gl::RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    gl::FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl::DrawBuffers(2, buffers);
     drawsRadiance_ = true;
@@ -68,7 +77,7 @@ void GlRenderer::resize(int width, int height) {
     GLenum error = gl::GetError();
     if (status != GL_FRAMEBUFFER_COMPLETE || error != GL_NO_ERROR) {
         width_ = height_ = 0;  // nothing usable was allocated
-        const long long mib = (long long)width * height * 32 >> 20;  // two RGBA32F targets, 16 bytes a pixel each
+        const long long mib = (long long)width * height * 36 >> 20;  // two RGBA32F targets, 16 bytes a pixel each, and depth
         throw Error("render size " + size + ": the driver cannot allocate the two RGBA32F targets (" +
                     std::to_string(mib) + " MiB" + (error != GL_NO_ERROR ? ", " + gl::errorName(error) : "") +
                     "); use a smaller --size or render.width/height");
@@ -119,37 +128,66 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
 }
 
 void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame) {
-    if (!picture.tiles.empty()) {
+    // The marks go into the depth buffer (cleared to 1, the mark 0) and the
+    // exact program is drawn where the depth test passes: where the stored
+    // depth is below its triangle's 0.5. llvmpipe tests depth before the
+    // shader and skips every 8 pixels none of which passes.
+    if (picture.marks) {
+        resize(frame.width, frame.height);
+        gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        const GLfloat one = 1.0f;
+        gl::ClearBufferfv(GL_DEPTH, 0, &one);
+        gl::Enable(GL_DEPTH_TEST);
+        gl::DepthFunc(GL_ALWAYS);
+        gl::DepthMask(GL_TRUE);
+    }
+    const SkyTiles* tiles = picture.sky ? &skyTilesFor(frame) : nullptr;
+    if (!tiles || tiles->sky.empty()) {
+        draw(picture.program, frame);
+    } else {
         gl::Enable(GL_SCISSOR_TEST);
-        for (const PictureProgram::Tiles& group : picture.tiles) {
-            const ShaderProgram& program = group.program.valid() ? group.program : picture.program;
-            if (!group.tileInts.empty()) {
-                gl::UseProgram(program.id());
-                // The elements of a uniform array have consecutive locations.
-                const GLint at = program.uniform("u_tile");
-                for (std::size_t i = 0; i < group.tileInts.size() && at >= 0; ++i) gl::Uniform1i(at + GLint(i), group.tileInts[i]);
-            }
-            for (const PixelRect& r : group.rects) {
-                gl::Scissor(r.x, r.y, r.width, r.height);
-                draw(program, frame);
-            }
+        for (const PixelRect& r : tiles->sky) {
+            gl::Scissor(r.x, r.y, r.width, r.height);
+            draw(*picture.sky, frame);
+        }
+        for (const PixelRect& r : tiles->scene) {
+            gl::Scissor(r.x, r.y, r.width, r.height);
+            draw(picture.program, frame);
         }
         gl::Disable(GL_SCISSOR_TEST);
-        return;
     }
-    if (!picture.sky) return draw(picture.program, frame);
-    const SkyTiles& tiles = skyTilesFor(frame);
-    if (tiles.sky.empty()) return draw(picture.program, frame);
-    gl::Enable(GL_SCISSOR_TEST);
-    for (const PixelRect& r : tiles.sky) {
-        gl::Scissor(r.x, r.y, r.width, r.height);
-        draw(*picture.sky, frame);
+    if (!picture.marks) return;
+    gl::DepthMask(GL_FALSE);
+    if (picture.exact) {
+        gl::DepthFunc(GL_GREATER);
+        draw(*picture.exact, frame);
     }
-    for (const PixelRect& r : tiles.scene) {
-        gl::Scissor(r.x, r.y, r.width, r.height);
-        draw(picture.program, frame);
-    }
-    gl::Disable(GL_SCISSOR_TEST);
+    gl::DepthMask(GL_TRUE);
+    gl::Disable(GL_DEPTH_TEST);
+}
+
+void GlRenderer::drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look) {
+    draw(picture, frame);
+    if (!look || !picture.marks || picture.exact || !lastFrameMarked()) return;
+    picture.exact = std::make_shared<ShaderProgram>(picture.buildExact());
+    // The marks of the frame just drawn are still in the depth buffer.
+    gl::Enable(GL_DEPTH_TEST);
+    gl::DepthMask(GL_FALSE);
+    gl::DepthFunc(GL_GREATER);
+    draw(*picture.exact, frame);
+    gl::DepthMask(GL_TRUE);
+    gl::Disable(GL_DEPTH_TEST);
+}
+
+bool GlRenderer::lastFrameMarked() const {
+    std::vector<float> pixels(std::size_t(width_) * height_ * 4);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl::PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl::ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, pixels.data());
+    for (std::size_t i = 3; i < pixels.size(); i += 4)
+        if (pixels[i] < 0.5f) return true;
+    return false;
 }
 
 double GlRenderer::drawTimed(const PictureProgram& picture, const FrameSettings& frame) {
@@ -203,10 +241,10 @@ Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const Fra
     return renderer.readBack();
 }
 
-Rendering renderOnce(const PictureProgram& picture, const Scene& scene, const FrameSettings& frame) {
+Rendering renderOnce(PictureProgram& picture, const Scene& scene, const FrameSettings& frame) {
     GlRenderer renderer;
     renderer.setScene(scene);
-    renderer.draw(picture, frame);
+    renderer.drawChecked(picture, frame);
     return renderer.readBack();
 }
 

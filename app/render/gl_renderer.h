@@ -18,23 +18,23 @@
 
 namespace rl {
 
-// What `raylab render` draws a picture with (definesFor(..., Purpose::Picture),
-// render/define_table.h): the program and, where its defines allow it, the
-// program for the tiles no camera ray can hit a sphere in (sky_tiles.h).
+// What `raylab render`, the live view and the bench draw a picture with
+// (definesFor(..., Purpose::Picture), render/define_table.h): the program
+// and, where its defines allow it, the program for the tiles no camera ray
+// of the model can hit a sphere in (sky_tiles.h).
+//
+// Where the programs check an assumption about the exercise files pixel by
+// pixel (marksPixels(): the sky tiles' miss, shadow rays from the light's
+// side), a pixel where it does not hold is marked, and drawn again by the
+// program without the assumption (`exact`, the same files and scene): the
+// picture is then what the exercise files compute, whatever they are. A
+// correct file marks no pixel, and `exact` is never built.
 struct PictureProgram {
     ShaderProgram program;
     std::optional<ShaderProgram> sky;
-    // Where non-empty, the frame drawn tile group by tile group instead: each
-    // program over its rectangles (scissored), together the frame once; for
-    // one camera and size only (render/course_program.h's per-tile programs).
-    // A group's `program` may be empty: `program` above then draws it, with
-    // the int array uniform `u_tile` set to `tileInts` first.
-    struct Tiles {
-        ShaderProgram program;
-        std::vector<PixelRect> rects;
-        std::vector<int> tileInts;
-    };
-    std::vector<Tiles> tiles;
+    bool marks = false;                           // program or sky mark pixels
+    std::function<ShaderProgram()> buildExact;    // the program without the assumptions
+    std::shared_ptr<ShaderProgram> exact;         // once built: draws the marked pixels of every frame
 };
 PictureProgram buildPictureProgram(const Implementation& impl, const ShaderDefines& defines);
 
@@ -56,14 +56,25 @@ public:
     // Renders one frame into the offscreen targets (resized as needed).
     void draw(const ShaderProgram& program, const FrameSettings& frame);
     // The picture program where some camera ray may hit a sphere, its sky
-    // program everywhere else (one scissored draw per rectangle of tiles).
+    // program everywhere else (one scissored draw per rectangle of tiles),
+    // and where the picture's `exact` program is built, that program over
+    // the marked pixels (the depth test skips the others).
     void draw(const PictureProgram& picture, const FrameSettings& frame);
+    // Draws `picture` and, where the frame has marked pixels, builds its
+    // exact program (once) and draws them again: the frame as the exercise
+    // files compute it. Reads the frame back to look for marks only where
+    // `look` is set (the live view: when the camera rests), the picture's
+    // programs can mark one and `exact` is not built yet.
+    void drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look = true);
     // Like draw(), measuring the GPU time with a GL_TIME_ELAPSED query (ms).
     double drawTimed(const ShaderProgram& program, const FrameSettings& frame);
     double drawTimed(const PictureProgram& picture, const FrameSettings& frame);
     // The last frame, rows top to bottom; its radiance is empty when that frame
     // did not store it (FrameSettings::radiance).
     Rendering readBack() const;
+    // Whether the last frame has a pixel its program marked (alpha 0 in the
+    // display target): an assumption that did not hold there.
+    bool lastFrameMarked() const;
     // The framebuffer holding the last frame (attachment 0 = display colour).
     GLuint framebuffer() const { return framebuffer_; }
     int width() const { return width_; }
@@ -82,6 +93,7 @@ private:
     GLuint vertexArray_ = 0;
     GLuint framebuffer_ = 0;
     GLuint targets_[2] = {0, 0};
+    GLuint depth_ = 0;               // the marks of a picture program (gl_FragDepth 0 where marked)
     GLuint timer_ = 0;
     int width_ = 0, height_ = 0;
     bool drawsRadiance_ = true;      // the draw buffers: both targets, or the display alone
@@ -91,6 +103,6 @@ private:
 
 // One call for the common case: a current context, a program, a scene.
 Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame);
-Rendering renderOnce(const PictureProgram& picture, const Scene& scene, const FrameSettings& frame);
+Rendering renderOnce(PictureProgram& picture, const Scene& scene, const FrameSettings& frame);
 
 }  // namespace rl

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -92,14 +93,18 @@ LightOnSurface lightOnSurface(const Scene& scene, std::size_t k, const glm::dvec
     return out;
 }
 
-void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor) {
+ShaderScene shaderScene(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor) {
     // Relative to the anchor, in double until the last step (docs/numerics.md):
     // a scene far from the world origin, or a camera far from the scene, then
     // loses in float32 only the rounding of the scene's own size.
     ShaderUnits units = shaderUnits(scene, eye);
-    double unit = units.unit, area = unit * unit;  // powers of two: exact
-    SceneBlockData data{};
-    for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
+    ShaderScene out;
+    const double unit = units.unit, area = unit * unit;  // powers of two: exact
+    out.unit = unit;
+    const std::size_t spheres = std::min(scene.spheres.size(), std::size_t(kMaxSpheres));
+    const std::size_t lights = std::min(scene.lights.size(), std::size_t(kMaxLights));
+    const glm::dvec3 eyeFromAnchor = (eye - anchor) / unit;
+    for (std::size_t i = 0; i < spheres; ++i) {
         const Sphere& s = scene.spheres[i];
         glm::dvec3 centre = (s.center - anchor) / unit;
         double radius = s.radius / unit;
@@ -107,34 +112,44 @@ void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const 
         // cancellation near a huge sphere (error_bounds.glsl, refineRoot).
         double distance = glm::length(centre);
         double anchorC = (distance - radius) * (distance + radius);
-        data.sphereGeometry[i] = glm::vec4(shaderPosition(s.center, anchor, unit), float(radius));
-        data.sphereSurface[i] = glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness));
-        data.sphereExtra[i] = glm::vec4(float(s.material.metallic), float(s.material.ao), float(anchorC),
-                                        refinesRoots(scene, i) ? 1.0f : 0.0f);
-        data.sphereEdgeTint[i] = glm::vec4(glm::vec3(s.material.edgeTint), 0.0f);
+        out.sphereGeometry.push_back(glm::vec4(shaderPosition(s.center, anchor, unit), float(radius)));
+        out.sphereSurface.push_back(glm::vec4(glm::vec3(s.material.albedo), float(s.material.roughness)));
+        out.sphereExtra.push_back(glm::vec4(float(s.material.metallic), float(s.material.ao), float(anchorC),
+                                            refinesRoots(scene, i) ? 1.0f : 0.0f));
+        out.sphereEdgeTint.push_back(glm::vec4(glm::vec3(s.material.edgeTint), 0.0f));
+        // The camera's relation to the sphere, for this camera (the live view
+        // uploads the block again whenever its camera moves): C = |e - c|^2 -
+        // r^2 in double, and whether the exercise's float32 can tell its sign
+        // (error_bounds.glsl, exerciseCError, with the same margins).
+        CameraSphere relation = cameraSphere(s, eyeFromAnchor, anchor, unit);
+        out.sphereFromCamera.push_back(glm::vec4(float(relation.C), relation.hostDecides ? 1.0f : 0.0f, 0.0f, 0.0f));
     }
-    for (std::size_t i = 0; i < scene.lights.size() && i < std::size_t(kMaxLights); ++i) {
-        const Light& l = scene.lights[i];
+    for (std::size_t k = 0; k < lights; ++k) {
+        const Light& l = scene.lights[k];
         glm::dvec3 intensity = units.lightsTooClose ? glm::dvec3(0.0) : l.color * l.intensity / area;
-        data.lightPosition[i] = glm::vec4(shaderPosition(l.position, anchor, unit), 1.0f);
-        data.lightIntensity[i] = glm::vec4(glm::vec3(intensity), 0.0f);
-    }
-    data.cameraFromAnchor = glm::vec4(shaderPosition(eye, anchor, unit), 0.0f);
-    // The camera's relation to every sphere, for this camera (the live view
-    // uploads the block again whenever its camera moves): C = |e - c|^2 - r^2
-    // in double, and whether the exercise's float32 can tell its sign
-    // (error_bounds.glsl, exerciseCError, with the same margins).
-    const glm::dvec3 eyeFromAnchor = (eye - anchor) / unit;
-    for (std::size_t i = 0; i < scene.spheres.size() && i < std::size_t(kMaxSpheres); ++i) {
-        CameraSphere relation = cameraSphere(scene.spheres[i], eyeFromAnchor, anchor, unit);
-        data.sphereFromCamera[i] = glm::vec4(float(relation.C), relation.hostDecides ? 1.0f : 0.0f, 0.0f, 0.0f);
-    }
-    // Each light's nearness to a sphere's surface, within what float32 can
-    // resolve around it, and its side from double (docs/model.md).
-    for (std::size_t k = 0; k < scene.lights.size() && k < std::size_t(kMaxLights); ++k) {
+        out.lightPosition.push_back(glm::vec4(shaderPosition(l.position, anchor, unit), 1.0f));
+        out.lightIntensity.push_back(glm::vec4(glm::vec3(intensity), 0.0f));
+        // Its nearness to a sphere's surface, within what float32 can
+        // resolve around it, and its side from double (docs/model.md).
         LightOnSurface near = lightOnSurface(scene, k, anchor, unit);
-        data.lightSurface[k] = glm::vec4(float(near.sphere), float(near.side), 0.0f, 0.0f);
+        out.lightSurface.push_back(glm::vec4(float(near.sphere), float(near.side), 0.0f, 0.0f));
     }
+    out.cameraFromAnchor = glm::vec4(shaderPosition(eye, anchor, unit), 0.0f);
+    return out;
+}
+
+void SceneUniformBlock::upload(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor) {
+    const ShaderScene numbers = shaderScene(scene, eye, anchor);
+    SceneBlockData data{};
+    std::copy(numbers.sphereGeometry.begin(), numbers.sphereGeometry.end(), data.sphereGeometry);
+    std::copy(numbers.sphereSurface.begin(), numbers.sphereSurface.end(), data.sphereSurface);
+    std::copy(numbers.sphereExtra.begin(), numbers.sphereExtra.end(), data.sphereExtra);
+    std::copy(numbers.sphereEdgeTint.begin(), numbers.sphereEdgeTint.end(), data.sphereEdgeTint);
+    std::copy(numbers.sphereFromCamera.begin(), numbers.sphereFromCamera.end(), data.sphereFromCamera);
+    std::copy(numbers.lightPosition.begin(), numbers.lightPosition.end(), data.lightPosition);
+    std::copy(numbers.lightIntensity.begin(), numbers.lightIntensity.end(), data.lightIntensity);
+    std::copy(numbers.lightSurface.begin(), numbers.lightSurface.end(), data.lightSurface);
+    data.cameraFromAnchor = numbers.cameraFromAnchor;
     gl::BindBuffer(GL_UNIFORM_BUFFER, buffer_);
     gl::BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(data), &data);
 }
@@ -182,6 +197,15 @@ FrameSettings frameFromScene(const Scene& scene) {
     return f;
 }
 
+glm::mat4 shaderCameraBasis(const FrameSettings& frame) {
+    double t = std::tan(0.5 * frame.fovYRadians);
+    glm::dmat4 view = frame.cameraToWorld;
+    view[0] *= t;
+    view[1] *= t;
+    view[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    return glm::mat4(view);
+}
+
 void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSettings& frame) {
     const RenderSettings& r = scene.render;
     gl::UseProgram(p.id());
@@ -189,12 +213,7 @@ void setFrameUniforms(const ShaderProgram& p, const Scene& scene, const FrameSet
     // with tan(fov_y / 2), in double, folded into right and up: the spec's
     // x r + y u + f with x, y computed at tan = 1 (u_fovY = pi/2) points the
     // same way, and a fov near 180 degrees no longer rounds past 90 in float.
-    double t = std::tan(0.5 * frame.fovYRadians);
-    glm::dmat4 view = frame.cameraToWorld;
-    view[0] *= t;
-    view[1] *= t;
-    view[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
-    glm::mat4 camera(view);
+    glm::mat4 camera = shaderCameraBasis(frame);
     gl::UniformMatrix4fv(p.uniform("u_cameraToWorld"), 1, GL_FALSE, glm::value_ptr(camera));
     gl::Uniform1f(p.uniform("u_fovY"), float(0.5 * 3.14159265358979323846));
     gl::Uniform2f(p.uniform("u_resolution"), float(frame.width), float(frame.height));

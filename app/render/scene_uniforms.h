@@ -9,6 +9,8 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <vector>
+
 namespace rl {
 
 // The camera's basis as the spec defines it: f = normalize(target - position),
@@ -34,6 +36,26 @@ struct LightOnSurface {
     int side = 0;
 };
 LightOnSurface lightOnSurface(const Scene& scene, std::size_t k, const glm::dvec3& anchor, double unit);
+
+// The scene's numbers as the shader holds them (shaders/scene.glsl): spheres,
+// lights and the camera `eye` relative to `anchor` (sceneAnchor()), in the
+// shader's unit (shaderUnits()), computed in double and rounded to float32
+// last, with each sphere's |centre - anchor|^2 - r^2 (docs/uniforms.md). The
+// uniform block and the constants of a specialised program
+// (render/scene_constants.h) both hold exactly these floats.
+struct ShaderScene {
+    std::vector<glm::vec4> sphereGeometry;    // xyz centre, w radius
+    std::vector<glm::vec4> sphereSurface;     // rgb albedo, a perceptual roughness
+    std::vector<glm::vec4> sphereExtra;       // x metallic, y ao, z |centre|^2 - r^2, w 1: refine its roots
+    std::vector<glm::vec4> sphereEdgeTint;    // rgb edge tint
+    std::vector<glm::vec4> sphereFromCamera;  // x |camera - centre|^2 - r^2, y 1: the host decides the side
+    std::vector<glm::vec4> lightPosition;     // xyz position
+    std::vector<glm::vec4> lightIntensity;    // rgb colour * intensity / unit^2
+    std::vector<glm::vec4> lightSurface;      // x the sphere it lies on (-1), y its side
+    glm::vec4 cameraFromAnchor{0.0f};
+    double unit = 1.0;                        // the shader's length unit (a power of two)
+};
+ShaderScene shaderScene(const Scene& scene, const glm::dvec3& eye, const glm::dvec3& anchor);
 
 class SceneUniformBlock {
 public:
@@ -79,6 +101,10 @@ struct FrameSettings {
     bool radiance = true;
 };
 FrameSettings frameFromScene(const Scene& scene);
+
+// The camera basis the shader gets (camera.glsl, u_cameraToWorld): right and
+// up scaled by tan(fov_y / 2) in double, back, and a zero position column.
+glm::mat4 shaderCameraBasis(const FrameSettings& frame);
 
 // The camera position of a frame: what SceneUniformBlock::upload() needs.
 inline glm::dvec3 framePosition(const FrameSettings& frame) { return glm::dvec3(frame.cameraToWorld[3]); }

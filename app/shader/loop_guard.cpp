@@ -100,6 +100,7 @@ std::size_t matching(const std::string& s, const std::vector<Token>& tokens, std
 struct Edit {
     std::size_t at;
     std::string text;
+    std::size_t erase = 0;  // characters of the file replaced by `text` from `at`
 };
 
 // A file whose object-like macros expand to more than kMaxExpandedTokens
@@ -433,14 +434,35 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
         return k + 2 < to && tokens[k].ident && tokens[k + 1].ident && is(text, tokens[k + 2], "=");
     };
     // Wraps the condition between tokens (from, to) exclusive: `rl_loop((cond), ID)`.
-    auto guard = [&](std::size_t from, std::size_t to, int line) {
+    // The text between tokens (from, to) exclusive, and whether it can be
+    // copied onto another line unchanged: one line, no comment.
+    auto between = [&](std::size_t from, std::size_t to) {
+        const std::size_t begin = tokens[from].at + tokens[from].size, end = tokens[to].at;
+        return text.substr(begin, end - begin);
+    };
+    auto copyable = [](const std::string& part) {
+        return part.find('\n') == std::string::npos && part.find("//") == std::string::npos &&
+               part.find("/*") == std::string::npos;
+    };
+    // The loop's condition as the guard asks it: `rl_loop((cond), ID)`.
+    auto guarded = [&](const std::string& cond, int id) {
+        const bool empty = cond.find_first_not_of(" \t\r\f\v") == std::string::npos;
+        return empty ? "rl_loop(true, " + std::to_string(id) + ")" : "rl_loop((" + cond + "), " + std::to_string(id) + ")";
+    };
+    // The condition between tokens (from, to) exclusive, checked; the loop's ID.
+    auto newLoop = [&](std::size_t from, std::size_t to, int line) {
         const int id = firstId + int(out.loopLines.size());
         out.loopLines.push_back(line);
-        const std::size_t begin = tokens[from].at + tokens[from].size, end = tokens[to].at;
-        const bool empty = from + 1 == to;
-        if (!empty && declares(from + 1, to))
+        if (from + 1 != to && declares(from + 1, to))
             fail(tokens[from + 1].line, "a loop condition that declares a variable cannot be bounded by raylab's loop "
                                         "guard: declare the variable before the loop");
+        return id;
+    };
+    // Wraps the condition between tokens (from, to) exclusive: `rl_loop((cond), ID)`.
+    auto guard = [&](std::size_t from, std::size_t to, int line) {
+        const int id = newLoop(from, to, line);
+        const std::size_t begin = tokens[from].at + tokens[from].size, end = tokens[to].at;
+        const bool empty = from + 1 == to;
         if (empty) {
             edits.push_back({begin, " rl_loop(true, " + std::to_string(id) + ")"});
         } else {
@@ -448,6 +470,106 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
             edits.push_back({tokens[from + 1].at, "rl_loop(("});
             edits.push_back({end, "), " + std::to_string(id) + ")"});
         }
+    };
+    // The `}` closing the body that starts with the `{` at token `open`, or
+    // tokens.size() where the body holds a directive or does not close.
+    auto bodyEnd = [&](std::size_t open) {
+        int depth = 0;
+        for (std::size_t k = open; k < tokens.size(); ++k) {
+            if (tokens[k].directive) return tokens.size();
+            if (is(text, tokens[k], "{")) ++depth;
+            if (is(text, tokens[k], "}") && --depth == 0) return k;
+        }
+        return tokens.size();
+    };
+    // A loop whose body is a block, its condition and step on their lines, is
+    // also turned to test its condition at the end, the way compilers rotate
+    // loops:
+    //     for (init; cond; step) { body }
+    //         ->  { init; if (rl_loop((cond), ID)) do { body } while (((step), rl_loop((cond), ID))); }
+    //     while (cond) { body }
+    //         ->  if (rl_loop((cond), ID)) do { body } while (rl_loop((cond), ID));
+    // The same tests of the condition, in the same order (a `continue` goes
+    // to the step and the test), the same lines. llvmpipe tests a loop's mask
+    // at the end of its body, so a loop that tests at the top runs its body
+    // once more with every pixel masked off after the last test fails:
+    // exercise 09's bounce loop, the whole ray tracer (docs/performance.md).
+    // Returns false where the loop is not of that form (then guard() alone).
+    // A for loop that cannot run away needs no guard, only its count in the
+    // invocation's total (rl_counted: the guards of the loops around it see
+    // it): `for (int i = A; i < B; ++i)` (or `<=`, `i++`, `i += 1`) with A an
+    // integer literal, B an integer literal of at most kUnguardedBound or
+    // maxBounces() (at most kMaxBounces), i neither assigned in the body nor
+    // handed to a function (which could take it as `out`) nor declared again
+    // there, and no loop in the body (so no two such loops multiply).
+    // Exercise 09's bounce loop is one: its guard cost 5% of a frame
+    // (docs/performance.md). Tokens: `open` the header's `(`, `semi1`,
+    // `semi2` its semicolons, `close` its `)`, `end` the body's `}`.
+    auto bounded = [&](std::size_t open, std::size_t semi1, std::size_t semi2, std::size_t close, std::size_t end) {
+        auto tok = [&](std::size_t k, const char* word) { return k < tokens.size() && is(text, tokens[k], word); };
+        auto literalAtMost = [&](std::size_t k, long most) {
+            if (k >= tokens.size() || !tokens[k].number) return false;
+            const std::string digits = text.substr(tokens[k].at, tokens[k].size);
+            if (digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+            return std::stol(digits) <= most;
+        };
+        // int NAME = LITERAL ;
+        if (!(semi1 == open + 5 && tok(open + 1, "int") && tokens[open + 2].ident && tok(open + 3, "=") &&
+              literalAtMost(open + 4, kUnguardedBound)))
+            return false;
+        const std::string name = text.substr(tokens[open + 2].at, tokens[open + 2].size);
+        auto isName = [&](std::size_t k) { return k < tokens.size() && tokens[k].ident && is(text, tokens[k], name.c_str()); };
+        // NAME < BOUND or NAME <= BOUND
+        std::size_t k = semi1 + 1;
+        if (!isName(k) || !tok(k + 1, "<")) return false;
+        k += tok(k + 2, "=") ? 3 : 2;
+        const bool limitOk = (k + 1 == semi2 && literalAtMost(k, kUnguardedBound)) ||
+                             (k + 3 == semi2 && tok(k, "maxBounces") && tok(k + 1, "(") && tok(k + 2, ")"));
+        if (!limitOk) return false;
+        // ++NAME, NAME++ or NAME += 1
+        const std::size_t n = close - semi2 - 1;
+        const bool stepOk = (n == 3 && tok(semi2 + 1, "+") && tok(semi2 + 2, "+") && isName(semi2 + 3)) ||
+                            (n == 3 && isName(semi2 + 1) && tok(semi2 + 2, "+") && tok(semi2 + 3, "+")) ||
+                            (n == 4 && isName(semi2 + 1) && tok(semi2 + 2, "+") && tok(semi2 + 3, "=") && tok(semi2 + 4, "1"));
+        if (!stepOk) return false;
+        for (std::size_t j = close + 1; j < end; ++j) {
+            if (tok(j, "for") || tok(j, "while") || tok(j, "do")) return false;
+            if (!isName(j)) continue;
+            const bool assigned = (j + 1 < end && (tok(j + 1, "=") ? !tok(j + 2, "=") : false)) ||
+                                  (j + 2 < end && tokens[j + 2].at == tokens[j + 1].at + 1 && tok(j + 2, "=") &&
+                                   !tok(j + 1, "=") && !tok(j + 1, "<") && !tok(j + 1, ">") && !tok(j + 1, "!")) ||
+                                  (tok(j + 1, "+") && tok(j + 2, "+")) || (tok(j + 1, "-") && tok(j + 2, "-")) ||
+                                  (j >= 2 && ((tok(j - 1, "+") && tok(j - 2, "+")) || (tok(j - 1, "-") && tok(j - 2, "-"))));
+            const bool argument = (tok(j - 1, "(") || tok(j - 1, ",")) && (tok(j + 1, ")") || tok(j + 1, ","));
+            const bool declared = j > 0 && tokens[j - 1].ident && !tok(j - 1, "return");
+            if (assigned || argument || declared) return false;
+        }
+        return true;
+    };
+    // condFrom, condTo: the tokens around the condition (the for's two `;`,
+    // or the while's parentheses).
+    auto rotate = [&](const Token& keyword, std::size_t open, std::size_t close, std::size_t condFrom,
+                      std::size_t condTo, bool isFor, int line) {
+        if (close + 1 >= tokens.size() || !is(text, tokens[close + 1], "{")) return false;
+        const std::size_t end = bodyEnd(close + 1);
+        if (end >= tokens.size()) return false;
+        const std::string cond = between(condFrom, condTo);
+        const std::string step = isFor ? between(condTo, close) : "";
+        if (!copyable(cond) || !copyable(step) || !copyable(between(condFrom, close))) return false;
+        const bool safe = isFor && bounded(open, condFrom, condTo, close, end);
+        const std::string test = safe ? "rl_counted(" + cond + ")" : guarded(cond, newLoop(condFrom, condTo, line));
+        const std::size_t afterHeader = tokens[close].at + 1;
+        if (isFor) {  // `for (` -> `{ `, `cond; step)` -> ` if (test) do`
+            edits.push_back({keyword.at, "{ ", tokens[open].at + 1 - keyword.at});
+            const std::size_t afterInit = tokens[condFrom].at + 1;
+            edits.push_back({afterInit, " if (" + test + ") do", afterHeader - afterInit});
+            const bool noStep = step.find_first_not_of(" \t\r\f\v") == std::string::npos;
+            edits.push_back({tokens[end].at + 1, " while (" + (noStep ? test : "((" + step + "), " + test + ")") + "); }"});
+        } else {  // a while loop
+            edits.push_back({keyword.at, "if (" + test + ") do", afterHeader - keyword.at});
+            edits.push_back({tokens[end].at + 1, " while (" + test + ");"});
+        }
+        return true;
     };
     struct Do {
         int line;
@@ -477,12 +599,14 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
         if (close >= tokens.size()) continue;  // unbalanced: a syntax error the driver reports
         if (isWhile) {
             int line = t.line;
+            bool endOfDo = false;
             if (!doStack.empty() && doStack.back().depth == depth) {  // the while of a do-while
                 line = doStack.back().line;
                 doStack.pop_back();
+                endOfDo = true;
             }
             if (close == open + 1) continue;  // `while ()`: a syntax error
-            guard(open, close, line);
+            if (endOfDo || !rotate(t, open, close, open, close, false, line)) guard(open, close, line);
         } else {
             std::vector<std::size_t> semicolons;
             int parens = 0;
@@ -492,7 +616,8 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
                 if (parens == 0 && is(text, tokens[j], ";")) semicolons.push_back(j);
             }
             if (semicolons.size() != 2) continue;  // not a for header: a syntax error the driver reports
-            guard(semicolons[0], semicolons[1], t.line);
+            if (!rotate(t, open, close, semicolons[0], semicolons[1], true, t.line))
+                guard(semicolons[0], semicolons[1], t.line);
         }
         k = open;  // the header's tokens are looked at again (arrays), none is a loop
     }
@@ -504,7 +629,7 @@ GuardedSource guardLoops(const std::string& text, const std::string& shown, int 
     for (const Edit& e : edits) {
         out.text.append(text, from, e.at - from);
         out.text += e.text;
-        from = e.at;
+        from = e.at + e.erase;
     }
     out.text.append(text, from, std::string::npos);
     return out;

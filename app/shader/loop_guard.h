@@ -51,6 +51,11 @@ constexpr int kLoopLimit = 16384;
 constexpr int kLoopTotalLimit = 60000;
 // A loop that met the total is recorded as kLoopTotalFlag + its ID.
 constexpr int kLoopTotalFlag = 65536;
+// The largest literal bound of a for loop that needs no guard (a counter
+// from a literal up to it, or to maxBounces(), untouched in the body): 64
+// iterations a run, three such loops nested 262144, the most any of them
+// can add to an invocation.
+constexpr long kUnguardedBound = 64;
 // Elements of one array in an exercise file: an exercise needs a handful.
 constexpr long kMaxArrayElements = 4096;
 

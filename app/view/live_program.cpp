@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "core/paths.h"
-#include "render/live_course_program.h"
 
 #include <algorithm>
 #include <chrono>
@@ -41,6 +40,9 @@ bool LiveProgram::setDefines(const ShaderDefines& defines) {
 
 bool LiveProgram::rebuild() {
     built_.clear();  // from the old sources; the one in use stays until a new one builds
+    still_.reset();  // built again from the new sources when the picture is still
+    stillDefines_.clear();
+    failedDefines_.clear();
     return build();
 }
 
@@ -63,26 +65,23 @@ bool LiveProgram::build() {
     return error_.empty();
 }
 
-const PictureProgram* LiveProgram::generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built) {
+PictureProgram* LiveProgram::still(const ShaderDefines& defines, bool mayBuild, bool& built) {
     built = false;
-    // The source depends on the structure only: equal sources, same program.
-    std::string source = liveCourseSource(scene, frame);
-    if (source != generatedSource_) {
-        if (!mayBuild || source == failedSource_) return nullptr;
+    if (!still_ || defines != stillDefines_) {
+        if (!mayBuild || defines == failedDefines_) return nullptr;
         const auto start = std::chrono::steady_clock::now();
         try {
-            generated_ = std::make_unique<PictureProgram>(buildLiveCoursePicture(scene, source));
-            generatedSource_ = std::move(source);
-            ++generatedBuilds_;
+            still_ = std::make_unique<PictureProgram>(buildPictureProgram(impl_, defines));
+            stillDefines_ = defines;
+            ++stillBuilds_;
             built = true;
-        } catch (const Error&) {  // beyond the driver's limits: the structure's defines draw it
-            failedSource_ = std::move(source);
+        } catch (const Error&) {  // beyond the driver's limits: the structure's program draws it
+            failedDefines_ = defines;
             return nullptr;
         }
         lastBuildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     }
-    setLiveCourseValues(generated_->program, scene, frame);
-    return generated_.get();
+    return still_.get();
 }
 
 }  // namespace rl

@@ -58,18 +58,17 @@ public:
     const std::vector<std::filesystem::path>& files() const { return files_; }
     double lastBuildMs() const { return lastBuildMs_; }
 
-    // The picture drawn with the course generator's program (issue #25,
-    // render/live_course_program.h), for the caller to check first that it
-    // applies (the course's own files, the picture view). Returns it with
-    // every value of `scene` and `frame` set, or nullptr when its structure
-    // differs from the one built and `mayBuild` is false (a drag: the caller
-    // draws program() meanwhile and asks again when the hand stops), or when
-    // that structure does not build (then program() draws it, and the
-    // structure is not tried again). Sets `built` when it compiled one.
-    // With its sky program (render/sky_tiles.h) for GlRenderer::draw(const PictureProgram&, ...).
-    const PictureProgram* generated(const Scene& scene, const FrameSettings& frame, bool mayBuild, bool& built);
-    // Generated programs compiled since the start (one per structure met).
-    int generatedBuilds() const { return generatedBuilds_; }
+    // The still picture's program (Purpose::LiveStill, render/define_table.h:
+    // the scene's numbers compiled in, the camera a uniform), with its sky
+    // program, for `defines` (the caller's definesFor(..., LiveStill)): built
+    // from the same sources as program(), whatever the files are. Returns
+    // nullptr when those defines are not built yet and `mayBuild` is false
+    // (a slider moving: the caller draws program() meanwhile and asks again
+    // when the hand stops), or when they do not build (then program() draws
+    // it). Sets `built` when it compiled one.
+    PictureProgram* still(const ShaderDefines& defines, bool mayBuild, bool& built);
+    // Still programs compiled since the start.
+    int stillBuilds() const { return stillBuilds_; }
 
 private:
     Implementation impl_;
@@ -80,9 +79,9 @@ private:
     std::string error_;
     std::vector<std::filesystem::path> files_;
     double lastBuildMs_ = 0;
-    std::string generatedSource_, failedSource_;
-    std::unique_ptr<PictureProgram> generated_;
-    int generatedBuilds_ = 0;
+    ShaderDefines stillDefines_, failedDefines_;
+    std::unique_ptr<PictureProgram> still_;
+    int stillBuilds_ = 0;
 };
 
 }  // namespace rl

@@ -73,7 +73,7 @@ void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right,
     }
 }
 
-void SplitPicture::render(const PictureProgram& picture, const FrameSettings& frame) {
+void SplitPicture::render(PictureProgram& picture, const FrameSettings& frame, bool look) {
     sideBySide_ = false;
     offset_ = 0;
     width_ = frame.width;
@@ -81,7 +81,7 @@ void SplitPicture::render(const PictureProgram& picture, const FrameSettings& fr
     split_ = width_;
     drawn_[0] = true;
     drawn_[1] = false;
-    sides_[0].draw(picture, frame);
+    sides_[0].drawChecked(picture, frame, look);  // a marked pixel: its exact program, built once
 }
 
 void SplitPicture::present(int windowWidth, int windowHeight) const {

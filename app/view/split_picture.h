@@ -19,8 +19,9 @@ public:
     // program (none has built yet) leaves its side black.
     void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX);
     // One picture over the whole frame, with its sky tiles where it has a sky
-    // program (GlRenderer::draw(const PictureProgram&, ...)).
-    void render(const PictureProgram& picture, const FrameSettings& frame);
+    // program; `look`: read the frame back for marked pixels
+    // (GlRenderer::drawChecked: the view looks when the camera rests).
+    void render(PictureProgram& picture, const FrameSettings& frame, bool look);
 
     // Side by side: two whole pictures, the same camera, each half of the
     // columns right of leftFraction of the width (the panel's; the right one

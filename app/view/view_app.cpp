@@ -8,7 +8,6 @@
 #include "core/scene_io.h"
 #include "course/exercise_registry.h"
 #include "render/define_table.h"
-#include "render/live_course_program.h"
 #include "view/implementation_folder.h"
 #include "view/input_script.h"
 #include "view/overlays.h"
@@ -187,7 +186,7 @@ void ViewApp::frame() {
     const bool lastFrame = scriptDone && framesLeft_ == 1;
     if (lastFrame && !options_.screenshot.empty()) pendingShot_ = options_.screenshot;
     const bool screenshot = !pendingShot_.empty() || !pendingUiShot_.empty();
-    const bool refine = !moving() && (renderedScale_ < 1.0 || generatedPending_);
+    const bool refine = !moving() && (renderedScale_ < 1.0 || stillPending_);
     bool rendered = false;
     if (dirty_ || state_.continuous || refine || (screenshot && renderedScale_ < 1.0)) {
         renderPicture(screenshot);
@@ -381,31 +380,31 @@ void ViewApp::sceneChanged(bool cameraChanged) {
     dirty_ = true;
 }
 
-const PictureProgram* ViewApp::generatedPicture(Side& side, const FrameSettings& frame) {
+PictureProgram* ViewApp::stillPicture(Side& side) {
     LiveProgram& program = *side.program;
-    // The generated program writes the course's own code: never for a
-    // student's file, another model (--compare-model), a teaching view or
-    // --generic; side by side draws each half at another size than `frame`.
-    if (options_.generic || state_.view != View::Final || side.model || sideBySideActive() ||
-        !liveCourseApplies(scene_.scene(), side.facts) || !program.error().empty())
+    // The whole frame of one side, the picture or a bounce view: the same
+    // path as `raylab render` for whatever files are shown, with the scene's
+    // values compiled in (Purpose::LiveStill); a slider that moves changes
+    // them, and the structure's program draws until the hand stops
+    // (docs/decisions.md, "One program").
+    if (options_.generic || !isPictureView(state_.view) || sides_.size() > 1 || !program.error().empty() || !program.program())
         return nullptr;
-    // A structure met during a drag (a sphere or the camera crossing a class
-    // that the generator writes in) is compiled when the hand stops; until
-    // then the structure's defines draw it (docs/decisions.md).
+    Scene shown = scene_.scene();
+    if (side.model) shown.model = *side.model;
     bool built = false;
-    const PictureProgram* generated = program.generated(scene_.scene(), frame, !moving(), built);
+    PictureProgram* still = program.still(definesFor(shown, side.facts, Purpose::LiveStill), !moving(), built);
     if (built)
-        std::cout << "raylab: built " << program.label() << " for the picture, generated for the scene's structure ("
+        std::cout << "raylab: built " << program.label() << " for the still picture, the scene's numbers compiled in ("
                   << int(std::lround(program.lastBuildMs())) << " ms)" << std::endl;
-    if (!generated) generatedPending_ = true;
-    return generated;
+    if (!still) stillPending_ = true;
+    return still;
 }
 
 bool ViewApp::moving() const { return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime; }
 
 void ViewApp::renderPicture(bool fullResolution) {
     const double scale = fullResolution ? 1.0 : adaptive_.scale(moving(), fbWidth_, fbHeight_);
-    generatedPending_ = false;
+    stillPending_ = false;
     FrameSettings frame = frameFromScene(scene_.scene());
     frame.cameraToWorld = trackball_->cameraToWorldD();
     frame.width = std::max(1, int(std::lround(fbWidth_ * scale)));
@@ -414,17 +413,14 @@ void ViewApp::renderPicture(bool fullResolution) {
     frame.viewBounce = state_.viewBounce;
     frame.radiance = false;  // the window shows the display target; the radiance is never read here
     const int split = wipeActive() ? int(std::lround(state_.divider * frame.width)) : frame.width;
-    const PictureProgram* generated[2] = {generatedPicture(sides_[0], frame),
-                                          sides_.size() > 1 ? generatedPicture(sides_[1], frame) : nullptr};
-    const ShaderProgram* left = generated[0] ? &generated[0]->program : sides_[0].program->program();
-    const ShaderProgram* right = generated[1]         ? &generated[1]->program
-                                 : sides_.size() > 1 ? sides_[1].program->program()
-                                                     : nullptr;
+    PictureProgram* still = stillPicture(sides_[0]);
+    const ShaderProgram* left = sides_[0].program->program();
+    const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
     const auto renderStart = Clock::now();
     if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
     try {
-        if (sides_.size() == 1 && generated[0])  // the whole frame: with its sky tiles
-            picture_->render(*generated[0], frame);
+        if (still)  // the whole frame: with its sky tiles
+            picture_->render(*still, frame, !moving());
         else if (sideBySideActive())
             picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else

@@ -76,7 +76,7 @@ private:
     // The side's picture for `frame` drawn with the course generator's
     // program (issue #25) where it applies and its structure is built; else
     // nullptr, and the side's live program (render/define_table.h) draws it.
-    const PictureProgram* generatedPicture(Side& side, const FrameSettings& frame);
+    PictureProgram* stillPicture(Side& side);
     void drawUi(ViewRequests& requests, const WipeLabels& wipeLabels);
     void handleRequests(const ViewRequests& requests);
     void writeScreenshot(const std::string& file, bool withUi);
@@ -84,7 +84,7 @@ private:
     void saveScene(bool confirmed = false);
     void openPreset(int index);
     bool moving() const;
-    bool generatedPending_ = false;  // a side drew with its defines' program until the hand stops
+    bool stillPending_ = false;  // drawn with the structure's program until the hand stops
     std::vector<std::string> errors() const;
     void toast(const std::string& message);
     void printStats() const;

@@ -1,7 +1,7 @@
 // The generated shaders' per-sphere tables of few values as functions of
-// selects (render/scene_facts.h, selectTables): what is rewritten, what is
+// selects (bench/expert_scene.h, selectTables): what is rewritten, what is
 // left, and that every use follows its table.
-#include "render/scene_facts.h"
+#include "bench/expert_scene.h"
 
 #include <gtest/gtest.h>
 

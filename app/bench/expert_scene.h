@@ -1,9 +1,9 @@
-// What a per-scene shader generator knows about its scene, computed on the
-// host in double, and how it writes numbers as GLSL: shared by the bench's
-// expert yardstick (bench/expert.cpp) and the course's picture programs
-// (render/course_program.cpp, render/live_course_program.cpp). Each writes
-// its own shader; only these facts of the scene and the literal forms are
-// common (and, between the two course programs, the GLSL pieces below).
+// What the bench's expert yardstick (bench/expert.cpp) knows about its
+// scene, computed on the host in double, and how it writes numbers and its
+// GLSL pieces. The yardstick is the one copy of the model written outside
+// the framework's GLSL (docs/decisions.md, "One program"): nothing of raylab's
+// own programs reads this file, so the yardstick does not move with what it
+// measures.
 #pragma once
 
 #include "core/scene.h"
@@ -78,23 +78,8 @@ Facts factsOf(const Scene& scene);
 // every 8-pixel group and a uniform array is a gather per component: a few
 // selects per component cost less (`raylab bench`, docs/performance.md,
 // "Tables as selects"). A rule any hand-written shader can follow, so both
-// the expert yardstick and the course programs use it. Other lines unchanged.
+// the expert yardstick uses it. Other lines unchanged.
 inline constexpr int kSelectTableMax = 8;
 std::string selectTables(const std::string& text, int maxDistinct = kSelectTableMax);
-
-// GLSL that the course's two generated programs share word for word
-// (render/course_program.cpp with values as literals, render/
-// live_course_program.cpp with values as uniforms); the expert yardstick
-// keeps its own text, so that it does not move with what it measures.
-
-// The end of one light's loop body: where the light is not blocked (`blk`),
-// GGX + Lambert with h never normalised added to `c`, `power` (a GLSL
-// expression: a literal or a uniform) the light's power in d2's units.
-std::string litLightTerm(const std::string& power);
-
-// The display step from the pixel's radiance `L`: times `exposure`, the
-// scene's tone map, sRGB or 1 / gamma (`inverseGamma`: GLSL expressions), and
-// both outputs; closes main().
-std::string displayStep(const RenderSettings& rs, const std::string& exposure, const std::string& inverseGamma);
 
 }  // namespace rl::scene_facts

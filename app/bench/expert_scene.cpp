@@ -1,4 +1,4 @@
-#include "render/scene_facts.h"
+#include "bench/expert_scene.h"
 
 #include <glm/geometric.hpp>
 
@@ -72,33 +72,7 @@ Facts factsOf(const Scene& scene) {
     return f;
 }
 
-std::string litLightTerm(const std::string& power) {
-    return "            if (!blk) {\n"
-           "                s = lu * il + v; ss = dot(s, s); ns = dot(n, s); vec3 cx = cross(n, s);\n"
-           // D = a2 / (pi ((n.h)^2 (a2 - 1) + 1)^2) with h = s/|s|, 1 - (n.h)^2 = |n x s|^2/|s|^2
-           "                den = a2 * ns * ns + dot(cx, cx);\n"
-           "                x = 1.0 - min(0.5 * sqrt(ss), 1.0); x5 = x * x; x5 *= x5 * x;\n"
-           "                F = F0 + (1.0 - F0) * x5;\n"
-           // G / (4 NoL NoV) = gv / (NoL (1 - k) + k)
-           "                c += ((1.0 - F) * KD + F * (a2 * ss * ss / (" +
-           num(kPi) + " * den * den) * gv / (NoL * (1.0 - k1) + k1))) * (" + power +
-           " * (NoL / d2));\n"
-           "            }\n        }\n";
-}
 
-std::string displayStep(const RenderSettings& rs, const std::string& exposure, const std::string& inverseGamma) {
-    std::string s = "    vec3 c = L * " + exposure + ";\n";
-    switch (rs.tonemap) {
-    case ToneMap::Reinhard: s += "    c = c / (1.0 + c);\n"; break;
-    case ToneMap::Exponential: s += "    c = 1.0 - exp(-c);\n"; break;
-    case ToneMap::None: s += "    c = clamp(c, 0.0, 1.0);\n"; break;
-    }
-    if (rs.srgb)
-        s += "    c = mix(12.92 * c, 1.055 * pow(c, vec3(" + num(1 / 2.4) + ")) - 0.055, step(0.0031308, c));\n";
-    else
-        s += "    c = pow(c, vec3(" + inverseGamma + "));\n";
-    return s + "    o_display = vec4(c, 1.0);\n    o_radiance = vec4(L, 1.0);\n}\n";
-}
 
 namespace {
 

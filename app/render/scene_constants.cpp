@@ -1,0 +1,190 @@
+#include "render/scene_constants.h"
+
+#include "core/float_range.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rl {
+
+std::string floatLiteral(float x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(x));
+    std::string literal = text;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    return literal;
+}
+
+std::string vec3Literal(const glm::vec3& v) {
+    return "vec3(" + floatLiteral(v.x) + ", " + floatLiteral(v.y) + ", " + floatLiteral(v.z) + ")";
+}
+
+namespace {
+
+std::string vec4Literal(const glm::vec4& v) {
+    return "vec4(" + floatLiteral(v.x) + ", " + floatLiteral(v.y) + ", " + floatLiteral(v.z) + ", " +
+           floatLiteral(v.w) + ")";
+}
+
+std::string vec2Literal(float x, float y) { return "vec2(" + floatLiteral(x) + ", " + floatLiteral(y) + ")"; }
+
+template <typename F>
+std::string chainOver(const std::string& index, std::size_t count, F&& value) {
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < count; ++i) values.push_back(value(i));
+    return selectChain(index, values);
+}
+
+}  // namespace
+
+std::string selectChain(const std::string& index, const std::vector<std::string>& values) {
+    if (values.empty()) return "0";
+    // Each distinct value once, tested against every index that holds it;
+    // the last index's value is the default.
+    std::vector<std::string> distinct;
+    std::vector<std::vector<std::size_t>> at;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        auto it = std::find(distinct.begin(), distinct.end(), values[i]);
+        if (it == distinct.end()) {
+            distinct.push_back(values[i]);
+            at.push_back({i});
+        } else {
+            at[std::size_t(it - distinct.begin())].push_back(i);
+        }
+    }
+    const std::size_t fallback = std::size_t(std::find(distinct.begin(), distinct.end(), values.back()) - distinct.begin());
+    std::string out = "(";
+    for (std::size_t d = 0; d < distinct.size(); ++d) {
+        if (d == fallback) continue;
+        for (std::size_t k = 0; k < at[d].size(); ++k)
+            out += (k ? " || (" : "(") + index + ") == " + std::to_string(at[d][k]);
+        out += " ? " + distinct[d] + " : ";
+    }
+    return out + distinct[fallback] + ")";
+}
+
+ShaderScene sceneNumbers(const Scene& scene) { return shaderScene(scene, scene.camera.position, sceneAnchor(scene)); }
+
+std::string sphereGeometryMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.sphereGeometry.size(), [&](std::size_t i) { return vec4Literal(n.sphereGeometry[i]); });
+}
+
+std::string sphereAnchorCMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.sphereExtra.size(), [&](std::size_t i) { return floatLiteral(n.sphereExtra[i].z); });
+}
+
+std::string sphereMaterialMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.sphereSurface.size(), [&](std::size_t i) {
+        const glm::vec4 s = n.sphereSurface[i], e = n.sphereExtra[i];
+        return "Material(" + vec3Literal(glm::vec3(s)) + ", " + floatLiteral(s.w) + ", " + floatLiteral(e.x) + ", " +
+               floatLiteral(e.y) + ")";
+    });
+}
+
+std::string sphereEdgeTintMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.sphereEdgeTint.size(), [&](std::size_t i) { return vec3Literal(glm::vec3(n.sphereEdgeTint[i])); });
+}
+
+std::string lightPositionMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.lightPosition.size(), [&](std::size_t i) { return vec3Literal(glm::vec3(n.lightPosition[i])); });
+}
+
+std::string lightIntensityMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.lightIntensity.size(), [&](std::size_t i) { return vec3Literal(glm::vec3(n.lightIntensity[i])); });
+}
+
+std::string lightSurfaceMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("k", n.lightSurface.size(),
+                     [&](std::size_t k) { return vec2Literal(n.lightSurface[k].x, n.lightSurface[k].y); });
+}
+
+std::string cameraSphereMacro(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    return chainOver("i", n.sphereFromCamera.size(),
+                     [&](std::size_t i) { return vec2Literal(n.sphereFromCamera[i].x, n.sphereFromCamera[i].y); });
+}
+
+namespace {
+
+// Light k's relation to sphere j in the shader's unit, from double.
+struct LightSphere {
+    glm::dvec3 w;  // L - c
+    double C;      // |L - c|^2 - r^2
+    bool exact;    // the light-side form decides this pair exactly
+};
+
+std::vector<std::vector<LightSphere>> lightSpheres(const Scene& scene) {
+    const ShaderScene n = sceneNumbers(scene);
+    const double unit = n.unit;
+    // The largest distance in the scene, in the shader's unit: the test's
+    // products are at most its fourth power.
+    glm::dvec3 low(INFINITY), high(-INFINITY);
+    for (const Sphere& s : scene.spheres) {
+        low = glm::min(low, (s.center - glm::dvec3(s.radius)) / unit);
+        high = glm::max(high, (s.center + glm::dvec3(s.radius)) / unit);
+    }
+    for (const Light& l : scene.lights) {
+        low = glm::min(low, l.position / unit);
+        high = glm::max(high, l.position / unit);
+    }
+    const double extent = glm::length(high - low);
+    std::vector<std::vector<LightSphere>> out(scene.lights.size());
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        const int onSurface = int(n.lightSurface.at(k).x);
+        for (std::size_t j = 0; j < scene.spheres.size(); ++j) {
+            const Sphere& s = scene.spheres[j];
+            LightSphere ls;
+            ls.w = (scene.lights[k].position - s.center) / unit;
+            const double distance = glm::length(ls.w), r = s.radius / unit;
+            ls.C = (distance - r) * (distance + r);
+            // Outside by far more than float32 blurs |L - c| (a relative
+            // 1e-5 of the radius and of the distance); d2 from a point on
+            // any sphere is at least (distance - r)^2 for the segments that
+            // matter, and at most extent^2.
+            const double gap = distance - r;
+            const bool outside = gap > 1e-5 * (distance + r);
+            const double smallest = gap * gap, largest = std::max(extent, distance + r);
+            const bool inRange = smallest * smallest > 1e-30 && largest * largest * largest * largest < 1e30;
+            ls.exact = outside && inRange && !refinesRoots(scene, j) && onSurface != int(j);
+            out[k].push_back(ls);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+bool lightSideFits(const Scene& scene) {
+    // One select per pair of light and sphere: beyond 1024 of them the
+    // program's text and its compile time grow more than a frame saves.
+    return !scene.lights.empty() && !scene.spheres.empty() && scene.lights.size() * scene.spheres.size() <= 1024;
+}
+
+std::string lightSideMacro(const Scene& scene) {
+    const auto pairs = lightSpheres(scene);
+    return chainOver("k", pairs.size(), [&](std::size_t k) {
+        return chainOver("j", pairs[k].size(), [&](std::size_t j) { return std::string(pairs[k][j].exact ? "true" : "false"); });
+    });
+}
+
+std::string lightOccluderMacro(const Scene& scene) {
+    const auto pairs = lightSpheres(scene);
+    return chainOver("k", pairs.size(), [&](std::size_t k) {
+        return chainOver("j", pairs[k].size(), [&](std::size_t j) {
+            const LightSphere& p = pairs[k][j];
+            return vec4Literal(glm::vec4(glm::vec3(p.w), float(p.C)));
+        });
+    });
+}
+
+}  // namespace rl
