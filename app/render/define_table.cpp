@@ -38,6 +38,16 @@ constexpr unsigned kLivePictures = kLive | kLiveStill;
 
 int sphereCount(const DefineInput& in) { return int(in.scene.spheres.size()); }
 
+// A data row's macro where there is something to index: a scene without
+// spheres (or lights) never calls the accessor, which then reads the
+// uniform block as in the generic program.
+Value spheresOrNone(const DefineInput& in, std::string (*macro)(const Scene&)) {
+    return in.scene.spheres.empty() ? kNone : Value(macro(in.scene));
+}
+Value lightsOrNone(const DefineInput& in, std::string (*macro)(const Scene&)) {
+    return in.scene.lights.empty() ? kNone : Value(macro(in.scene));
+}
+
 std::vector<DefineRow> makeTable() {
     std::vector<DefineRow> t;
 
@@ -116,23 +126,23 @@ std::vector<DefineRow> makeTable() {
     // values for the programs that draw one picture (the live view's sliders edit them).
     t.push_back({"RL_SPHERE_GEOMETRY(i)", kGeometry, kSpecialised, {}, {},
                  "each sphere's centre and radius compiled in: what the ray tests share folds",
-                 [](const DefineInput& in) -> Value { return sphereGeometryMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereGeometryMacro); }});
     t.push_back({"RL_SPHERE_ANCHOR_C(i)", kGeometry, kSpecialised, {}, {},
                  "each sphere's |c|^2 - r^2 from the anchor, compiled in (error_bounds.glsl)",
-                 [](const DefineInput& in) -> Value { return sphereAnchorCMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereAnchorCMacro); }});
     t.push_back({"RL_SPHERE_MATERIAL(i)", kValues, kOnePicture, {}, {},
                  "each sphere's material compiled in: the exercises' material terms fold",
-                 [](const DefineInput& in) -> Value { return sphereMaterialMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereMaterialMacro); }});
     t.push_back({"RL_SPHERE_EDGE_TINT(i)", kValues | kModel, kOnePicture, {"RL_MODEL_VARIANTS"}, {},
                  "each sphere's conductor edge tint compiled in (model_variants.glsl)",
-                 [](const DefineInput& in) -> Value { return sphereEdgeTintMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereEdgeTintMacro); }});
     t.push_back({"RL_LIGHT_POSITION(i)", kValues, kOnePicture, {}, {}, "each light's position compiled in",
-                 [](const DefineInput& in) -> Value { return lightPositionMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return lightsOrNone(in, lightPositionMacro); }});
     t.push_back({"RL_LIGHT_INTENSITY(i)", kValues, kOnePicture, {}, {}, "each light's colour times intensity compiled in",
-                 [](const DefineInput& in) -> Value { return lightIntensityMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return lightsOrNone(in, lightIntensityMacro); }});
     t.push_back({"RL_LIGHT_SURFACE(k)", kValues | kGeometry, kOnePicture, {}, {},
                  "each light's nearness to a sphere's surface compiled in (docs/model.md, \"A light on a surface\")",
-                 [](const DefineInput& in) -> Value { return lightSurfaceMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return lightsOrNone(in, lightSurfaceMacro); }});
     t.push_back({"RL_AMBIENT", kValues, kOnePicture, {}, {}, "the ambient factor compiled in",
                  [](const DefineInput& in) -> Value { return floatLiteral(float(in.scene.render.ambient)); }});
     t.push_back({"RL_BACKGROUND", kValues, kOnePicture, {}, {}, "the background compiled in",
@@ -168,7 +178,7 @@ std::vector<DefineRow> makeTable() {
                  [](const DefineInput& in) -> Value { return cameraFromAnchor(in.scene); }});
     t.push_back({"RL_CAMERA_SPHERE(i)", kCamera | kGeometry, kPicture, {}, {},
                  "each sphere's |camera - c|^2 - r^2 from double compiled in (error_bounds.glsl, issue #23)",
-                 [](const DefineInput& in) -> Value { return cameraSphereMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return spheresOrNone(in, cameraSphereMacro); }});
     t.push_back({"RL_CAMERA_RIGHT", kCamera, kPicture, {}, {},
                  "the camera's basis and the picture's size compiled in (camera.glsl): exercise 01's ray folds",
                  [](const DefineInput& in) -> Value { return cameraBasisColumn(in.scene, 0); }});
