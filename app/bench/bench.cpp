@@ -11,6 +11,7 @@
 #include "core/file_io.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
+#include "course/exercise_registry.h"
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
 #include "render/gl_renderer.h"
@@ -124,6 +125,10 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         add("generic-picture", "modes", false, scene, true);
         add("specialised-full", "modes", true, scene, false);
         add("specialised", "modes", true, scene, true);
+        for (const fs::path& dir : options.alsoImpls) {
+            Variant* other = add("specialised:" + dir.filename().string(), "modes", true, scene, true);
+            for (const ExerciseInfo& e : allExercises()) other->overrides[e.file()] = dir / e.file();
+        }
     }
     if (wanted(options, "layers")) {
         // The course's picture program with one of its layers taken out

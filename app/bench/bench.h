@@ -102,6 +102,11 @@ struct Options {
     std::string backend = "auto";
     Clock clock = Clock::Auto;        // Auto: Wall on llvmpipe and other software rasterisers, else Gpu
     std::filesystem::path implDir;    // empty: solutions/ (exercises/ where there is none)
+    // More folders of exercise files, each a row "specialised:<folder>" of the
+    // modes sweep beside `implDir`'s: `raylab render`'s program for those
+    // files, measured in the same run (a student's own, the course's with a
+    // comment added).
+    std::vector<std::filesystem::path> alsoImpls;
 };
 
 // Every group name Options::sweeps accepts, in the order they run.

@@ -35,6 +35,7 @@ struct BenchCommandOptions {
     std::string clock = "auto";
     std::string impl;
     std::vector<std::string> yardsticks;
+    std::vector<std::string> alsoImpls;
     bool sizeGiven = false;  // --size on the command line (the view sweep's default is 1280x720)
 };
 
@@ -67,6 +68,7 @@ std::string commandLine(const BenchCommandOptions& o) {
     option("--backend", o.backend, defaults.backend);
     option("--impl", o.impl, defaults.impl);
     for (const std::string& file : o.yardsticks) line += " --yardstick " + file;
+    for (const std::string& dir : o.alsoImpls) line += " --also-impl " + dir;
     option("--csv", o.csv, defaults.csv);
     option("--plot", o.plot, defaults.plot);
     option("--markdown", o.markdown, defaults.markdown);
@@ -94,6 +96,10 @@ void runBenchCommand(const BenchCommandOptions& o) {
     options.sweeps = splitList(o.sweeps);
     options.backend = o.backend;
     options.implDir = o.impl;
+    for (const std::string& dir : o.alsoImpls) {
+        if (!std::filesystem::is_directory(dir)) throw Error("--also-impl: " + dir + " is not a directory");
+        options.alsoImpls.push_back(dir);
+    }
     for (const std::string& file : o.yardsticks) {
         readRegularFile(file, bench::kOutsideShaderMaxBytes, "yardstick shader");  // before minutes of measuring
         options.yardsticks.push_back(file);
@@ -167,6 +173,10 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--yardstick", options->yardsticks,
                     "A fragment shader from outside to time beside raylab's programs (row outside:NAME); the "
                     "strongest yardstick of a run is the fastest of expert, textbook and these (docs/performance.md)")
+        ->check(notEmpty());
+    cmd->add_option("--also-impl", options->alsoImpls,
+                    "Another folder of exercise files, timed in the modes sweep beside --impl's as the row "
+                    "specialised:FOLDER (repeatable)")
         ->check(notEmpty());
     cmd->add_option("--compiles", options->compiles,
                     "Copies of each variant's program, each compiled on its own; the fastest copy is timed "

@@ -104,5 +104,8 @@ private:
 // One call for the common case: a current context, a program, a scene.
 Rendering renderOnce(const ShaderProgram& program, const Scene& scene, const FrameSettings& frame);
 Rendering renderOnce(PictureProgram& picture, const Scene& scene, const FrameSettings& frame);
+inline Rendering renderOnce(PictureProgram&& picture, const Scene& scene, const FrameSettings& frame) {
+    return renderOnce(picture, scene, frame);
+}
 
 }  // namespace rl

@@ -212,10 +212,14 @@ TEST(BenchVariants, EverySweepAndItsSettings) {
     for (const Variant& v : all) ++perSweep[v.sweep];
     for (const std::string& sweep : sweepNames())  // environment: scenes with an environment only
         EXPECT_EQ(perSweep[sweep] > 0, sweep != "environment") << sweep;
-    // The two yardsticks, raylab's four modes and, the course's files being
-    // used, the exercise API's picture program beside the generated one.
-    EXPECT_EQ(perSweep["modes"], 7);
-    EXPECT_TRUE(find_if(all.begin(), all.end(), [](const Variant& v) { return v.exerciseApi; }) != all.end());
+    // The two yardsticks and raylab's four modes; --also-impl adds a row.
+    EXPECT_EQ(perSweep["modes"], 6);
+    options.alsoImpls = {exercisesDir()};
+    const std::vector<Variant> more = makeVariants(scene, options);
+    const auto also = std::find_if(more.begin(), more.end(), [](const Variant& v) { return v.name == "specialised:exercises"; });
+    ASSERT_NE(also, more.end());
+    EXPECT_EQ(also->overrides.at("02-intersect.glsl"), exercisesDir() / "02-intersect.glsl");
+    options.alsoImpls.clear();
     auto find = [&](const std::string& name) {
         auto it = std::find_if(all.begin(), all.end(), [&](const Variant& v) { return v.name == name; });
         EXPECT_NE(it, all.end()) << name;
@@ -325,9 +329,9 @@ TEST(BenchCli, SeveralScenesAndOneSweep) {
                              " --sweeps modes --size 16x12 --warmup 0 --frames 1 --reference-spp 1 --csv " + csv);
     ASSERT_EQ(r.status, 0) << r.output;
     std::vector<std::map<std::string, std::string>> rows = readCsv(test::readText(csv));
-    ASSERT_EQ(rows.size(), 14u);  // (2 yardsticks + 4 modes + specialised-api) x 2 scenes
+    ASSERT_EQ(rows.size(), 12u);  // (2 yardsticks + 4 modes) x 2 scenes
     EXPECT_EQ(rows[0]["scene"], "lecture");
-    EXPECT_EQ(rows[13]["scene"], "metal-row");
+    EXPECT_EQ(rows[11]["scene"], "metal-row");
     for (auto& row : rows) EXPECT_EQ(row["sweep"], "modes");
 }
 

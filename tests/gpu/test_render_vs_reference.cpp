@@ -7,7 +7,8 @@
 #include "core/scene_io.h"
 #include "core/scene_transform.h"
 #include "reference/cpu_reference.h"
-#include "render/course_program.h"
+#include "render/define_table.h"
+#include "render/implementation_facts.h"
 #include "render/gl_renderer.h"
 #include "support/test_support.h"
 
@@ -144,7 +145,11 @@ TEST(RenderVsReference, EveryToneMapAndGamma) {
 TEST(RenderVsReference, ADisplayOnlyFrameDrawsTheSamePicture) {
     Scene scene = sized(loadSceneFile((scenesDir() / "lecture.json").string()).scene, 64, 48);
     const Rendering both = test::renderGl(scene);  // makes the context current
-    PictureProgram picture = buildCoursePicture(scene);
+    const Implementation solutions{solutionsDir(), {}};
+    auto pictureOf = [&](const Scene& s) {
+        return buildPictureProgram(solutions, definesFor(s, implementationFacts(solutions), Purpose::Picture));
+    };
+    PictureProgram picture = pictureOf(scene);
     GlRenderer renderer;
     renderer.setScene(scene);
     FrameSettings frame = frameFromScene(scene);
@@ -162,9 +167,9 @@ TEST(RenderVsReference, ADisplayOnlyFrameDrawsTheSamePicture) {
     other.render.background = glm::dvec3(0.5, 0.2, 0.1);
     renderer.setScene(other);
     frame.radiance = true;
-    renderer.draw(buildCoursePicture(other), frame);
+    renderer.draw(pictureOf(other), frame);
     const Rendering second = renderer.readBack();
     ASSERT_EQ(second.radiance.rgb.size(), first.radiance.rgb.size());
     EXPECT_NE(second.radiance.rgb, first.radiance.rgb);
-    expectWithinBudget(first, both, "the course's program against the ray tracer");
+    expectWithinBudget(first, both, "the picture program against the program of every view");
 }

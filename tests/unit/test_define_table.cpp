@@ -172,12 +172,17 @@ std::string shortValue(const std::string& value) {
 
 std::string line(const std::string& scene, const std::string& what, const std::string& impl, const ShaderDefines& d) {
     std::string out = scene + " " + what + " " + impl + ":";
-    // The shadow cones' arrays are floats computed in double, whose last digit
-    // follows the compiler's floating-point contraction (the sanitizer build
-    // prints others): recorded by name only; tests/unit/test_shadow_cones.cpp
-    // checks their values against the segment test.
-    for (const auto& [name, value] : d)
-        out += " " + name + "=" + (name.rfind("RL_SHADOW_CONE_", 0) == 0 ? std::string("<computed>") : shortValue(value));
+    // Values computed in double through square roots and dot products, whose
+    // last digit follows the compiler's floating-point contraction (the
+    // sanitizer build prints others): recorded by name only; the accuracy
+    // and differential tests check the pictures they give.
+    auto computed = [](const std::string& name) {
+        for (const char* prefix : {"RL_SPHERE_ANCHOR_C", "RL_CAMERA_SPHERE", "RL_LIGHT_OCCLUDER", "RL_CAMERA_RIGHT",
+                                   "RL_CAMERA_UP", "RL_CAMERA_BACK"})
+            if (name.rfind(prefix, 0) == 0) return true;
+        return false;
+    };
+    for (const auto& [name, value] : d) out += " " + name + "=" + (computed(name) ? std::string("<computed>") : shortValue(value));
     return out + "\n";
 }
 
@@ -194,7 +199,7 @@ std::string definesReport() {
         for (Purpose p : {Purpose::Generic, Purpose::GenericPicture, Purpose::EveryView})
             out += line(name, purposeName(p), "-", definesFor(scene, ImplementationFacts{}, p));
         // The implementations with equal defines on one line ("solutions,student-09").
-        std::vector<std::pair<std::string, ShaderDefines>> picture, sky, live;
+        std::vector<std::pair<std::string, ShaderDefines>> picture, sky, live, still;
         auto group = [](std::vector<std::pair<std::string, ShaderDefines>>& into, const char* impl, ShaderDefines d) {
             for (auto& [names, defines] : into)
                 if (defines == d) return void(names += std::string(",") + impl);
@@ -205,10 +210,12 @@ std::string definesReport() {
             if (std::optional<ShaderDefines> s = skyProgramDefines(p)) group(sky, impls[i].name, *s);
             group(picture, impls[i].name, std::move(p));
             group(live, impls[i].name, definesFor(scene, facts[i], Purpose::LiveView));
+            group(still, impls[i].name, definesFor(scene, facts[i], Purpose::LiveStill));
         }
         for (const auto& [names, d] : picture) out += line(name, "picture", names, d);
         for (const auto& [names, d] : sky) out += line(name, "sky", names, d);
         for (const auto& [names, d] : live) out += line(name, "live-view", names, d);
+        for (const auto& [names, d] : still) out += line(name, "live-still", names, d);
     }
     for (std::size_t i = 0; i < impls.size(); ++i)
         out += line("-", "probe", impls[i].name, definesFor(Scene{}, facts[i], Purpose::Probe));

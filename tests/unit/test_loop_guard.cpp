@@ -46,7 +46,10 @@ TEST(LoopGuard, EveryKindOfLoopIsGuardedOnItsOwnLine) {
     EXPECT_EQ(lines(g.text), lines(text));
     EXPECT_EQ(g.loopLines, (std::vector<int>{2, 3, 4, 6}));  // the do-while is where its `do` is
     EXPECT_NE(g.text.find("for (int i = 0; rl_loop((i < 4), 7); ++i)"), std::string::npos) << g.text;
-    EXPECT_NE(g.text.find("for (; rl_loop(true, 8);)"), std::string::npos) << g.text;
+    // A loop whose body is a block tests its condition at the end (rotated).
+    EXPECT_NE(g.text.find("{ ; if (rl_loop(true, 8)) do { if (x > 9.0) break; x += 1.0; } while (rl_loop(true, 8)); }"),
+              std::string::npos)
+        << g.text;
     EXPECT_NE(g.text.find("while (rl_loop((x < 100.0), 9))"), std::string::npos) << g.text;
     EXPECT_NE(g.text.find("} while (rl_loop((x > 3.0 &&\n             x < 1000.0), 10));"), std::string::npos) << g.text;
     EXPECT_NE(g.text.find("// while (true) in a comment"), std::string::npos);
@@ -144,15 +147,53 @@ TEST(LoopGuard, TrippedLoopIsTheLowestIdMarked) {
 
 TEST(LoopGuard, TheAssemblerGuardsExerciseFilesOnlyAndKeepsTheAuthorsLines) {
     AssembledSource a = assembleShader("main.frag", Implementation{solutionsDir(), {}}, {});
-    // The solutions' one loop (09's bounce loop) is guarded; no framework file is.
-    ASSERT_EQ(a.loops.size(), 1u);
-    EXPECT_NE(a.loops[0].file.find("09-reflections.glsl"), std::string::npos);
+    // The solutions' one loop (09's bounce loop) counts up to maxBounces():
+    // rotated and counted, with no guard; no framework file is rewritten.
+    EXPECT_TRUE(a.loops.empty());
     for (const SourceFile& f : a.sources) EXPECT_EQ(f.exercise, !f.guarded.empty()) << f.shown;
+    // Its header's line and its body's closing line, each the author's.
+    std::vector<std::string> authors;
     for (int k = 1; k <= int(a.lines.size()); ++k) {
-        if (a.lineText(k).find("rl_loop(") == std::string::npos || a.lines[std::size_t(k) - 1].file.find("shaders/") != std::string::npos)
+        if (a.lineText(k).find("rl_counted(") == std::string::npos || a.lines[std::size_t(k) - 1].file.find("shaders/") != std::string::npos)
             continue;
-        EXPECT_EQ(a.lines[std::size_t(k) - 1].line, a.loops[0].line);
-        EXPECT_EQ(a.authorLine(k).find("rl_loop"), std::string::npos) << a.authorLine(k);
-        EXPECT_NE(a.authorLine(k).find("for (int bounce = 0; bounce <= maxBounces(); ++bounce)"), std::string::npos);
+        EXPECT_NE(a.lines[std::size_t(k) - 1].file.find("09-reflections.glsl"), std::string::npos);
+        authors.push_back(a.authorLine(k));
+    }
+    ASSERT_EQ(authors.size(), 2u);
+    EXPECT_NE(authors[0].find("for (int bounce = 0; bounce <= maxBounces(); ++bounce)"), std::string::npos) << authors[0];
+    EXPECT_EQ(authors[1], "    }");
+}
+
+// A loop whose body is a block tests its condition at the end: the same
+// tests in the same order, a `continue` going through the step. A counter
+// up to a small bound (or maxBounces()) that the body leaves alone needs no
+// guard, only its count (rl_counted); anything else keeps its guard.
+TEST(LoopGuard, LoopsWithBlocksAreRotatedAndBoundedCountersUnguarded) {
+    auto rewritten = [](const std::string& body) { return guardLoops(body, "09-reflections.glsl", 1); };
+    GuardedSource w = rewritten("void f(float x) {\n  while (x < 5.0) { x += 1.0; }\n}\n");
+    EXPECT_NE(w.text.find("if (rl_loop((x < 5.0), 1)) do { x += 1.0; } while (rl_loop((x < 5.0), 1));"), std::string::npos)
+        << w.text;
+    GuardedSource n = rewritten("void f(int n) {\n  for (int i = 0; i < n; ++i) { n -= 0; }\n}\n");
+    EXPECT_NE(n.text.find("{ int i = 0; if (rl_loop(( i < n), 1)) do { n -= 0; } while ((( ++i), rl_loop(( i < n), 1))); }"),
+              std::string::npos)
+        << n.text;
+    const std::string bounded = "void f() {\n  for (int b = 0; b <= maxBounces(); ++b) { g(1.0); }\n}\n";
+    GuardedSource c = rewritten(bounded);
+    EXPECT_TRUE(c.loopLines.empty());
+    EXPECT_NE(c.text.find("{ int b = 0; if (rl_counted( b <= maxBounces())) do { g(1.0); } while ((( ++b), rl_counted( b <= maxBounces()))); }"),
+              std::string::npos)
+        << c.text;
+    EXPECT_TRUE(rewritten("void f() {\n  for (int i = 0; i < 64; i++) { }\n}\n").loopLines.empty());
+    // Guarded: a bound too large or not a constant, a counter the body
+    // changes, hands on or declares again, a loop inside, a condition or a
+    // step on two lines.
+    for (const char* loop : {"for (int i = 0; i < 65; ++i) { }", "for (int i = 0; i < n; ++i) { }",
+                             "for (int i = 0; i < 8; ++i) { i += 2; }", "for (int i = 0; i < 8; ++i) { i--; }",
+                             "for (int i = 0; i < 8; ++i) { h(x, i); }", "for (int i = 0; i < 8; ++i) { int i = 1; }",
+                             "for (int i = 0; i < 8; ++i) { for (;;) { break; } }", "for (int i = 0; i < 8; i += 2) { }",
+                             "for (int i = 0;\n i < 8; ++i) { }"}) {
+        GuardedSource g = rewritten(std::string("void f(int n, float x) {\n  ") + loop + "\n}\n");
+        EXPECT_FALSE(g.loopLines.empty()) << loop;
+        EXPECT_EQ(lines(g.text), lines(std::string("void f(int n, float x) {\n  ") + loop + "\n}\n")) << loop;
     }
 }
