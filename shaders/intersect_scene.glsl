@@ -131,29 +131,23 @@ Hit closestHit(vec3 origin, vec3 dir, int leaving) {
 //
 // In a program specialised to the scene, a shadow ray towards light k
 // (g_shadowLight, a constant where lighting.glsl's light terms are written
-// out one by one) takes each sphere's test from its light's side where the
-// host found that form exact (shadow_light_side.glsl), and the segment test
-// elsewhere; the spheres are written out one by one (RL_FOR_EACH_SPHERE), so
-// that every index, and with it every sphere's numbers, is a constant.
-#ifdef RL_LIGHT_OCCLUDER
-bool g_blocked;
-void shadowStep(int j, int k, vec3 o, vec3 d, float tMax, int leaving, vec3 u, float d2) {
-    bool blocks = RL_LIGHT_SIDE(k, j) ? lightSideBlocks(k, j, u, d2) : blocksSegment(o, d, tMax, j, k);
-    g_blocked = g_blocked || (j != leaving && blocks);
-}
-#endif
-
+// out one by one) takes each sphere's test from the light's side where the
+// host found that form exact for every light (shadow_light_side.glsl), the
+// segment test elsewhere: RL_SHADOW_STEPS(X, Y) writes the spheres out one
+// by one, X or Y each, so that every index, and with it every sphere's
+// numbers, is a constant, and no program holds both forms of one sphere.
 bool anyHitBefore(vec3 origin, vec3 dir, float tMax, int leaving) {
-#ifdef RL_LIGHT_OCCLUDER
+#ifdef RL_SHADOW_STEPS
     int k = g_shadowLight;
     if (k >= 0) {
         vec3 u = lightPosition(k) - origin;
         float d2 = dot(u, u);
         if (!segmentEndsAtLight(origin, dir, tMax, lightPosition(k), d2)) g_assumptionBroken = true;
-        g_blocked = false;
-#define RL_SHADOW_STEP(j) shadowStep(j, k, origin, dir, tMax, leaving, u, d2);
-        RL_FOR_EACH_SPHERE(RL_SHADOW_STEP)
-        return g_blocked;
+        bool blocked = false;
+#define RL_LIGHT_SIDE_STEP(j) blocked = blocked || (j != leaving && lightSideBlocks(LIGHT_OCCLUDERS[k * RL_SPHERE_COUNT + j], u, d2));
+#define RL_SEGMENT_STEP(j) blocked = blocked || (j != leaving && blocksSegment(origin, dir, tMax, j, k));
+        RL_SHADOW_STEPS(RL_LIGHT_SIDE_STEP, RL_SEGMENT_STEP)
+        return blocked;
     }
 #endif
     for (int i = 0; i < sphereCount(); ++i)

@@ -11,7 +11,7 @@ layout(location = 1) out vec4 o_radiance;  // linear radiance averaged over the 
 // against 1, so that the host draws just those pixels again with the
 // program that makes no assumption (render/gl_renderer.h), its depth test
 // skipping the others 8 pixels at a time.
-#if defined(RL_SKY) || defined(RL_LIGHT_SIDE)
+#if defined(RL_SKY) || defined(RL_SHADOW_STEPS)
 #define RL_MARKS_PIXELS
 #endif
 

@@ -1,6 +1,6 @@
 // shadow_light_side.glsl: the shadow test from the light's side, for a
-// program specialised to one scene (RL_LIGHT_OCCLUDER, a row of
-// app/render/define_table.cpp; the form of the bench's expert yardstick).
+// program specialised to one scene (RL_SHADOW_STEPS, RL_LIGHT_OCCLUDERS:
+// rows of app/render/define_table.cpp).
 //
 // For a light L outside sphere (c, r) the host computes in double, per pair
 // of light k and sphere j, w = L - c and C = |L - c|^2 - r^2. The segment
@@ -31,10 +31,13 @@ bool segmentEndsAtLight(vec3 o, vec3 d, float tMax, vec3 light, float d2) {
     return dot(miss, miss) <= 1e-10 * d2;
 }
 
-#ifdef RL_LIGHT_OCCLUDER
-// Whether sphere j blocks the segment from o to light k (u = L - o, d2 = |u|^2).
-bool lightSideBlocks(int k, int j, vec3 u, float d2) {
-    vec4 w = RL_LIGHT_OCCLUDER(k, j);  // L - c, |L - c|^2 - r^2
+#ifdef RL_SHADOW_STEPS
+// vec4(L - c, |L - c|^2 - r^2) of light k and sphere j at k * RL_SPHERE_COUNT + j.
+const vec4 LIGHT_OCCLUDERS[] = RL_LIGHT_OCCLUDERS;
+
+// Whether the sphere of `w` (LIGHT_OCCLUDERS) blocks the segment from o to
+// its light (u = L - o, d2 = |u|^2).
+bool lightSideBlocks(vec4 w, vec3 u, float d2) {
     float E = dot(w.xyz, u);
     return E > 0.0 && E * E >= d2 * w.w && (E < d2 || d2 - 2.0 * E + w.w <= 0.0);
 }

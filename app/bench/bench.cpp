@@ -144,7 +144,7 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         for (const DefineRow& row : defineTable()) {
             if (row.layer != BenchLayer::Without) continue;
             if (all.count(row.name)) {
-                add(std::string("without:") + row.name, "layers", true, scene)->withoutDefines.push_back(row.name);
+                add("without:" + glslName(row), "layers", true, scene)->withoutDefines.push_back(row.name);
             } else if (row.benchWith && row.benchWith(scene)) {
                 with.push_back(row.name);
             }

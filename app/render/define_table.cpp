@@ -30,11 +30,15 @@ constexpr unsigned kGeneric = purposeBit(Purpose::Generic);
 constexpr unsigned kEveryScene = kPicture | kEveryView | kLive | kLiveStill | kGenericPicture | kGeneric;
 // What a specialised program compiles in.
 constexpr unsigned kSpecialised = kPicture | kEveryView | kLive | kLiveStill;
-// What a program for the scene's values compiles in: the values too (the
-// live view's still program takes the camera from uniforms).
-constexpr unsigned kOnePicture = kPicture | kEveryView | kLiveStill;
 // The picture programs of the live view.
 constexpr unsigned kLivePictures = kLive | kLiveStill;
+// What compiles the scene's geometry in: the picture programs (the live
+// view's panel does not edit it). The program of every view keeps it in
+// uniforms, as the browser page's live picture needs.
+constexpr unsigned kGeometryConstants = kPicture | kLivePictures;
+// What compiles the scene's values in too: a program for one picture, and
+// the live view's still picture (its camera stays a uniform).
+constexpr unsigned kOnePicture = kPicture | kLiveStill;
 
 int sphereCount(const DefineInput& in) { return int(in.scene.spheres.size()); }
 
@@ -122,12 +126,12 @@ std::vector<DefineRow> makeTable() {
 
     // ---- the scene's numbers as constants (scene.glsl; render/scene_constants.h): data
     // only, each a chain of selects on the index, the floats the uniform block would hold.
-    // Geometry for every specialised program (the live view's panel does not edit it),
-    // values for the programs that draw one picture (the live view's sliders edit them).
-    t.push_back({"RL_SPHERE_GEOMETRY(i)", kGeometry, kSpecialised, {}, {},
+    // Geometry for the picture programs (the live view's panel does not edit it), values
+    // for those that draw one picture (the live view's sliders edit them).
+    t.push_back({"RL_SPHERE_GEOMETRY(i)", kGeometry, kGeometryConstants, {}, {},
                  "each sphere's centre and radius compiled in: what the ray tests share folds",
                  [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereGeometryMacro); }});
-    t.push_back({"RL_SPHERE_ANCHOR_C(i)", kGeometry, kSpecialised, {}, {},
+    t.push_back({"RL_SPHERE_ANCHOR_C(i)", kGeometry, kGeometryConstants, {}, {},
                  "each sphere's |c|^2 - r^2 from the anchor, compiled in (error_bounds.glsl)",
                  [](const DefineInput& in) -> Value { return spheresOrNone(in, sphereAnchorCMacro); }});
     t.push_back({"RL_SPHERE_MATERIAL(i)", kValues, kOnePicture, {}, {},
@@ -202,16 +206,14 @@ std::vector<DefineRow> makeTable() {
     // and drawn again by the program without it (render/gl_renderer.h).
     // Shadow rays from the light's side (shadow_light_side.glsl): one dot product per
     // sphere against a constant, where the segment test takes four.
-    t.push_back({"RL_LIGHT_SIDE(k, j)", kGeometry | kValues, kPicture | kLiveStill, {"RL_FOR_EACH_LIGHT(X)", "RL_FOR_EACH_SPHERE(X)"},
-                 {}, "per light and sphere, whether the shadow test from the light's side is exact there",
-                 [](const DefineInput& in) -> Value {
-                     if (!lightSideFits(in.scene)) return kNone;
-                     return lightSideMacro(in.scene);
-                 },
-                 true, BenchLayer::Without});
-    t.push_back({"RL_LIGHT_OCCLUDER(k, j)", kGeometry | kValues, kPicture | kLiveStill, {"RL_LIGHT_SIDE(k, j)"}, {},
+    t.push_back({"RL_SHADOW_STEPS(X, Y)", kGeometry | kValues | kStructure, kPicture | kLiveStill,
+                 {"RL_FOR_EACH_LIGHT(X)"}, {},
+                 "per sphere, the shadow test from the light's side (X) where it is exact for every light, or the "
+                 "segment test (Y); at most 256 pairs of lights and spheres",
+                 [](const DefineInput& in) { return shadowStepsMacro(in.scene); }, true, BenchLayer::Without});
+    t.push_back({"RL_LIGHT_OCCLUDERS", kGeometry | kValues, kPicture | kLiveStill, {"RL_SHADOW_STEPS(X, Y)"}, {},
                  "per light and sphere, L - c and |L - c|^2 - r^2 from double (shadow_light_side.glsl)",
-                 [](const DefineInput& in) -> Value { return lightOccluderMacro(in.scene); }});
+                 [](const DefineInput& in) -> Value { return lightOccludersArray(in.scene); }});
     // The screen tiles no camera ray of the model can reach a sphere in, drawn by the
     // picture program with no sphere to shade (RL_SKY, render/sky_tiles.h); each pixel
     // checks with the exercises' own camera ray and intersection that its ray misses.
@@ -255,7 +257,8 @@ const std::vector<const char*>& nonSpecialisationNames() {
         "RL_LOOP_TOTAL_FLAG",   // loop_guard.glsl: the mark that the total, not one loop, was met
         "RL_ADD_LIGHT",         // lighting.glsl: the X of RL_FOR_EACH_LIGHT
         "RL_NEAREST_STEP",      // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE in closestHit
-        "RL_SHADOW_STEP",       // intersect_scene.glsl: the X of RL_FOR_EACH_SPHERE in anyHitBefore
+        "RL_LIGHT_SIDE_STEP",   // intersect_scene.glsl: the X of RL_SHADOW_STEPS
+        "RL_SEGMENT_STEP",      // intersect_scene.glsl: the Y of RL_SHADOW_STEPS
         "RL_SKY",               // main.frag, intersect_scene.glsl: the sky tiles' program (skyProgramDefines())
         "RL_MARKS_PIXELS",      // main.frag: the program marks the pixels whose assumption did not hold
         "RL_UNFINISHED",        // unfinished.glsl: a fact of the generated exercises.glsl (shader/readiness.h),
@@ -297,12 +300,12 @@ std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture) {
 }
 
 bool marksPixels(const ShaderDefines& defines) {
-    return defines.count("RL_LIGHT_SIDE(k, j)") != 0 || defines.count("RL_SKY") != 0;
+    return defines.count("RL_SHADOW_STEPS(X, Y)") != 0 || defines.count("RL_SKY") != 0;
 }
 
 ShaderDefines withoutAssumptions(const ShaderDefines& defines) {
     ShaderDefines exact = defines;
-    for (const char* name : {"RL_LIGHT_SIDE(k, j)", "RL_LIGHT_OCCLUDER(k, j)", "RL_SKY", kSkyTilesDefine}) exact.erase(name);
+    for (const char* name : {"RL_SHADOW_STEPS(X, Y)", "RL_LIGHT_OCCLUDERS", "RL_SKY", kSkyTilesDefine}) exact.erase(name);
     return exact;
 }
 

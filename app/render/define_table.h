@@ -117,7 +117,7 @@ inline constexpr const char* kSkyTilesDefine = "RL_SKY_TILES";
 std::optional<ShaderDefines> skyProgramDefines(const ShaderDefines& picture);
 
 // The rows whose program checks an assumption pixel by pixel and marks the
-// pixels where it does not hold (main.frag): RL_LIGHT_SIDE, and RL_SKY in a
+// pixels where it does not hold (main.frag): RL_SHADOW_STEPS, and RL_SKY in a
 // sky program.
 bool marksPixels(const ShaderDefines& defines);
 

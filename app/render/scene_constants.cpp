@@ -196,27 +196,27 @@ std::vector<std::vector<LightSphere>> lightSpheres(const Scene& scene) {
 
 }  // namespace
 
-bool lightSideFits(const Scene& scene) {
-    // One select per pair of light and sphere: beyond 1024 of them the
-    // program's text and its compile time grow more than a frame saves.
-    return !scene.lights.empty() && !scene.spheres.empty() && scene.lights.size() * scene.spheres.size() <= 1024;
+std::optional<std::string> shadowStepsMacro(const Scene& scene) {
+    if (scene.lights.empty() || scene.spheres.size() < 2 || scene.lights.size() * scene.spheres.size() > kLightSidePairs)
+        return std::nullopt;
+    const auto pairs = lightSpheres(scene);
+    std::string steps;
+    bool any = false;
+    for (std::size_t j = 0; j < scene.spheres.size(); ++j) {
+        bool everyLight = true;
+        for (const auto& light : pairs) everyLight = everyLight && light[j].exact;
+        any = any || everyLight;
+        steps += (everyLight ? " X(" : " Y(") + std::to_string(j) + ")";
+    }
+    if (!any) return std::nullopt;
+    return steps;
 }
 
-std::string lightSideMacro(const Scene& scene) {
-    const auto pairs = lightSpheres(scene);
-    return chainOver("k", pairs.size(), [&](std::size_t k) {
-        return chainOver("j", pairs[k].size(), [&](std::size_t j) { return std::string(pairs[k][j].exact ? "true" : "false"); });
-    });
-}
-
-std::string lightOccluderMacro(const Scene& scene) {
-    const auto pairs = lightSpheres(scene);
-    return chainOver("k", pairs.size(), [&](std::size_t k) {
-        return chainOver("j", pairs[k].size(), [&](std::size_t j) {
-            const LightSphere& p = pairs[k][j];
-            return vec4Literal(glm::vec4(glm::vec3(p.w), float(p.C)));
-        });
-    });
+std::string lightOccludersArray(const Scene& scene) {
+    std::string out;
+    for (const auto& light : lightSpheres(scene))
+        for (const LightSphere& p : light) out += (out.empty() ? "" : ", ") + vec4Literal(glm::vec4(glm::vec3(p.w), float(p.C)));
+    return "vec4[](" + out + ")";
 }
 
 }  // namespace rl

@@ -13,6 +13,7 @@
 #include "core/scene.h"
 #include "render/scene_uniforms.h"
 
+#include <optional>
 #include <string>
 
 namespace rl {
@@ -40,16 +41,20 @@ std::string lightSurfaceMacro(const Scene& scene);    // RL_LIGHT_SURFACE(k): ve
 std::string cameraSphereMacro(const Scene& scene);    // RL_CAMERA_SPHERE(i): vec2 C, host decides
 std::string vec3Literal(const glm::vec3& v);
 
-// The light-side shadow test (shaders/shadow_light_side.glsl) per pair of
-// light k and sphere j: whether it is exact there, and its constants.
-//   RL_LIGHT_SIDE(k, j): true where light k lies outside sphere j by more
-//     than float32 can blur, sphere j is not one of the huge spheres whose
-//     roots the shader refines (there the anchor form decides, issue #23), the
-//     light is not on its surface, and the test's products stay within
-//     float32's range (|L - c|^4 and |L - p|^4 between 1e-30 and 1e30);
-//   RL_LIGHT_OCCLUDER(k, j): vec4(L - c, |L - c|^2 - r^2), from double.
-bool lightSideFits(const Scene& scene);
-std::string lightSideMacro(const Scene& scene);
-std::string lightOccluderMacro(const Scene& scene);
+// The light-side shadow test (shaders/shadow_light_side.glsl), chosen per
+// sphere j: where it is exact for every light k (light k outside sphere j by
+// more than float32 can blur, not on its surface, no farther from it than
+// twice the size of the scene's small spheres; sphere j neither one of the
+// huge spheres whose roots the shader refines nor meeting, touching or
+// repeating another; the test's products within float32's range).
+//   RL_SHADOW_STEPS(X, Y): " X(0) Y(1) ..." for the spheres, X where the
+//     light's side decides, Y where the segment test does;
+//   RL_LIGHT_OCCLUDERS: vec4[](...), light-major, vec4(L - c, |L - c|^2 - r^2)
+//     for every light and sphere, from double.
+// None where no sphere takes the light's side, or the pairs of lights and
+// spheres exceed kLightSidePairs.
+inline constexpr std::size_t kLightSidePairs = 256;
+std::optional<std::string> shadowStepsMacro(const Scene& scene);
+std::string lightOccludersArray(const Scene& scene);
 
 }  // namespace rl

@@ -48,10 +48,12 @@ double meanRelative(const RadianceImage& got, const RadianceImage& expected) {
 
 // PNGs that the binary built before environment.glsl existed rendered
 // (the commit b4ea6dd: `raylab render SCENE --size 64x48 [--generic] -o
-// tests/gpu/golden/NAME.png`): the course's generated program and the
-// shaders/ program, on a scene of two bounces and one of eight (the bounce
-// cutoff). Seen failing: a framework unit counted as a course file turned the
-// generated program off and deep-64x48.png differed.
+// tests/gpu/golden/NAME.png`): the default program and the generic one, on a
+// scene of two bounces and one of eight (the bounce cutoff). The default
+// program became one for every set of files (docs/decisions.md, "One
+// program"): lecture-64x48.png kept its bytes, deep-64x48.png was written
+// again by it (one 8-bit step on some pixels, from the bounce cutoff's
+// quarter step, against the generated program it replaced).
 TEST(EnvironmentPicture, ScenesWithoutOneAreTheSameBytesAsBefore) {
     const fs::path out = test::freshTempDir("env-golden");
     struct Case {
