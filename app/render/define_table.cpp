@@ -98,11 +98,11 @@ std::vector<DefineRow> makeTable() {
     t.push_back({"RL_MAX_BOUNCES", kStructure, kSpecialised, {}, {},
                  "the bounce limit a constant; 0 folds traceRay's bounce code away",
                  [](const DefineInput& in) -> Value { return std::to_string(in.scene.render.maxBounces); }});
-    t.push_back({"RL_FOR_EACH_SPHERE(X)", kStructure, kSpecialised, {}, {},
+    t.push_back({"RL_FOR_EACH_SPHERE(X)", kStructure, kGeometryConstants, {}, {},
                  "the spheres written out one by one (closestHit, the shadow tests): every index, and with it "
                  "every sphere's numbers, a constant",
                  [](const DefineInput& in) -> Value { return forEachIndex(in.scene.spheres.size()); }});
-    t.push_back({"RL_FOR_EACH_LIGHT(X)", kStructure, kSpecialised, {}, {},
+    t.push_back({"RL_FOR_EACH_LIGHT(X)", kStructure, kGeometryConstants, {}, {},
                  "the lights written out one by one: each light's numbers and shadow tests fold",
                  [](const DefineInput& in) -> Value { return forEachIndex(in.scene.lights.size()); }});
     t.push_back({"RL_SINGLE_SPHERE", kStructure, kSpecialised, {}, {},
