@@ -4,6 +4,8 @@
 
 #include "checks/probe_runner.h"
 #include "core/error.h"
+#include "core/file_io.h"
+#include "course/exercise_registry.h"
 #include "core/paths.h"
 #include "core/scene_io.h"
 #include "gl/context.h"
@@ -22,6 +24,8 @@
 #include <map>
 #include <memory>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace rl::acc {
 
@@ -51,6 +55,27 @@ std::map<std::string, PictureProgram>& programCache() {
 
 Implementation solutionsWith(const std::map<std::string, std::filesystem::path>& overrides) {
     return Implementation{solutionsDir(), overrides};
+}
+
+Implementation alternativesSubmission() {
+    static const Implementation submission = [] {
+        const std::filesystem::path dir =
+            std::filesystem::temp_directory_path() / ("raylab-alternatives-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        for (const ExerciseInfo& e : allExercises()) {
+            std::filesystem::path file = solutionsDir() / e.file();
+            std::string text = "// my own copy\n" + readRegularFile(file, 1 << 20);
+            std::error_code ec;
+            std::vector<std::filesystem::path> alternatives;
+            for (const auto& f : std::filesystem::directory_iterator(sourceRoot() / e.unitDir() / "alternatives", ec))
+                if (f.path().extension() == ".glsl") alternatives.push_back(f.path());
+            std::sort(alternatives.begin(), alternatives.end());
+            if (!alternatives.empty()) text = readRegularFile(alternatives.front(), 1 << 20);
+            writeFileAtomic(dir / e.file(), text);
+        }
+        return Implementation{dir, {}};
+    }();
+    return submission;
 }
 
 Rendering renderGlsl(const Scene& scene, const Implementation& impl, bool specialise) {

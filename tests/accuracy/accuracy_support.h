@@ -22,6 +22,11 @@ namespace rl::acc {
 // "course/02-intersect/mutants/textbook-quadratic.glsl"}.
 Implementation solutionsWith(const std::map<std::string, std::filesystem::path>& overrides = {});
 
+// A student's complete submission written differently from the course's:
+// every exercise's first alternative (course/NN/alternatives/), the
+// course's own file with a comment added where a unit has none.
+Implementation alternativesSubmission();
+
 // Renders with OpenGL: one headless context per process, programs cached by
 // implementation and defines: Purpose::Generic, the generic program with the
 // scene's model defines, or with `specialise` what `raylab render` compiles

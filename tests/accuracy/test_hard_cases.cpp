@@ -87,6 +87,15 @@ std::string onlyBackground(const Scene& scene, const Rendering& gl) {
     return other ? std::to_string(other) + " pixels are not the background" : "";
 }
 
+// A closed mirror with no light and no ambient term: no path ever leaves
+// it, so nothing but black, at every bounce count (issue #33: a program
+// that let light leak from 7 bounces on).
+std::string allBlack(const Scene&, const Rendering& gl) {
+    int lit = 0;
+    for (std::uint8_t v : gl.display.rgb) lit += v != 0;
+    return lit ? std::to_string(lit) + " channels of pixels are not black" : "";
+}
+
 // Inside a closed sphere every camera ray hits something: no background.
 std::string noBackground(const Scene& scene, const Rendering& gl) {
     auto background = backgroundPixel(scene);
@@ -215,6 +224,15 @@ std::vector<HardCase> hardCases() {
          {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
     add({"ggx_peak", "ggx-peak.json", kAim, kAim,
          {"course/05-ggx/mutants/textbook-denominator.glsl", "course/08-cook-torrance/mutants/no-roughness-clamp.glsl"}, nullptr});
+    // Issue #33's cases: the closed mirror seen from inside, tiny spheres on a
+    // huge ground seen from just above it, lights of 1e-3 and 1e4 in one
+    // scene, a camera far from the origin.
+    add({"closed_mirror", "closed-mirror.json", kAim, kAim, {"course/02-intersect/mutants/near-root-inside.glsl"}, allBlack});
+    add({"tiny_on_huge", "tiny-on-huge.json", kAim, 0.015, {fixedOffset}, nullptr});
+    add({"lights_1em3_and_1e4", "lights-1e-3-and-1e4.json", kAim, kAim,
+         {"course/09-reflections/mutants/full-strength-bounces.glsl"}, nullptr});
+    add({"far_camera_1e5", "far-camera-1e5.json", kAim, kAim, {"course/09-reflections/mutants/full-strength-bounces.glsl"},
+         nullptr});
     return cases;
 }
 
@@ -237,7 +255,10 @@ std::string problems(const HardCase& c, const Scene& scene, const Rendering& gl,
 class HardCaseTest : public ::testing::TestWithParam<HardCase> {};
 
 // GLSL (float32) against the true picture (double, no offset), reference
-// model, with the generic shader and with the one specialised to the scene.
+// model, with the generic shader and with what `raylab render` draws (its
+// program for the picture, the sky tiles' and the marked pixels' programs),
+// with the course's files and with a student's complete submission written
+// differently (every exercise's first alternative).
 TEST_P(HardCaseTest, MatchesTheTruePicture) {
     const HardCase& c = GetParam();
     Scene scene = c.scene();
@@ -246,10 +267,28 @@ TEST_P(HardCaseTest, MatchesTheTruePicture) {
     ImageDiff d = compareRenderings(gl, truth);
     std::cout << "[ measured ] " << c.name << ": " << acc::describeDiff(d) << "\n";
     EXPECT_EQ(problems(c, scene, gl, truth), "");
-    // The shader specialised to the scene, as `raylab render` compiles it.
-    Rendering specialised = acc::renderGlsl(scene, acc::solutionsWith(), true);
-    std::cout << "[ measured ] " << c.name << " specialised: " << acc::describeDiff(compareRenderings(specialised, truth)) << "\n";
-    EXPECT_EQ(problems(c, scene, specialised, truth), "") << "specialised shader";
+    for (const auto& [who, impl] : {std::pair<const char*, Implementation>{"the course's files", acc::solutionsWith()},
+                                    {"a student's", acc::alternativesSubmission()}}) {
+        Rendering picture = acc::renderGlsl(scene, impl, true);
+        std::cout << "[ measured ] " << c.name << " render, " << who << ": "
+                  << acc::describeDiff(compareRenderings(picture, truth)) << "\n";
+        EXPECT_EQ(problems(c, scene, picture, truth), "") << "`raylab render` with " << who;
+    }
+}
+
+// The closed mirror is black at every bounce count, through the generic
+// program and `raylab render`'s, whoever wrote the files.
+TEST(HardCaseBehaviour, TheClosedMirrorIsBlackAtEveryBounceCount) {
+    Scene scene = acc::hardScene("closed-mirror.json");
+    scene.render.width = 48;
+    scene.render.height = 36;
+    for (int bounces = 0; bounces <= kMaxBounces; ++bounces) {
+        scene.render.maxBounces = bounces;
+        SCOPED_TRACE(bounces);
+        EXPECT_EQ(allBlack(scene, acc::renderGlsl(scene)), "");
+        EXPECT_EQ(allBlack(scene, acc::renderGlsl(scene, acc::solutionsWith(), true)), "");
+        EXPECT_EQ(allBlack(scene, acc::renderGlsl(scene, acc::alternativesSubmission(), true)), "");
+    }
 }
 
 // The same with every model variant: the variants share the hard cases.

@@ -173,6 +173,7 @@ Renderer rendererNamed(const std::string& name) {
     if (name == "cpu") return [](const Scene& s) { return ref::renderCpu(s); };
     if (name == "glsl_generic") return [](const Scene& s) { return acc::renderGlsl(s); };
     if (name == "glsl_picture") return [](const Scene& s) { return acc::renderGlsl(s, acc::solutionsWith(), true); };
+    if (name == "glsl_picture_student") return [](const Scene& s) { return acc::renderGlsl(s, acc::alternativesSubmission(), true); };
     return [](const Scene& s) { return acc::renderGlslLive(s); };
 }
 
@@ -191,7 +192,7 @@ TEST_P(HardKinds, WithinBudgetOfTheTruePicture) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue23, HardKinds, ::testing::Values("cpu", "glsl_generic", "glsl_picture", "glsl_live"),
+INSTANTIATE_TEST_SUITE_P(Issue23, HardKinds, ::testing::Values("cpu", "glsl_generic", "glsl_picture", "glsl_picture_student", "glsl_live"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace

@@ -12,10 +12,18 @@
 // (along reflect(d, n)). The CPU reference runs the same rays (its offset
 // Hit::error alone, and nextHit()).
 //
-// CI draws 100 spheres x 100 rays (0.2 s of probes); RAYLAB_REINTERSECT_FULL=1
-// draws pbrt's 1000 x 1000.
+// The same through the code of `raylab render`'s program (issue #33): each
+// sphere's numbers compiled in as the picture program compiles them
+// (Purpose::Picture's defines, render/define_table.h), one program a sphere.
+//
+// CI draws 100 spheres x 100 rays (0.2 s of probes), and 20 spheres x 100
+// rays through the picture's code (a compile each); RAYLAB_REINTERSECT_FULL=1
+// draws pbrt's 1000 x 1000 both ways.
 #include "accuracy/accuracy_support.h"
 #include "checks/probe_runner.h"
+#include "render/define_table.h"
+#include "render/implementation_facts.h"
+#include "shader/shader_library.h"
 #include "core/paths.h"
 #include "metamorphic/random_scene.h"
 #include "reference/cpu_reference.h"
@@ -28,6 +36,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -74,7 +83,8 @@ struct Generator {
 
 struct Yardstick {
     int spheres = 100, rays = 100;
-    Yardstick() {
+    explicit Yardstick(bool specialised = false) {
+        if (specialised) spheres = 20;
         if (const char* full = std::getenv("RAYLAB_REINTERSECT_FULL"); full && *full && std::string(full) != "0") {
             spheres = 1000;
             rays = 1000;
@@ -126,12 +136,23 @@ void put(ProbeCase& p, int at, glm::vec3 v) {
 
 // The GLSL's counts for one implementation; mode 0: the offset alone, 1:
 // with the sphere the ray leaves handled by the framework, 2: the bounce.
-Counts glslCounts(const Implementation& impl, int mode) {
-    Yardstick size;
-    const ShaderProgram& program = acc::probeProgram(4, impl);
+// `specialised`: each sphere's program with its numbers compiled in, as the
+// picture program of `raylab render` has them.
+Counts glslCounts(const Implementation& impl, int mode, bool specialised = false) {
+    Yardstick size(specialised);
+    const ImplementationFacts facts = implementationFacts(impl);
+    const ShaderProgram& generic = acc::probeProgram(4, impl);  // and the headless context
     Counts counts;
     for (int k = 0; k < size.spheres; ++k) {
         SphereCase c = sphereCase(k, size.rays);
+        std::unique_ptr<ShaderProgram> own;
+        if (specialised) {
+            ShaderDefines defines = definesFor(c.scene, facts, Purpose::Picture);
+            defines["RL_PROBE_EXERCISE"] = "4";
+            own = std::make_unique<ShaderProgram>(assembleShader("fullscreen.vert", impl, {}),
+                                                  assembleShader("probe.frag", impl, defines));
+        }
+        const ShaderProgram& program = own ? *own : generic;
         const dvec3 centre = c.scene.spheres[0].center;
         ProbeSpec spec("reintersect", "reintersect(o, d, w, mode)", 3);
         spec.needsScene = true;
@@ -177,6 +198,20 @@ TEST(Reintersect, GlslWithTheLeavingSphereAndTheBounce) {
     Counts bounce = glslCounts(acc::solutionsWith(), 2);
     std::printf("[ measured ] GLSL, the bounce of 09: %s\n", bounce.summary().c_str());
     EXPECT_EQ(bounce.selfHits, 0) << bounce.summary();
+}
+
+TEST(Reintersect, ThroughThePictureProgramsCodeForTheCourseAndAStudent) {
+    for (const auto& [who, impl] : {std::pair<const char*, Implementation>{"the course's files", acc::solutionsWith()},
+                                    {"a student's", acc::alternativesSubmission()}}) {
+        Counts leaving = glslCounts(impl, 1, true);
+        std::printf("[ measured ] GLSL, the picture program's code, %s, offset and leaving sphere: %s\n", who,
+                    leaving.summary().c_str());
+        EXPECT_GT(leaving.tested, 1000);
+        EXPECT_EQ(leaving.selfHits, 0) << who << ": " << leaving.summary();
+        EXPECT_EQ(leaving.passThroughs, 0) << who << ": " << leaving.summary();
+        Counts bounce = glslCounts(impl, 2, true);
+        EXPECT_EQ(bounce.selfHits, 0) << who << ": " << bounce.summary();
+    }
 }
 
 TEST(Reintersect, SeenFailingWithAFixedEpsilonOffset) {
