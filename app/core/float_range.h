@@ -13,6 +13,11 @@
 
 namespace rl {
 
+// u = 2^-24, float32's unit roundoff: a correctly rounded float32 operation
+// on x is off by at most u |x|. The host's one copy of the shaders' constant
+// (shaders/common.glsl, UNIT_ROUNDOFF), for the bounds it computes for them.
+inline constexpr double kFloatUnitRoundoff = 5.9604644775390625e-8;
+
 // float32's largest finite value and smallest normal one.
 constexpr double kFloat32Max = 3.4028234663852886e38;
 constexpr double kFloat32MinNormal = 1.1754943508222875e-38;

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
+#include "core/float_range.h"
 #include "core/light_surface.h"
 #include "core/message.h"
 #include "render/bounce_cutoff.h"
@@ -54,7 +55,7 @@ SceneUniformBlock::~SceneUniformBlock() {
 }
 
 CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor, const glm::dvec3& anchor, double unit) {
-    constexpr double u = 5.9604644775390625e-8;  // float32's unit roundoff, 2^-24
+    constexpr double u = kFloatUnitRoundoff;
     const glm::dvec3 c = (sphere.center - anchor) / unit, f = eyeFromAnchor - c;
     const double r = sphere.radius / unit, distance = glm::length(f);
     CameraSphere out;
@@ -69,7 +70,7 @@ CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor,
 }
 
 LightOnSurface lightOnSurface(const Scene& scene, std::size_t k, const glm::dvec3& anchor, double unit) {
-    constexpr double u = 5.9604644775390625e-8;
+    constexpr double u = kFloatUnitRoundoff;
     const glm::dvec3 light = scene.lights.at(k).position;
     LightOnSurface out;
     double nearest = INFINITY;
