@@ -114,7 +114,6 @@ ShaderScene shaderScene(const Scene& scene, const glm::dvec3& eye, const glm::dv
     out.unit = unit;
     const std::size_t spheres = std::min(scene.spheres.size(), std::size_t(kMaxSpheres));
     const std::size_t lights = std::min(scene.lights.size(), std::size_t(kMaxLights));
-    const glm::dvec3 eyeFromAnchor = (eye - anchor) / unit;
     for (std::size_t i = 0; i < spheres; ++i) {
         const Sphere& s = scene.spheres[i];
         glm::dvec3 centre = (s.center - anchor) / unit;
