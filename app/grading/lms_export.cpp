@@ -5,6 +5,7 @@
 #include "grading/atomic_file.h"
 #include "grading/grades_csv.h"
 #include "grading/roster.h"
+#include "grading/student_list.h"
 
 #include <nlohmann/json.hpp>
 
@@ -229,18 +230,18 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
 
 ExportReport exportGrades(const fs::path& out, const ExportOptions& options) {
     std::error_code ec;
-    if (!fs::is_regular_file(out / "summary.json", ec) || !fs::is_regular_file(out / "rubric.json", ec))
-        throw Error(out.string() + ": not the output of a finished `raylab grade` (no summary.json or rubric.json)");
-    nlohmann::json summary, rubricJson;
+    if (!fs::is_regular_file(studentListPath(out), ec) || !fs::is_regular_file(out / "rubric.json", ec))
+        throw Error(out.string() + ": not the output of a finished `raylab grade` (no students.txt or rubric.json)");
+    nlohmann::json rubricJson;
     try {
-        summary = nlohmann::json::parse(readWholeFile(out / "summary.json"));
         rubricJson = nlohmann::json::parse(readWholeFile(out / "rubric.json"));
     } catch (const nlohmann::json::exception& e) {
-        throw Error(out.string() + ": summary.json or rubric.json is not valid JSON (" + e.what() + ")");
+        throw Error((out / "rubric.json").string() + ": not valid JSON (" + e.what() + ")");
     }
     Rubric rubric = rubricFromJson(rubricJson, (out / "rubric.json").string());
     std::vector<StudentGrade> grades;
-    for (const std::string& id : summary.value("student_ids", std::vector<std::string>{})) {
+    // One record at a time, from the list of ids: no file of the class as a whole is read.
+    for (const std::string& id : readStudentList(out)) {
         std::optional<StudentGrade> g = loadStudentGrade(out, id);
         if (!g) throw Error(gradeRecordPath(out, id).string() + ": missing or unreadable");
         grades.push_back(*g);

@@ -28,9 +28,6 @@ namespace rl {
 
 namespace {
 
-// Names the grader writes beside the students' folders in OUT.
-const std::set<std::string> kReservedIds = {"grades.csv", "index.html", "summary.json", "rubric.json", "_reference"};
-
 // Limits on what is copied from one submission: far above a real one.
 // Entries looked at in full (any shader file, for #include); past this only
 // files named as an exercise are kept, so a finished 05-ggx.glsl beside
@@ -662,17 +659,18 @@ SubmissionList listSubmissions(const fs::path& dir) {
     for (const fs::directory_entry& entry : entries) {
         const std::string name = entry.path().filename().string();
         const std::string shown = safeEntryId(name);  // what JSON, HTML, CSV and the terminal get
-        if (isHidden(name)) {
+        LmsDownloadName lms = parseLmsDownloadName(name);
+        // A Moodle folder is named after the student's full name, which may begin with '.': graded.
+        if (isHidden(name) && lms.kind != LmsDownloadName::Kind::Moodle) {
             list.ignored.push_back(shown + " (hidden)");
             continue;
         }
         fs::file_status st = entry.symlink_status(ec);
-        LmsDownloadName lms = parseLmsDownloadName(name);
         // Canvas gives files only; a folder "lab_1_2_final" is a student's folder, not a download.
         const bool lmsPart = (lms.kind == LmsDownloadName::Kind::Canvas && fs::is_regular_file(st)) ||
                              (lms.kind == LmsDownloadName::Kind::Moodle && (fs::is_directory(st) || fs::is_regular_file(st)));
         if (lmsPart) {
-            SubmissionEntry& g = groups[safeEntryId(lms.student)];
+            SubmissionEntry& g = groups[graderSafeId(safeEntryId(lms.student))];
             if (g.parts.empty()) {
                 g.kind = SubmissionEntry::Kind::Group;
                 g.path = entry.path();
@@ -697,11 +695,8 @@ SubmissionList listSubmissions(const fs::path& dir) {
         s.id = safeEntryId(s.kind != SubmissionEntry::Kind::Folder && endsWithZip(name) ? name.substr(0, name.size() - 4)
                                                                                          : name);
         if (taken.count(s.id)) s.id = shown;  // "alice" and "alice.zip": both graded, apart
-        if (kReservedIds.count(s.id) || s.id == "." || s.id == "..") {
-            list.ignored.push_back(shown + " (its name is one of the grader's own outputs: rename it)");
-            continue;
-        }
-        for (int k = 2; taken.count(s.id); ++k) s.id = shown + "-" + std::to_string(k);  // an escaped id met a real one
+        s.id = graderSafeId(s.id);             // a folder named "grades.csv": graded as "student-grades.csv"
+        for (int k = 2; taken.count(s.id); ++k) s.id = graderSafeId(shown) + "-" + std::to_string(k);  // an escaped id met a real one
         taken.insert(s.id);
         list.students.push_back(s);
     }
