@@ -354,6 +354,7 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
     if (!options.roster.empty() && options.shardCount <= 1)
         rosterCoverage(options.roster, grades, info.rosterWithoutSubmission, info.unmatchedSubmissions);
     nlohmann::json summary = gradeSummary(settings.rubric, grades, info);
+    if (!options.roster.empty()) summary["roster_test_student"] = testStudentNote(options.roster);
     summary["similar_submissions"] = classSimilarity(settings.out, settings.rubric, grades);
     for (const std::string& failed : writeClassOutputs(settings.out, settings.rubric, grades, summary))
         log << "raylab: " << printable(failed, 400) << " (the class goes on without this student's files)\n";

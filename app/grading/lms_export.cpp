@@ -86,6 +86,15 @@ void rosterCoverage(const fs::path& rosterFile, const std::vector<StudentGrade>&
                                         std::to_string(roster.students[k].line) + ")");
 }
 
+std::string testStudentNote(const fs::path& rosterFile) {
+    const Roster roster = loadRoster(rosterFile);
+    if (roster.testStudentLine == 0) return "";
+    return "Canvas's Test Student (" + rosterFile.filename().string() + " line " +
+           std::to_string(roster.testStudentLine) +
+           ") is the course's preview account, not a student: left out of the export and of the roster checks; "
+           "a submission of its own is graded and listed like any other";
+}
+
 std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& grades, const ExportOptions& o,
                        ExportReport& report) {
     std::optional<Roster> roster = checkedRoster(o);
@@ -126,6 +135,9 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
         for (const RosterStudent& s : roster->students)
             if (!taken.count(&s))
                 report.withoutSubmission.push_back(s.name + " (line " + std::to_string(s.line) + ")");
+    if (roster && roster->testStudentLine)
+        report.notes.push_back("Canvas's Test Student (line " + std::to_string(roster->testStudentLine) +
+                               ") is the course's preview account: left out of the export");
 
     const std::string assignment = o.assignment.empty() ? rubric.totalColumn : o.assignment;
     std::string text;

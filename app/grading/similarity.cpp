@@ -26,7 +26,7 @@ constexpr std::size_t kWindow = 8;
 // short function (a finished exercise has 30 to 200 fingerprints; a
 // one-line exercise 5 to 10, so two identical one-liners are never evidence).
 constexpr double kMinSimilarity = 0.5;
-constexpr std::size_t kMinShared = 10;
+constexpr std::size_t kMinShared = 8;
 // Fingerprints held by more than this share of the class's files of an
 // exercise are common code (Dolos's maxFingerprintPercentage), not evidence.
 constexpr double kCommonShare = 0.2;
@@ -443,7 +443,7 @@ nlohmann::json toJson(const SimilarityReport& report) {
             {"files_compared", report.filesCompared},
             {"rule",
              "fingerprints of the stub and the solution, and those held by more than 20% of the class's files of an "
-             "exercise (at least 4), are base code; files joined from 10 shared fingerprints and half of the smaller "
+             "exercise (at least 4), are base code; files joined from 8 shared fingerprints and half of the smaller "
              "file's; identifiers normalised, functions compared in any order"}};
 }
 
