@@ -5,7 +5,7 @@
 #include "core/file_handle.h"
 #include "grading/atomic_file.h"
 #include "grading/entry_name.h"
-#include "grading/legacy_text.h"
+#include "core/legacy_text.h"
 #include "grading/roster.h"
 #include "grading/safe_unzip.h"
 #include "shader/source_assembler.h"

@@ -8,7 +8,7 @@
 
 #include "grading/entry_name.h"
 #include "grading/grades_csv.h"
-#include "grading/legacy_text.h"
+#include "core/legacy_text.h"
 #include "grading/roster.h"
 #include "grading/similarity.h"
 #include "grading/submission.h"
