@@ -38,6 +38,9 @@ figcaption{font-size:12px;margin-top:4px}
 #grades{width:100%;font-size:13px} #grades th,#grades td{padding:3px 5px} #grades td.x{white-space:normal;width:5.4em}
 .why{display:block;font-size:11px;line-height:1.15;color:#444;text-align:left;white-space:normal;overflow-wrap:anywhere;max-width:5.8em}
 #grades td.notecol{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
+#grades td.id{white-space:normal;overflow-wrap:anywhere;max-width:14em}
+details.similar td,details.reason li{white-space:normal;overflow-wrap:anywhere} details.similar>summary,details.reason>summary{cursor:pointer;overflow-wrap:anywhere}
+a.more{font-size:11px;white-space:nowrap}
 .filter{margin:8px 0;display:flex;gap:12px;align-items:center} .filter input[type=search]{width:22em;font:inherit;padding:3px 6px}
 details.passed{margin:16px 0} details.passed>summary{cursor:pointer;font-weight:600}
 </style>
