@@ -291,6 +291,7 @@ public:
     std::vector<std::string> notes;
     std::string firstZipProblem;          // a zip that was refused, for when nothing else is found
     std::string overLimit;                // more than kMaxListedEntries: the submission is refused with this
+    std::size_t unlooked = 0;             // files past kMaxWalkedEntries not named as exercises: ignored, counted
 
     void folder(const fs::path& dir, const std::string& prefix, int zipDepth) {
         std::error_code ec;
@@ -318,7 +319,9 @@ public:
                 fs::file_status st = it->symlink_status(ec);
                 if (fs::is_directory(st) && (isSkippedFolder(name) || it.depth() + 1 >= kMaxWalkDepth))
                     it.disable_recursion_pending();
-                else if (!fs::is_directory(st) && exerciseNamed(name, exact))
+                else if (!fs::is_directory(st) && !exerciseNamed(name, exact))
+                    ++unlooked;
+                else if (!fs::is_directory(st))
                     items.push_back({fs::is_symlink(st) ? Item::Type::Link : fs::is_regular_file(st) ? Item::Type::File
                                                                                                      : Item::Type::Other,
                                      prefix + p.lexically_relative(dir).generic_string(), p,
@@ -636,10 +639,15 @@ void stageItems(const std::vector<Item>& items, const Collector& found, const fs
         copiedBytes += e.size;
     }
     if (!refusedOther.empty()) out.notes.push_back("refused: " + listSome(refusedOther));
-    if (!ignored.empty())
-        out.notes.push_back("ignored " + std::to_string(ignored.size()) + " file" + (ignored.size() == 1 ? "" : "s") +
-                            " that " + (ignored.size() == 1 ? "is" : "are") + " not part of the exercises: " +
-                            listSome(ignored));
+    // Every file that was not graded, those past the first 5,000 (counted, not listed) too.
+    const std::size_t ignoredAll = ignored.size() + found.unlooked;
+    if (ignoredAll)
+        out.notes.push_back("ignored " + std::to_string(ignoredAll) + " file" + (ignoredAll == 1 ? "" : "s") +
+                            " that " + (ignoredAll == 1 ? "is" : "are") + " not part of the exercises: " +
+                            listSome(std::vector<std::string>(ignored.begin(), ignored.begin() + std::ptrdiff_t(std::min<std::size_t>(5, ignored.size())))) +
+                            (ignoredAll > std::min<std::size_t>(5, ignored.size())
+                                 ? " and " + std::to_string(ignoredAll - std::min<std::size_t>(5, ignored.size())) + " more"
+                                 : ""));
 }
 
 }  // namespace
