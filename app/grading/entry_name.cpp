@@ -40,10 +40,7 @@ bool isPlainUtf8(const std::string& name) {
     return true;
 }
 
-namespace {
-
-// The id of a name, escaped but not yet bounded.
-std::string escapedId(const std::string& name) {
+std::string escapedName(const std::string& name) {
     if (isPlainUtf8(name)) return name;
     std::string out;
     for (std::size_t i = 0; i < name.size();) {
@@ -61,10 +58,8 @@ std::string escapedId(const std::string& name) {
     return out;
 }
 
-}  // namespace
-
 std::string safeEntryId(const std::string& name) {
-    std::string id = escapedId(name);
+    std::string id = escapedName(name);
     if (id.size() <= kMaxEntryIdBytes) return id;
     // Cut where a character (and an %XX escape) begins, then the name's hash:
     // distinct long names stay distinct, and the same name gives the same id on every run.

@@ -37,6 +37,9 @@ std::string safeEntryId(const std::string& name);
 bool isGraderOutputName(const std::string& id);
 std::string graderSafeId(const std::string& id);  // "student-" + id when it is one, else id
 
+// The escaping of safeEntryId without the bound: the whole name as safe text.
+std::string escapedName(const std::string& name);
+
 // "63 61 66 e9": the bytes of a name, for the record.
 std::string hexBytes(const std::string& bytes);
 

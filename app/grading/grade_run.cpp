@@ -96,7 +96,7 @@ ExerciseReport reportWithReason(const ExerciseInfo& info, CheckStatus status, co
 // a safe string, with its bytes kept when they had to be escaped.
 void setSource(StudentGrade& g, const SubmissionEntry& entry) {
     const std::string raw = entry.path.filename().string();
-    g.source = safeEntryId(raw);
+    g.source = escapedName(raw);  // whole: the roster and the exports read the LMS's name in it
     g.sourceBytes = g.source == raw ? "" : hexBytes(raw);
 }
 
@@ -171,6 +171,10 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     if (!grade.sourceBytes.empty())
         grade.notes.insert(grade.notes.begin(), "the name of this submission is not plain UTF-8 text (bytes " +
                                                     grade.sourceBytes + "): graded as " + grade.id);
+    else if (entry.kind != SubmissionEntry::Kind::Group && grade.source.size() > kMaxEntryIdBytes)
+        grade.notes.insert(grade.notes.begin(), "the name of this submission has " +
+                                                    std::to_string(grade.source.size()) + " bytes, more than an id may have (" +
+                                                    std::to_string(kMaxEntryIdBytes) + "): graded as " + grade.id);
     if (staged.problem != StagedSubmission::Problem::None) grade.notes.insert(grade.notes.begin(), staged.problemReason);
 
     CheckOptions options;

@@ -144,6 +144,17 @@ std::string breakable(const std::string& html) {
     return out;
 }
 
+// At most `chars` characters of UTF-8 text: the first chars - 2 and an ellipsis.
+std::string shortened(const std::string& text, std::size_t chars) {
+    std::size_t count = 0, cut = std::string::npos;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if ((static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) continue;
+        if (count == chars - 2) cut = i;
+        ++count;
+    }
+    return count <= chars ? text : text.substr(0, cut) + "\xE2\x80\xA6";
+}
+
 std::string pageHead(const std::string& title) {
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
            "</title>\n" + kStyle + "</head>\n<body>\n";
@@ -322,8 +333,11 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
                 notes += " <a class=\"more\" href=\"" + urlSegment(g.id) + "/index.html#notes\">" +
                          (g.notes.size() > 1 ? "+" + std::to_string(g.notes.size() - 1) + " more" : "more") + "</a>";
         }
-        html += std::string("<tr") + (problems ? " class=\"problem\"" : "") + "><td class=\"l id\"><a href=\"" +
-                urlSegment(g.id) + "/index.html\">" + htmlEscape(g.id) + "</a></td>" + cells + "<td data-v=\"" +
+        // A long id (up to 100 bytes) in a few characters, whole in its tooltip: rows stay a line or two.
+        const std::string shown = shortened(g.id, 24);
+        html += std::string("<tr") + (problems ? " class=\"problem\"" : "") + "><td class=\"l id\"" +
+                (shown == g.id ? "" : " title=\"" + htmlEscape(g.id) + "\"") + "><a href=\"" + urlSegment(g.id) +
+                "/index.html\">" + htmlEscape(shown) + "</a></td>" + cells + "<td data-v=\"" +
                 formatPoints(s.total) + "\"><b>" + formatPoints(s.total) + "</b></td><td data-v=\"" +
                 std::to_string(problems) + "\"" + (problems ? " class=\"s-fail\"" : "") + ">" +
                 std::to_string(problems) + "</td><td class=\"l notecol\">" + notes + "</td></tr>\n";

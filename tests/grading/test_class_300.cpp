@@ -257,5 +257,6 @@ TEST(GradeClass300, OneRunExportsEveryStudentOnceAndMergedSlicesAgree) {
         EXPECT_LE(std::stoi(height[1].str()), 60) << "rows of a few lines, not 161 px";
     else
         ADD_FAILURE() << head;
-    if (!HasFailure()) fs::remove_all(root);
+    // RAYLAB_KEEP_300=1 keeps the class and its outputs (docs/grading.md's screenshot and timings).
+    if (!HasFailure() && !std::getenv("RAYLAB_KEEP_300")) fs::remove_all(root);
 }
