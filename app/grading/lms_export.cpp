@@ -243,7 +243,8 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
 ExportReport exportGrades(const fs::path& out, const ExportOptions& options) {
     std::error_code ec;
     if (!fs::is_regular_file(studentListPath(out), ec) || !fs::is_regular_file(out / "rubric.json", ec))
-        throw Error(out.string() + ": not the output of a finished `raylab grade` (no students.txt or rubric.json)");
+        throw Error(out.string() + ": not the output of a finished `raylab grade` (no students.txt or rubric.json; "
+                    "an output of an older raylab gets them from the same grade command again, which grades no one twice)");
     nlohmann::json rubricJson;
     try {
         rubricJson = nlohmann::json::parse(readWholeFile(out / "rubric.json"));
