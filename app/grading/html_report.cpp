@@ -155,6 +155,19 @@ std::string shortened(const std::string& text, std::size_t chars) {
     return count <= chars ? text : text.substr(0, cut) + "\xE2\x80\xA6";
 }
 
+// A cluster's pairs: "a and b share 41 fingerprints (100%) in 08-cook-torrance; ...".
+std::string pairsText(const json& pairs) {
+    std::string out;
+    for (const json& p : pairs) {
+        char share[16];
+        std::snprintf(share, sizeof share, "%.0f%%", 100.0 * p.value("similarity", 0.0));
+        out += (out.empty() ? "Pairs: " : "; ") + htmlEscape(p.value("a", "")) + " and " + htmlEscape(p.value("b", "")) +
+               " share " + std::to_string(p.value("evidence", 0)) + " fingerprints (" + share + ") in " +
+               htmlEscape(p.value("exercise", ""));
+    }
+    return out.empty() ? "" : out + ".</p><p>";
+}
+
 std::string pageHead(const std::string& title) {
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
            "</title>\n" + kStyle + "</head>\n<body>\n";
@@ -397,6 +410,7 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
             html += "<details class=\"similar\"><summary>" + std::to_string(count) + " students, " +
                     htmlEscape(c.value("kind", "")) + " in " + exercises + " &middot; evidence " +
                     std::to_string(c.value("evidence", 0)) + " (" + share + "): " + who + "</summary>\n<p>" +
+                    pairsText(c.value("pairs", json::array())) +
                     htmlEscape(ex.value("exercise", "")) + ", " + htmlEscape(a) + " beside " + htmlEscape(b) +
                     ":</p><table><thead><tr><th>" + htmlEscape(a) + " line</th><th>" + htmlEscape(b) +
                     " line</th><th class=\"l\">Line of " + htmlEscape(a) + "</th></tr></thead><tbody>\n";

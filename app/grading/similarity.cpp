@@ -9,6 +9,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -215,6 +216,7 @@ struct Found {  // a cluster of one exercise
     double similarity = 0;
     std::string exercise, a, b;
     std::vector<SharedLine> lines;
+    std::vector<SimilarPair> pairs;
 };
 
 struct UnionFind {
@@ -357,6 +359,16 @@ std::vector<Found> clustersOfExercise(const std::string& exercise, std::vector<c
         }
         f.a = fa->student;
         f.b = fb->student;
+        for (const auto& [la, lb, n, share] : links)
+            if (uf.find(la) == root) {
+                std::string x = list[groups[la].members[0]]->student, y = list[groups[lb].members[0]]->student;
+                if (y < x) std::swap(x, y);
+                f.pairs.push_back({exercise, x, y, n, std::round(share * 1000.0) / 1000.0});
+            }
+        std::stable_sort(f.pairs.begin(), f.pairs.end(), [](const SimilarPair& p, const SimilarPair& q) {
+            return p.evidence != q.evidence ? p.evidence > q.evidence : std::tie(p.a, p.b) < std::tie(q.a, q.b);
+        });
+        if (f.pairs.size() > kMaxClusterPairs) f.pairs.resize(kMaxClusterPairs);
         f.lines = sharedLines(*fa, groups[ga].prints, groups[gb].prints, evidence);
         out.push_back(std::move(f));
     }
@@ -400,6 +412,8 @@ SimilarityReport findSimilarSubmissions(const std::vector<SimilarityFile>& files
                 c.identical = true;
             }
             c.exercises.push_back(exercise);
+            for (const SimilarPair& p : f.pairs)
+                if (c.pairs.size() < kMaxClusterPairs) c.pairs.push_back(p);
             c.identical = c.identical && f.identical;
             c.evidence += f.evidence;
             c.similarity = std::max(c.similarity, f.similarity);
@@ -429,7 +443,12 @@ nlohmann::json toJson(const SimilarityReport& report) {
     for (const SimilarCluster& c : report.clusters) {
         nlohmann::json lines = nlohmann::json::array();
         for (const SharedLine& l : c.lines) lines.push_back({{"line_a", l.lineA}, {"line_b", l.lineB}, {"text", l.text}});
+        nlohmann::json pairs = nlohmann::json::array();
+        for (const SimilarPair& p : c.pairs)
+            pairs.push_back({{"exercise", p.exercise}, {"a", p.a}, {"b", p.b}, {"evidence", p.evidence},
+                             {"similarity", p.similarity}});
         clusters.push_back({{"students", c.students},
+                            {"pairs", pairs},
                             {"student_count", c.studentCount},
                             {"exercises", c.exercises},
                             {"kind", c.identical ? "identical" : "similar"},

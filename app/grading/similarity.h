@@ -36,6 +36,12 @@ struct SharedLine {
     std::string text;  // the line as student A wrote it (trimmed, at most 160 bytes)
 };
 
+struct SimilarPair {
+    std::string exercise, a, b;  // a < b; each stands for the students with a file identical to theirs
+    std::size_t evidence = 0;    // shared fingerprints outside base code
+    double similarity = 0;       // evidence / the smaller file's evidence
+};
+
 struct SimilarCluster {
     std::vector<std::string> students;   // sorted; at least 2 (at most kMaxClusterStudents listed)
     std::size_t studentCount = 0;        // all of them
@@ -46,6 +52,8 @@ struct SimilarCluster {
     // The strongest pair of the strongest exercise, with their shared lines (at most 12).
     std::string exercise, a, b;
     std::vector<SharedLine> lines;
+    // The pairs of differing files that joined the cluster, the strongest first (at most kMaxClusterPairs).
+    std::vector<SimilarPair> pairs;
 };
 
 struct SimilarityReport {
@@ -55,6 +63,7 @@ struct SimilarityReport {
 };
 
 constexpr std::size_t kMaxClusterStudents = 50;
+constexpr std::size_t kMaxClusterPairs = 12;
 
 // `base`: the course's stub and solution files (their code is never evidence).
 SimilarityReport findSimilarSubmissions(const std::vector<SimilarityFile>& files,

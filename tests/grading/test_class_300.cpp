@@ -201,6 +201,11 @@ TEST(GradeClass300, OneRunExportsEveryStudentOnceAndMergedSlicesAgree) {
     EXPECT_EQ(clusters[0].at("students"),
               json({"own-ann", "own-bob-renamed", "own-cy-reordered", "own-dee-spaced"}));
     EXPECT_EQ(clusters[0].at("exercises"), json({"08-cook-torrance"}));
+    // The renamed and the reordered copy, each as a pair with the original.
+    std::set<std::string> pairs;
+    for (const json& p : clusters[0].at("pairs")) pairs.insert(p.at("a").get<std::string>() + " " + p.at("b").get<std::string>());
+    EXPECT_TRUE(pairs.count("own-ann own-bob-renamed")) << clusters[0].dump();
+    EXPECT_TRUE(pairs.count("own-ann own-cy-reordered")) << clusters[0].dump();
     EXPECT_TRUE(contains(index, "<h2 id=\"similar\">Similar submissions</h2>"));
     // The Not-graded box: grouped by reason, with counts.
     EXPECT_TRUE(contains(index, "<b>1</b> entry of the submissions folder not graded: a file that is not a .zip"))

@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 namespace fs = std::filesystem;
 using namespace rl;
 using namespace rl::test;
@@ -218,6 +220,12 @@ TEST(Similarity, ClustersSeeThroughRenamingAndReorderingAndDropBaseCode) {
     EXPECT_EQ(report.clusters[1].studentCount, 4u);
     EXPECT_GE(report.clusters[1].similarity, 0.9);
     EXPECT_GE(report.clusters[1].lines.size(), 3u) << "shared lines, side by side";
+    // The copies as pairs (ann and dee are one file after comments and white space).
+    std::map<std::string, double> pairs;
+    for (const SimilarPair& p : report.clusters[1].pairs) pairs[p.a + "-" + p.b] = p.similarity;
+    ASSERT_TRUE(pairs.count("ann-bob") && pairs.count("ann-cy")) << ::testing::PrintToString(pairs);
+    EXPECT_GE(pairs["ann-bob"], 0.95) << "renamed";
+    EXPECT_GE(pairs["ann-cy"], 0.95) << "reordered";
     EXPECT_EQ(withoutCommentsOrSpacing("float  x = 1.0; // one\n/* two */ float y;\n"), "float x = 1.0 ; float y ;");
     EXPECT_EQ(normalisedTokens("float myName = dot(a.xyz, b);"), "float $ = dot ( $ . xyz , $ ) ;");
 
