@@ -6,6 +6,8 @@
 
 namespace rl {
 
+bool isBidiControl(std::uint32_t cp);
+
 namespace {
 
 // Length of the valid UTF-8 sequence at s[i], or 0 when it is not one
@@ -50,6 +52,11 @@ std::string escape(std::string_view text, std::size_t maxChars, bool keepNewline
         else if (cp == '\r') out += "\\r";
         else if (cp < 0x20 || cp == 0x7F) out += hexEscape(cp);
         else if (cp >= 0x80 && cp <= 0x9F) out += "\\u00" + hexEscape(cp).substr(2);
+        else if (isBidiControl(cp)) {
+            char u[12];
+            std::snprintf(u, sizeof u, "\\u%04x", unsigned(cp));
+            out += u;
+        }
         else out.append(text.substr(i, n));
         i += n;
     }
@@ -59,6 +66,11 @@ std::string escape(std::string_view text, std::size_t maxChars, bool keepNewline
 }
 
 }  // namespace
+
+bool isBidiControl(std::uint32_t cp) {
+    return cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
+           (cp >= 0x2066 && cp <= 0x2069);
+}
 
 std::string printable(std::string_view text, std::size_t maxChars) { return escape(text, maxChars, false); }
 

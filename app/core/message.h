@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -12,8 +13,14 @@ namespace rl {
 
 // Quoting for a value inside a message: 'abc', or 'abcdefgh...' (1048576 bytes)
 // when longer than maxChars characters. Control characters become \n, \t,
-// \x1b and so on; bytes that are not UTF-8 become \xNN.
+// \x1b and so on, bidirectional controls \u202e; bytes that are not UTF-8 become \xNN.
 std::string quotedValue(std::string_view text, std::size_t maxChars = 40);
+
+// The bidirectional controls (U+061C, U+200E/F, U+202A..U+202E,
+// U+2066..U+2069): a name holding one displays in another order than its
+// bytes (U+202E turns "abc\u202Egnp.exe" into "abcexe.png"); escaped as
+// \u202e with the control characters.
+bool isBidiControl(std::uint32_t codePoint);
 
 // The same escaping and cut without the quotes (for whole messages).
 std::string printable(std::string_view text, std::size_t maxChars);

@@ -9,7 +9,7 @@
 #include "grading/entry_name.h"
 #include "grading/lms_export.h"
 #include "grading/outputs.h"
-#include "grading/similarity.h"
+#include "grading/class_similarity.h"
 #include "grading/summary.h"
 #include "shader/source_assembler.h"
 
@@ -96,7 +96,7 @@ ExerciseReport reportWithReason(const ExerciseInfo& info, CheckStatus status, co
 // a safe string, with its bytes kept when they had to be escaped.
 void setSource(StudentGrade& g, const SubmissionEntry& entry) {
     const std::string raw = entry.path.filename().string();
-    g.source = safeEntryId(raw);
+    g.source = escapedName(raw);  // whole: the roster and the exports read the LMS's name in it
     g.sourceBytes = g.source == raw ? "" : hexBytes(raw);
 }
 
@@ -132,24 +132,6 @@ std::string workerMain(const SubmissionEntry& entry, const GradeSettings& settin
         std::fprintf(stderr, "raylab: grading %s: %s\n", entry.id.c_str(), e.what());
         throw ChildExit{2};
     }
-}
-
-// The graded copies of every student's exercise files, compared (grading/similarity.h).
-std::vector<SimilarPair> similarPairs(const fs::path& out, const Rubric& rubric, const std::vector<StudentGrade>& grades) {
-    std::vector<SimilarityFile> files, stubs;
-    std::error_code ec;
-    for (const RubricExercise& r : rubric.exercises) {
-        const ExerciseInfo& info = findExercise(r.id);
-        if (fs::is_regular_file(exercisesDir() / info.file(), ec))
-            stubs.push_back({"", r.id, readWholeFile(exercisesDir() / info.file())});
-        for (const StudentGrade& g : grades) {
-            const ExerciseGrade* x = g.find(r.id);
-            if (!x || x->refused) continue;
-            const fs::path file = studentDir(out, g.id) / "submission" / info.file();
-            if (fs::is_regular_file(fs::symlink_status(file, ec))) files.push_back({g.id, r.id, readWholeFile(file)});
-        }
-    }
-    return findSimilarSubmissions(files, stubs);
 }
 
 }  // namespace
@@ -189,6 +171,10 @@ StudentGrade gradeStudent(const SubmissionEntry& entry, const GradeSettings& set
     if (!grade.sourceBytes.empty())
         grade.notes.insert(grade.notes.begin(), "the name of this submission is not plain UTF-8 text (bytes " +
                                                     grade.sourceBytes + "): graded as " + grade.id);
+    else if (entry.kind != SubmissionEntry::Kind::Group && grade.source.size() > kMaxEntryIdBytes)
+        grade.notes.insert(grade.notes.begin(), "the name of this submission has " +
+                                                    std::to_string(grade.source.size()) + " bytes, more than an id may have (" +
+                                                    std::to_string(kMaxEntryIdBytes) + "): graded as " + grade.id);
     if (staged.problem != StagedSubmission::Problem::None) grade.notes.insert(grade.notes.begin(), staged.problemReason);
 
     CheckOptions options;
@@ -306,15 +292,20 @@ GradeBatch gradeStudents(const std::vector<SubmissionEntry>& entries, const Grad
                                   ? "it took longer than the run allows for one student"
                                   : "worker " + (clean ? std::string("exited with status 0") : result.reason);
             grade = failedRecord(entry, settings.rubric, why);
-            saveStudentGrade(settings.out, *grade);
-            writeStudentOutputs(settings.out, settings.rubric, *grade);
+            try {
+                saveStudentGrade(settings.out, *grade);
+                writeStudentOutputs(settings.out, settings.rubric, *grade);
+            } catch (const std::exception& e) {
+                // This student's folder cannot be written: said, and the class goes on.
+                progress << "raylab: " << printable(std::string_view(e.what()), std::size_t(400)) << " (the class goes on without this student's files)\n";
+            }
             ++batch.failed;
         }
         ++batch.graded;
         StudentScore score = scoreStudent(settings.rubric, *grade);
         char line[512];
         std::snprintf(line, sizeof line, "[%*zu/%zu] %-24s %7s / %s  (%.1f s)%s\n", int(std::to_string(todo.size()).size()),
-                      done, todo.size(), grade->id.c_str(), formatPoints(score.total).c_str(),
+                      done, todo.size(), printable(grade->id, 60).c_str(), formatPoints(score.total).c_str(),
                       formatPoints(settings.rubric.maxHundredths()).c_str(), grade->seconds,
                       grade->complete ? "" : "  GRADER FAILED, see its page");
         progress << line << std::flush;
@@ -367,11 +358,14 @@ int runGrade(const GradeRunOptions& options, std::ostream& log) {
     if (!options.roster.empty() && options.shardCount <= 1)
         rosterCoverage(options.roster, grades, info.rosterWithoutSubmission, info.unmatchedSubmissions);
     nlohmann::json summary = gradeSummary(settings.rubric, grades, info);
-    summary["similar_submissions"] = toJson(similarPairs(settings.out, settings.rubric, grades));
-    writeClassOutputs(settings.out, settings.rubric, grades, summary);
+    if (!options.roster.empty()) summary["roster_test_student"] = testStudentNote(options.roster);
+    summary["similar_submissions"] = classSimilarity(settings.out, settings.rubric, grades);
+    for (const std::string& failed : writeClassOutputs(settings.out, settings.rubric, grades, summary))
+        log << "raylab: " << printable(failed, 400) << " (the class goes on without this student's files)\n";
     char line[256];
-    std::snprintf(line, sizeof line, "graded %d, skipped %d (already graded), %d failed to grade, in %.1f s: ",
-                  batch.graded, batch.skipped, batch.failed, info.seconds);
+    std::snprintf(line, sizeof line, "graded %d, skipped %d (already graded), %d failed to grade, in %.1f s wall (%d jobs): ",
+                  batch.graded, batch.skipped, batch.failed,
+                  std::chrono::duration<double>(Clock::now() - start).count(), settings.jobs);
     log << line << (settings.out / "grades.csv").string() << ", " << (settings.out / "index.html").string() << "\n";
     return 0;
 }

@@ -1,12 +1,15 @@
 #include "grading/html_report.h"
 
+#include "core/message.h"
 #include "course/exercise_registry.h"
+#include "grading/summary.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <regex>
 
 namespace rl {
@@ -35,6 +38,9 @@ figcaption{font-size:12px;margin-top:4px}
 #grades{width:100%;font-size:13px} #grades th,#grades td{padding:3px 5px} #grades td.x{white-space:normal;width:5.4em}
 .why{display:block;font-size:11px;line-height:1.15;color:#444;text-align:left;white-space:normal;overflow-wrap:anywhere;max-width:5.8em}
 #grades td.notecol{white-space:normal;min-width:11em;font-size:12px;overflow-wrap:anywhere}
+#grades td.id{white-space:normal;overflow-wrap:anywhere;max-width:14em}
+details.similar td,details.reason li{white-space:normal;overflow-wrap:anywhere} details.similar>summary,details.reason>summary{cursor:pointer;overflow-wrap:anywhere}
+a.more{font-size:11px;white-space:nowrap}
 .filter{margin:8px 0;display:flex;gap:12px;align-items:center} .filter input[type=search]{width:22em;font:inherit;padding:3px 6px}
 details.passed{margin:16px 0} details.passed>summary{cursor:pointer;font-weight:600}
 </style>
@@ -138,6 +144,30 @@ std::string breakable(const std::string& html) {
     return out;
 }
 
+// At most `chars` characters of UTF-8 text: the first chars - 2 and an ellipsis.
+std::string shortened(const std::string& text, std::size_t chars) {
+    std::size_t count = 0, cut = std::string::npos;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if ((static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) continue;
+        if (count == chars - 2) cut = i;
+        ++count;
+    }
+    return count <= chars ? text : text.substr(0, cut) + "\xE2\x80\xA6";
+}
+
+// A cluster's pairs: "a and b share 41 fingerprints (100%) in 08-cook-torrance; ...".
+std::string pairsText(const json& pairs) {
+    std::string out;
+    for (const json& p : pairs) {
+        char share[16];
+        std::snprintf(share, sizeof share, "%.0f%%", 100.0 * p.value("similarity", 0.0));
+        out += (out.empty() ? "Pairs: " : "; ") + htmlEscape(p.value("a", "")) + " and " + htmlEscape(p.value("b", "")) +
+               " share " + std::to_string(p.value("evidence", 0)) + " fingerprints (" + share + ") in " +
+               htmlEscape(p.value("exercise", ""));
+    }
+    return out.empty() ? "" : out + ".</p><p>";
+}
+
 std::string pageHead(const std::string& title) {
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
            "</title>\n" + kStyle + "</head>\n<body>\n";
@@ -159,7 +189,19 @@ std::string imageUrl(const std::string& path) {
 
 }  // namespace
 
-std::string htmlEscape(const std::string& text) {
+std::string htmlEscape(const std::string& raw) {
+    // Control characters, bidirectional controls and bytes that are not UTF-8
+    // shown as escapes (\x1b, \u202e, \xe9), as on the terminal; tabs and newlines kept.
+    std::string text;
+    std::size_t from = 0;
+    for (;;) {
+        const std::size_t tab = raw.find('\t', from);
+        text += printableLines(std::string_view(raw).substr(from, tab == std::string::npos ? std::string::npos : tab - from),
+                               std::string::npos);
+        if (tab == std::string::npos) break;
+        text += '\t';
+        from = tab + 1;
+    }
     std::string out;
     for (char c : text) {
         switch (c) {
@@ -207,35 +249,65 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
             "Files: <a href=\"grades.csv\">grades.csv</a>, <a href=\"summary.json\">summary.json</a>, "
             "<a href=\"rubric.json\">rubric.json</a>.</p>\n";
     // What was not graded, first: an instructor must see a dropped student here, not on a terminal long closed.
+    // Grouped by reason with counts; the names of each reason one click away.
     const json ignored = summary.value("ignored_entries", json::array());
     const json missing = summary.value("roster_without_submission", json::array());
     const json unmatched = summary.value("submissions_without_roster_student", json::array());
-    if (!ignored.empty() || !missing.empty() || !unmatched.empty()) {
-        html += "<div class=\"notes\" id=\"not-graded\"><b>Not graded</b>";
-        if (!ignored.empty()) {
-            html += "<p>" + std::to_string(ignored.size()) + " entr" + (ignored.size() == 1 ? "y" : "ies") +
-                    " of the submissions folder " + (ignored.size() == 1 ? "is" : "are") +
-                    " no student, and " + (ignored.size() == 1 ? "was" : "were") + " not graded:</p><ul>\n";
-            for (const json& i : ignored) html += "<li>" + htmlEscape(i.is_string() ? i.get<std::string>() : i.dump()) + "</li>\n";
-            html += "</ul>\n";
-        }
-        if (!missing.empty()) {
-            html += "<p>" + std::to_string(missing.size()) + " student" + (missing.size() == 1 ? "" : "s") +
-                    " of the roster without a submission:</p><ul>\n";
-            for (const json& m : missing) html += "<li>" + htmlEscape(m.is_string() ? m.get<std::string>() : m.dump()) + "</li>\n";
-            html += "</ul>\n";
-        }
-        if (!unmatched.empty()) {
-            html += "<p>" + std::to_string(unmatched.size()) + " graded submission" + (unmatched.size() == 1 ? "" : "s") +
-                    " that no roster student matches (left out of the gradebook export):</p><ul>\n";
-            for (const json& u : unmatched) html += "<li>" + htmlEscape(u.is_string() ? u.get<std::string>() : u.dump()) + "</li>\n";
-            html += "</ul>\n";
-        }
-        html += "</div>\n";
+    const json unwritten = summary.value("students_not_written", json::array());
+    const std::string testStudent = summary.value("roster_test_student", "");
+    const std::size_t ignoredCount = summary.value("ignored_count", ignored.size());
+    std::vector<std::string> failedIds;
+    for (const StudentGrade& g : grades)
+        if (!g.complete) failedIds.push_back(g.id);
+    auto names = [](const json& list, std::size_t total) {
+        std::string out = "<ul>";
+        for (const json& i : list) out += "<li>" + htmlEscape(i.is_string() ? i.get<std::string>() : i.dump()) + "</li>";
+        if (total > list.size()) out += "<li class=\"muted\">and " + std::to_string(total - list.size()) + " more (summary.json has the counts)</li>";
+        return out + "</ul>";
+    };
+    auto reasonLine = [](std::size_t n, const std::string& what, const std::string& list) {
+        return "<details class=\"reason\"><summary><b>" + std::to_string(n) + "</b> " + what + "</summary>" + list +
+               "</details>\n";
+    };
+    std::string box;
+    if (!failedIds.empty()) {
+        json ids = json::array();
+        for (const std::string& id : failedIds) ids.push_back(id);
+        box += reasonLine(failedIds.size(), "student" + std::string(failedIds.size() == 1 ? "" : "s") +
+                                                " the grader itself failed for (graded again by the next run)",
+                          names(ids, ids.size()));
     }
+    if (!unwritten.empty())
+        box += reasonLine(unwritten.size(), "student folder" + std::string(unwritten.size() == 1 ? "" : "s") +
+                                                " that could not be written (the grades are in grades.csv)",
+                          names(unwritten, unwritten.size()));
+    if (ignoredCount) {
+        // Each reason of the submissions folder's entries that are no student, with its count.
+        std::map<std::string, json> byWhy;
+        for (const json& i : ignored)
+            if (i.is_string()) byWhy[reasonOf(i.get<std::string>())].push_back(i.get<std::string>());
+        for (const json& r : summary.value("ignored_by_reason", json::array())) {
+            const std::string why = r.value("reason", "other");
+            const std::size_t n = r.value("count", std::size_t(0));
+            box += reasonLine(n, "entr" + std::string(n == 1 ? "y" : "ies") + " of the submissions folder not graded: " +
+                                     htmlEscape(why),
+                              names(byWhy.count(why) ? byWhy[why] : json::array(), n));
+        }
+    }
+    if (!missing.empty())
+        box += reasonLine(summary.value("roster_without_submission_count", missing.size()),
+                          "student" + std::string(missing.size() == 1 ? "" : "s") + " of the roster without a submission",
+                          names(missing, summary.value("roster_without_submission_count", missing.size())));
+    if (!unmatched.empty())
+        box += reasonLine(summary.value("submissions_without_roster_student_count", unmatched.size()),
+                          "graded submission" + std::string(unmatched.size() == 1 ? "" : "s") +
+                              " that no roster student matches (left out of the gradebook export)",
+                          names(unmatched, summary.value("submissions_without_roster_student_count", unmatched.size())));
+    if (!testStudent.empty()) box += "<p class=\"muted\" id=\"test-student\">" + htmlEscape(testStudent) + "</p>\n";
+    if (!box.empty()) html += "<div class=\"notes\" id=\"not-graded\"><b>Not graded</b>\n" + box + "</div>\n";
     html += "<div class=\"filter\"><input type=\"search\" id=\"filter\" placeholder=\"Filter: id, status, reason, "
             "note...\" aria-label=\"Filter the students\"><label><input type=\"checkbox\" id=\"problems-only\"> only "
-            "students with problems</label><span class=\"muted\" id=\"shown\"></span></div>\n";
+            "students with problems (a lost point or an entry not graded)</label><span class=\"muted\" id=\"shown\"></span></div>\n";
     html += "<table class=\"sortable\" id=\"grades\">\n<thead><tr><th class=\"l\" data-type=\"text\">" +
             htmlEscape(rubric.idColumn) + "</th>";
     for (const RubricExercise& e : rubric.exercises)
@@ -245,25 +317,43 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
             "</span></th><th data-type=\"num\">Prob&shy;lems</th><th class=\"l\" data-type=\"text\">Notes</th></tr></thead>\n<tbody>\n";
     for (const StudentGrade& g : grades) {
         StudentScore s = scoreStudent(rubric, g);
+        // A problem is a lost point, or an exercise the grader could not grade (it failed, or
+        // the file was refused): a missing optional exercise at full marks is none.
         int problems = 0;
         std::string cells;
         for (std::size_t k = 0; k < rubric.exercises.size(); ++k) {
             const ExerciseGrade* x = g.find(rubric.exercises[k].id);
             std::string status = x ? gradeStatus(*x) : "NOT STARTED";
-            problems += status != "PASS";
+            problems += s.hundredths[k] < std::lround(rubric.exercises[k].weight * 100) || status == "REFUSED" ||
+                        status == "CRASH" || !g.complete;
             std::string tip = status + (x && !x->report.message.empty() ? ": " + x->report.message : "");
             std::string why = shortReason(x);
             cells += "<td class=\"x " + statusClass(x) + "\" data-v=\"" + formatPoints(s.hundredths[k]) + "\" title=\"" +
                      htmlEscape(tip) + "\">" + formatPoints(s.hundredths[k]) +
                      (why.empty() ? "" : "<span class=\"why\">" + htmlEscape(why) + "</span>") + "</td>";
         }
+        // The first note, short; the rest on the student's page, one click away.
         std::string notes;
-        for (const std::string& n : g.notes) notes += (notes.empty() ? "" : "; ") + n;
-        html += std::string("<tr") + (problems ? " class=\"problem\"" : "") + "><td class=\"l id\"><a href=\"" +
-                urlSegment(g.id) + "/index.html\">" + htmlEscape(g.id) + "</a></td>" + cells + "<td data-v=\"" +
+        if (!g.notes.empty()) {
+            std::string first = g.notes[0];
+            if (first.size() > 70) {
+                std::size_t cut = 64;
+                while (cut > 0 && (static_cast<unsigned char>(first[cut]) & 0xC0) == 0x80) --cut;
+                first = first.substr(0, cut) + "...";
+            }
+            notes = htmlEscape(first);
+            if (g.notes.size() > 1 || first != g.notes[0])
+                notes += " <a class=\"more\" href=\"" + urlSegment(g.id) + "/index.html#notes\">" +
+                         (g.notes.size() > 1 ? "+" + std::to_string(g.notes.size() - 1) + " more" : "more") + "</a>";
+        }
+        // A long id (up to 100 bytes) in a few characters, whole in its tooltip: rows stay a line or two.
+        const std::string shown = shortened(g.id, 24);
+        html += std::string("<tr") + (problems ? " class=\"problem\"" : "") + "><td class=\"l id\"" +
+                (shown == g.id ? "" : " title=\"" + htmlEscape(g.id) + "\"") + "><a href=\"" + urlSegment(g.id) +
+                "/index.html\">" + htmlEscape(shown) + "</a></td>" + cells + "<td data-v=\"" +
                 formatPoints(s.total) + "\"><b>" + formatPoints(s.total) + "</b></td><td data-v=\"" +
                 std::to_string(problems) + "\"" + (problems ? " class=\"s-fail\"" : "") + ">" +
-                std::to_string(problems) + "</td><td class=\"l notecol\">" + htmlEscape(notes) + "</td></tr>\n";
+                std::to_string(problems) + "</td><td class=\"l notecol\">" + notes + "</td></tr>\n";
     }
     html += "</tbody>\n</table>\n";
     // What the class got wrong: the page to open before the next lecture.
@@ -292,22 +382,39 @@ std::string classIndexPage(const Rubric& rubric, const std::vector<StudentGrade>
                 "class=\"l\">Exercise</th><th>Passed</th><th class=\"l\">Not passed</th><th class=\"l\">Mistakes the "
                 "checker recognised (students &times; hint)</th><th class=\"l\">Probe groups failed (students)</th>"
                 "</tr></thead>\n<tbody>\n" + rows + "</tbody>\n</table>\n";
-    // Similar submissions: for the instructor to look at; grades are not changed by them.
-    const json similar = summary.value("similar_submissions", json::array());
-    if (!similar.empty()) {
-        html += "<h2 id=\"similar\">Similar submissions</h2>\n<p class=\"muted\">Pairs whose exercise file is the same "
-                "after white space and comments are removed (identical), or shares at least 80% of its code outside the "
-                "stub and outside code common to many students (similar). Information only: no grade changes.</p>\n";
-        for (const json& p : similar) {
-            const std::string a = p.value("a", ""), b = p.value("b", "");
+    // Similar submissions, as clusters: for the instructor to look at; grades are not changed by them.
+    const json similarity = summary.value("similar_submissions", json::object());
+    const json clusters = similarity.is_object() ? similarity.value("clusters", json::array()) : json::array();
+    if (!clusters.empty()) {
+        const std::size_t found = similarity.value("clusters_found", clusters.size());
+        html += "<h2 id=\"similar\">Similar submissions</h2>\n<p class=\"muted\">" + std::to_string(found) +
+                " cluster" + (found == 1 ? "" : "s") + " of students whose files share code outside base code" +
+                (found > clusters.size() ? " (the " + std::to_string(clusters.size()) + " with the most evidence listed)" : "") +
+                ", the most evidence first. Base code is never evidence: the stub's and the solution's code, and "
+                "code more than 20% of the class share. Identifiers are normalised (renaming is seen through) and "
+                "functions compared in any order. Information only: no grade changes.</p>\n";
+        for (const json& c : clusters) {
+            const json ex = c.value("example", json::object());
+            const std::string a = ex.value("a", ""), b = ex.value("b", "");
+            std::string who;
+            for (const json& id : c.value("students", json::array())) {
+                const std::string sid = id.get<std::string>();
+                who += (who.empty() ? "" : ", ") + ("<a href=\"" + urlSegment(sid) + "/index.html\">" + htmlEscape(sid) + "</a>");
+            }
+            const std::size_t count = c.value("student_count", std::size_t(0));
+            if (count > c.value("students", json::array()).size()) who += " and " + std::to_string(count - c["students"].size()) + " more";
+            std::string exercises;
+            for (const json& e : c.value("exercises", json::array())) exercises += (exercises.empty() ? "" : ", ") + htmlEscape(e.get<std::string>());
             char share[16];
-            std::snprintf(share, sizeof share, "%.0f%%", 100.0 * p.value("similarity", 0.0));
-            html += "<details class=\"similar\"><summary>" + htmlEscape(p.value("exercise", "")) + ": <a href=\"" +
-                    urlSegment(a) + "/index.html\">" + htmlEscape(a) + "</a> and <a href=\"" + urlSegment(b) +
-                    "/index.html\">" + htmlEscape(b) + "</a> &middot; " + htmlEscape(p.value("kind", "")) + " (" +
-                    share + ")</summary>\n<table><thead><tr><th>" + htmlEscape(a) + " line</th><th>" + htmlEscape(b) +
-                    " line</th><th class=\"l\">Shared line</th></tr></thead><tbody>\n";
-            for (const json& l : p.value("shared_lines", json::array()))
+            std::snprintf(share, sizeof share, "%.0f%%", 100.0 * c.value("similarity", 0.0));
+            html += "<details class=\"similar\"><summary>" + std::to_string(count) + " students, " +
+                    htmlEscape(c.value("kind", "")) + " in " + exercises + " &middot; evidence " +
+                    std::to_string(c.value("evidence", 0)) + " (" + share + "): " + who + "</summary>\n<p>" +
+                    pairsText(c.value("pairs", json::array())) +
+                    htmlEscape(ex.value("exercise", "")) + ", " + htmlEscape(a) + " beside " + htmlEscape(b) +
+                    ":</p><table><thead><tr><th>" + htmlEscape(a) + " line</th><th>" + htmlEscape(b) +
+                    " line</th><th class=\"l\">Line of " + htmlEscape(a) + "</th></tr></thead><tbody>\n";
+            for (const json& l : ex.value("shared_lines", json::array()))
                 html += "<tr><td>" + std::to_string(l.value("line_a", 0)) + "</td><td>" + std::to_string(l.value("line_b", 0)) +
                         "</td><td class=\"l\"><code>" + htmlEscape(l.value("text", "")) + "</code></td></tr>\n";
             html += "</tbody></table></details>\n";
@@ -327,7 +434,7 @@ std::string studentPage(const Rubric& rubric, const StudentGrade& g) {
             "</h1>\n<p class=\"muted\">Submitted as " + htmlEscape(g.source) + "; graded in " + fixed(g.seconds, 1) +
             " s. The files graded are in <a href=\"submission/\">submission/</a>.</p>\n";
     if (!g.notes.empty()) {
-        html += "<div class=\"notes\"><b>About the submission</b><ul>\n";
+        html += "<div class=\"notes\" id=\"notes\"><b>About the submission</b><ul>\n";
         for (const std::string& n : g.notes) html += "<li>" + htmlEscape(n) + "</li>\n";
         html += "</ul></div>\n";
     }

@@ -5,6 +5,7 @@
 #include "grading/atomic_file.h"
 #include "grading/grades_csv.h"
 #include "grading/roster.h"
+#include "grading/student_list.h"
 
 #include <nlohmann/json.hpp>
 
@@ -85,6 +86,15 @@ void rosterCoverage(const fs::path& rosterFile, const std::vector<StudentGrade>&
                                         std::to_string(roster.students[k].line) + ")");
 }
 
+std::string testStudentNote(const fs::path& rosterFile) {
+    const Roster roster = loadRoster(rosterFile);
+    if (roster.testStudentLine == 0) return "";
+    return "Canvas's Test Student (" + rosterFile.filename().string() + " line " +
+           std::to_string(roster.testStudentLine) +
+           ") is the course's preview account, not a student: left out of the export and of the roster checks; "
+           "a submission of its own is graded and listed like any other";
+}
+
 std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& grades, const ExportOptions& o,
                        ExportReport& report) {
     std::optional<Roster> roster = checkedRoster(o);
@@ -125,6 +135,9 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
         for (const RosterStudent& s : roster->students)
             if (!taken.count(&s))
                 report.withoutSubmission.push_back(s.name + " (line " + std::to_string(s.line) + ")");
+    if (roster && roster->testStudentLine)
+        report.notes.push_back("Canvas's Test Student (line " + std::to_string(roster->testStudentLine) +
+                               ") is the course's preview account: left out of the export");
 
     const std::string assignment = o.assignment.empty() ? rubric.totalColumn : o.assignment;
     std::string text;
@@ -229,18 +242,19 @@ std::string exportText(const Rubric& rubric, const std::vector<StudentGrade>& gr
 
 ExportReport exportGrades(const fs::path& out, const ExportOptions& options) {
     std::error_code ec;
-    if (!fs::is_regular_file(out / "summary.json", ec) || !fs::is_regular_file(out / "rubric.json", ec))
-        throw Error(out.string() + ": not the output of a finished `raylab grade` (no summary.json or rubric.json)");
-    nlohmann::json summary, rubricJson;
+    if (!fs::is_regular_file(studentListPath(out), ec) || !fs::is_regular_file(out / "rubric.json", ec))
+        throw Error(out.string() + ": not the output of a finished `raylab grade` (no students.txt or rubric.json; "
+                    "an output of an older raylab gets them from the same grade command again, which grades no one twice)");
+    nlohmann::json rubricJson;
     try {
-        summary = nlohmann::json::parse(readWholeFile(out / "summary.json"));
         rubricJson = nlohmann::json::parse(readWholeFile(out / "rubric.json"));
     } catch (const nlohmann::json::exception& e) {
-        throw Error(out.string() + ": summary.json or rubric.json is not valid JSON (" + e.what() + ")");
+        throw Error((out / "rubric.json").string() + ": not valid JSON (" + e.what() + ")");
     }
     Rubric rubric = rubricFromJson(rubricJson, (out / "rubric.json").string());
     std::vector<StudentGrade> grades;
-    for (const std::string& id : summary.value("student_ids", std::vector<std::string>{})) {
+    // One record at a time, from the list of ids: no file of the class as a whole is read.
+    for (const std::string& id : readStudentList(out)) {
         std::optional<StudentGrade> g = loadStudentGrade(out, id);
         if (!g) throw Error(gradeRecordPath(out, id).string() + ": missing or unreadable");
         grades.push_back(*g);

@@ -61,6 +61,10 @@ void checkExportOptions(const ExportOptions& options);
 void rosterCoverage(const std::filesystem::path& roster, const std::vector<StudentGrade>& grades,
                     std::vector<std::string>& withoutSubmission, std::vector<std::string>& unmatched);
 
+// What the export does with Canvas's Test Student of a roster: "" when the
+// roster has none.
+std::string testStudentNote(const std::filesystem::path& roster);
+
 // Writes the export from the students' records in OUT (as `raylab grade`
 // leaves them). Throws rl::Error for a bad format, roster or OUT.
 ExportReport exportGrades(const std::filesystem::path& out, const ExportOptions& options);

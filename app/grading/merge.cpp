@@ -3,6 +3,8 @@
 #include "core/error.h"
 #include "core/json_text.h"
 #include "grading/atomic_file.h"
+#include "grading/class_similarity.h"
+#include "grading/student_list.h"
 #include "grading/outputs.h"
 #include "grading/rubric.h"
 #include "grading/student_grade.h"
@@ -46,7 +48,7 @@ void mergeGradeOutputs(const std::vector<fs::path>& shards, const fs::path& out,
     std::map<int, fs::path> seenShards;
     std::map<std::string, fs::path> owner;  // student id -> shard folder
     std::vector<StudentGrade> grades;
-    std::set<std::string> ignored;
+    json ignoredPart;  // every shard lists the same SUBMISSIONS: the first one's
     RunInfo info;
     for (const fs::path& shard : shards) {
         json r = readJson(shard / "rubric.json");
@@ -68,12 +70,15 @@ void mergeGradeOutputs(const std::vector<fs::path>& shards, const fs::path& out,
                         " is also " + seenShards[index].string());
         seenShards[index] = shard;
         submissionsTotal = std::max<std::size_t>(submissionsTotal, s.value("submissions_total", 0));
-        for (const std::string& i : s.value("ignored_entries", std::vector<std::string>{})) ignored.insert(i);
+        if (ignoredPart.is_null())
+            ignoredPart = {{"ignored_count", s.value("ignored_count", 0)},
+                           {"ignored_by_reason", s.value("ignored_by_reason", json::array())},
+                           {"ignored_entries", s.value("ignored_entries", json::array())}};
         info.graded += s.value("graded_this_run", 0);
         info.skipped += s.value("skipped_already_graded", 0);
         info.jobs = s.value("jobs", 1);
         info.timeoutSeconds = s.value("timeout_seconds", 0.0);
-        for (const std::string& id : s.value("student_ids", std::vector<std::string>{})) {
+        for (const std::string& id : readStudentList(shard)) {
             if (owner.count(id))
                 throw Error(shard.string() + ": student " + id + " was also graded in " + owner[id].string());
             owner[id] = shard;
@@ -116,8 +121,12 @@ void mergeGradeOutputs(const std::vector<fs::path>& shards, const fs::path& out,
     std::sort(grades.begin(), grades.end(), [](const StudentGrade& a, const StudentGrade& b) { return a.id < b.id; });
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     info.submissionsTotal = submissionsTotal;
-    info.ignored.assign(ignored.begin(), ignored.end());
-    writeClassOutputs(out, rubric, grades, gradeSummary(rubric, grades, info));
+    json summary = gradeSummary(rubric, grades, info);
+    for (const auto& [key, value] : ignoredPart.items()) summary[key] = value;
+    // Compared across the whole class, as an unsharded run does.
+    summary["similar_submissions"] = classSimilarity(out, rubric, grades);
+    for (const std::string& failed : writeClassOutputs(out, rubric, grades, summary))
+        log << "raylab: " << failed << " (the class goes on without this student's files)\n";
     log << "merged " << shards.size() << " shard" << (shards.size() == 1 ? "" : "s") << ", " << grades.size()
         << " students, into " << (out / "grades.csv").string() << "\n";
 }

@@ -6,6 +6,7 @@
 #include "grading/grades_csv.h"
 #include "grading/gradescope_results.h"
 #include "grading/html_report.h"
+#include "grading/student_list.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,13 +31,24 @@ void writeStudentOutputs(const fs::path& out, const Rubric& rubric, const Studen
     writeOutputFile(dir / "index.html", studentPage(rubric, grade));
 }
 
-void writeClassOutputs(const fs::path& out, const Rubric& rubric, const std::vector<StudentGrade>& grades,
-                       const nlohmann::json& summary) {
-    for (const StudentGrade& g : grades) writeStudentOutputs(out, rubric, g);
+std::vector<std::string> writeClassOutputs(const fs::path& out, const Rubric& rubric,
+                                           const std::vector<StudentGrade>& grades, nlohmann::json summary) {
+    std::vector<std::string> failed, ids;
+    for (const StudentGrade& g : grades) {
+        ids.push_back(g.id);
+        try {
+            writeStudentOutputs(out, rubric, g);
+        } catch (const std::exception& e) {
+            failed.push_back(e.what());
+        }
+    }
+    summary["students_not_written"] = failed;
+    writeStudentList(out, ids);
     writeOutputFile(out / "rubric.json", toJson(rubric).dump(2) + "\n");
     writeOutputFile(out / "grades.csv", gradesCsv(rubric, grades));
     writeOutputFile(out / "summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     writeOutputFile(out / "index.html", classIndexPage(rubric, grades, summary));
+    return failed;
 }
 
 }  // namespace rl

@@ -132,8 +132,11 @@ Roster loadRoster(const fs::path& file) {
             const std::vector<std::string>& row = rows[r];
             std::string name = cell(row, 0);
             // Not students: the points row, the muted/posting row, Canvas's own test student.
-            if (name.find("Points Possible") != std::string::npos || name == "Student, Test" || name == "Test Student")
+            if (name.find("Points Possible") != std::string::npos) continue;
+            if (name == "Student, Test" || name == "Test Student") {
+                roster.testStudentLine = int(r) + 1;  // said in the report and the export's report
                 continue;
+            }
             if (cell(row, 1).empty()) continue;
             RosterStudent s;
             s.name = name;

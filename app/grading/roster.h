@@ -50,6 +50,7 @@ struct Roster {
     std::filesystem::path file;
     std::vector<RosterStudent> students;
     std::vector<std::string> headers;  // the header row as read (Canvas: assignment columns "Name (id)")
+    int testStudentLine = 0;           // Canvas's "Test Student" row, left out (0: none)
 };
 
 // Reads a roster (UTF-8, a byte-order mark allowed, comma or semicolon

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <numeric>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -20,22 +22,52 @@ namespace {
 // defaults (k 23, w 17 on AST tokens, which are finer than GLSL's lexemes).
 constexpr std::size_t kGram = 12;
 constexpr std::size_t kWindow = 8;
-// A pair is "similar" from this share of the smaller file's fingerprints and
-// at least kMinShared of them: 80% of one file, and more than a short
-// function (a finished exercise has 30 to 200 fingerprints).
-constexpr double kMinSimilarity = 0.8;
-constexpr std::size_t kMinShared = 10;
-// Fingerprints found in more than this share of the class's files of an
+// Two files are joined from this share of the smaller file's evidence and
+// at least kMinShared shared fingerprints: half of one file, and more than a
+// short function (a finished exercise has 30 to 200 fingerprints; a
+// one-line exercise 5 to 10, so two identical one-liners are never evidence).
+constexpr double kMinSimilarity = 0.5;
+constexpr std::size_t kMinShared = 8;
+// Fingerprints held by more than this share of the class's files of an
 // exercise are common code (Dolos's maxFingerprintPercentage), not evidence.
 constexpr double kCommonShare = 0.2;
+constexpr std::size_t kMaxLines = 12;
+
+// GLSL's own words: kept as they are when identifiers are normalised.
+const std::unordered_set<std::string>& glslWords() {
+    static const std::unordered_set<std::string> words = {
+        // keywords and qualifiers
+        "attribute", "const", "uniform", "varying", "buffer", "shared", "centroid", "flat", "smooth", "layout",
+        "break", "continue", "do", "for", "while", "switch", "case", "default", "if", "else", "in", "out", "inout",
+        "true", "false", "invariant", "discard", "return", "struct", "precision", "highp", "mediump", "lowp",
+        // types
+        "void", "bool", "int", "uint", "float", "double", "vec2", "vec3", "vec4", "ivec2", "ivec3", "ivec4", "uvec2",
+        "uvec3", "uvec4", "bvec2", "bvec3", "bvec4", "mat2", "mat3", "mat4", "mat2x2", "mat2x3", "mat2x4", "mat3x2",
+        "mat3x3", "mat3x4", "mat4x2", "mat4x3", "mat4x4", "sampler2D", "samplerCube", "sampler3D",
+        // built-in functions
+        "radians", "degrees", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "pow", "exp",
+        "log", "exp2", "log2", "sqrt", "inversesqrt", "abs", "sign", "floor", "trunc", "round", "ceil", "fract",
+        "mod", "modf", "min", "max", "clamp", "mix", "step", "smoothstep", "isnan", "isinf", "length", "distance",
+        "dot", "cross", "normalize", "faceforward", "reflect", "refract", "matrixCompMult", "transpose", "inverse",
+        "determinant", "lessThan", "greaterThan", "equal", "notEqual", "any", "all", "not", "texture", "textureLod",
+        "texelFetch", "textureSize", "dFdx", "dFdy", "fwidth", "gl_FragCoord", "gl_FragColor"};
+    return words;
+}
 
 struct Tok {
-    std::string text;
+    std::string text;  // normalised
+    std::string raw;
     int line;
 };
 
-// GLSL tokens outside comments and preprocessor lines, with their lines.
-std::vector<Tok> tokens(const std::string& s) {
+bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// GLSL tokens outside comments and preprocessor lines, with their lines;
+// `normalise`: identifiers that are not GLSL's own (nor a swizzle after '.') become "$".
+std::vector<Tok> tokens(const std::string& s, bool normalise) {
+    static const char* const kTwo[] = {"==", "!=", "<=", ">=", "&&", "||", "^^", "+=", "-=", "*=", "/=", "++", "--",
+                                       "<<", ">>", "%=", "&=", "|="};
     std::vector<Tok> out;
     int line = 1;
     bool lineStart = true;
@@ -67,13 +99,25 @@ std::vector<Tok> tokens(const std::string& s) {
             continue;
         }
         lineStart = false;
-        std::size_t start = i;
-        if (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.') {
-            while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_' || s[i] == '.')) ++i;
+        const std::size_t start = i;
+        bool ident = false;
+        if (identStart(c)) {
+            while (i < s.size() && identChar(s[i])) ++i;
+            ident = true;
+        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                   (c == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
+            while (i < s.size() && (identChar(s[i]) || s[i] == '.')) ++i;
         } else {
-            ++i;
+            i += 1;
+            for (const char* two : kTwo)
+                if (s.compare(start, 2, two) == 0) i = start + 2;
         }
-        out.push_back({s.substr(start, i - start), line});
+        Tok t;
+        t.raw = s.substr(start, i - start);
+        t.line = line;
+        const bool swizzle = !out.empty() && out.back().raw == ".";
+        t.text = normalise && ident && !swizzle && !glslWords().count(t.raw) ? "$" : t.raw;
+        out.push_back(std::move(t));
     }
     return out;
 }
@@ -89,19 +133,25 @@ std::uint64_t fnv(const std::string& text, std::uint64_t h = 1469598103934665603
 struct Print {
     std::uint64_t hash;
     int line;  // first line of its k-gram
-    int lastLine;
 };
 
-// Winnowing: the smallest k-gram hash of every window (rightmost on ties), each kept once.
-std::vector<Print> winnow(const std::vector<Tok>& t) {
+// Winnowing of one unit: the smallest k-gram hash of every window (rightmost on ties).
+void winnowUnit(const std::vector<Tok>& t, std::size_t from, std::size_t to, std::vector<Print>& out) {
     std::vector<Print> grams;
-    if (t.size() < kGram) return grams;
-    for (std::size_t k = 0; k + kGram <= t.size(); ++k) {
+    if (to - from < kGram) {
+        // A unit shorter than a k-gram (a one-line function) is one fingerprint of its own.
+        if (to - from >= 4) {
+            std::uint64_t h = fnv("short");
+            for (std::size_t j = from; j < to; ++j) h = fnv(t[j].text + "\x1f", h);
+            out.push_back({h, t[from].line});
+        }
+        return;
+    }
+    for (std::size_t k = from; k + kGram <= to; ++k) {
         std::uint64_t h = 1469598103934665603ull;
         for (std::size_t j = k; j < k + kGram; ++j) h = fnv(t[j].text + "\x1f", h);
-        grams.push_back({h, t[k].line, t[k + kGram - 1].line});
+        grams.push_back({h, t[k].line});
     }
-    std::vector<Print> out;
     const std::size_t windows = grams.size() > kWindow ? grams.size() - kWindow + 1 : 1;
     std::size_t last = grams.size();
     for (std::size_t w = 0; w < windows; ++w) {
@@ -111,6 +161,27 @@ std::vector<Print> winnow(const std::vector<Tok>& t) {
         if (best != last) out.push_back(grams[best]);
         last = best;
     }
+}
+
+// The fingerprints of a file, unit by unit: a unit is a top-level function
+// (its header and body) or declaration, so the order of the units does not
+// change the set.
+std::vector<Print> fingerprints(const std::string& text) {
+    const std::vector<Tok> t = tokens(text, true);
+    std::vector<Print> out;
+    std::size_t unitStart = 0;
+    int depth = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const std::string& x = t[k].raw;
+        if (x == "{" || x == "(" || x == "[") ++depth;
+        if (x == "}" || x == ")" || x == "]") depth = std::max(0, depth - 1);
+        const bool ends = depth == 0 && (x == ";" || (x == "}" && !(k + 1 < t.size() && t[k + 1].raw == ";")));
+        if (ends) {
+            winnowUnit(t, unitStart, k + 1, out);
+            unitStart = k + 1;
+        }
+    }
+    if (unitStart < t.size()) winnowUnit(t, unitStart, t.size(), out);
     return out;
 }
 
@@ -131,11 +202,184 @@ std::vector<std::string> linesOf(const std::string& text) {
     return out;
 }
 
+// Files of one exercise with the same text after comments and white space.
+struct Group {
+    std::vector<std::size_t> members;        // indices into the exercise's files
+    std::vector<Print> prints;               // of the text, base code left out
+    std::vector<std::uint64_t> evidence;     // distinct hashes of `prints` outside common code, sorted
+};
+
+struct Found {  // a cluster of one exercise
+    std::set<std::string> students;
+    bool identical = false;
+    std::size_t evidence = 0;
+    double similarity = 0;
+    std::string exercise, a, b;
+    std::vector<SharedLine> lines;
+    std::vector<SimilarPair> pairs;
+};
+
+struct UnionFind {
+    std::vector<std::size_t> up;
+    explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
+    std::size_t find(std::size_t x) {
+        while (up[x] != x) x = up[x] = up[up[x]];
+        return x;
+    }
+    void join(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
+};
+
+// The lines of A whose fingerprints B holds, beside B's line of the same fingerprint.
+std::vector<SharedLine> sharedLines(const SimilarityFile& fa, const std::vector<Print>& pa, const std::vector<Print>& pb,
+                                    const std::unordered_set<std::uint64_t>& evidence) {
+    std::unordered_map<std::uint64_t, int> lineInB;
+    for (const Print& p : pb) lineInB.emplace(p.hash, p.line);
+    const std::vector<std::string> la = linesOf(fa.text);
+    std::vector<SharedLine> out;
+    std::set<int> seen;
+    for (const Print& p : pa) {
+        auto it = lineInB.find(p.hash);
+        if (it == lineInB.end() || !evidence.count(p.hash) || !seen.insert(p.line).second) continue;
+        std::string text = p.line >= 1 && std::size_t(p.line) <= la.size() ? trim(la[std::size_t(p.line) - 1]) : "";
+        if (text.size() > 160) text = text.substr(0, 160) + "...";
+        out.push_back({p.line, it->second, text});
+        if (out.size() >= kMaxLines) break;
+    }
+    return out;
+}
+
+std::vector<Found> clustersOfExercise(const std::string& exercise, std::vector<const SimilarityFile*> list,
+                                      const std::vector<SimilarityFile>& base) {
+    std::sort(list.begin(), list.end(),
+              [](const SimilarityFile* a, const SimilarityFile* b) { return a->student < b->student; });
+    std::unordered_set<std::uint64_t> basePrints;
+    std::set<std::string> baseNormal;
+    for (const SimilarityFile& s : base)
+        if (s.exercise == exercise) {
+            for (const Print& p : fingerprints(s.text)) basePrints.insert(p.hash);
+            baseNormal.insert(withoutCommentsOrSpacing(s.text));
+        }
+    // Identical files become one group: a class of 300 with one short file is one comparison.
+    std::map<std::string, std::size_t> groupOf;
+    std::vector<Group> groups;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const std::string n = withoutCommentsOrSpacing(list[k]->text);
+        if (n.empty() || baseNormal.count(n)) continue;  // the stub or the solution itself: no evidence
+        auto [it, fresh] = groupOf.emplace(n, groups.size());
+        if (fresh) {
+            groups.emplace_back();
+            for (const Print& p : fingerprints(list[k]->text))
+                if (!basePrints.count(p.hash)) groups.back().prints.push_back(p);
+        }
+        groups[it->second].members.push_back(k);
+    }
+    // Common code: fingerprints held by more than kCommonShare of the class's files (at
+    // least 4 files, so that a small class, or a test, still sees a copy shared by three).
+    const std::size_t common = std::max<std::size_t>(4, std::size_t(std::ceil(kCommonShare * double(list.size()))));
+    std::unordered_map<std::uint64_t, std::size_t> holders;
+    for (Group& g : groups) {
+        std::set<std::uint64_t> distinct;
+        for (const Print& p : g.prints) distinct.insert(p.hash);
+        g.evidence.assign(distinct.begin(), distinct.end());
+        for (std::uint64_t h : g.evidence) holders[h] += g.members.size();
+    }
+    std::unordered_set<std::uint64_t> evidence;
+    for (Group& g : groups) {
+        std::vector<std::uint64_t> kept;
+        for (std::uint64_t h : g.evidence)
+            if (holders[h] <= common) kept.push_back(h);
+        g.evidence = kept;
+        evidence.insert(kept.begin(), kept.end());
+    }
+    // Shared evidence between groups: every fingerprint's owners, pair by pair
+    // (each fingerprint has at most `common` owners, so this is bounded).
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> owners;
+    for (std::size_t k = 0; k < groups.size(); ++k)
+        for (std::uint64_t h : groups[k].evidence) owners[h].push_back(k);
+    std::unordered_map<std::uint64_t, std::size_t> shared;  // (i * groups + j) -> count
+    for (const auto& [hash, who] : owners)
+        for (std::size_t i = 0; i < who.size(); ++i)
+            for (std::size_t j = i + 1; j < who.size(); ++j) ++shared[std::uint64_t(who[i]) * groups.size() + who[j]];
+
+    UnionFind uf(groups.size());
+    std::vector<bool> inCluster(groups.size(), false);
+    // The strongest link of each component: (evidence, similarity, group a, group b).
+    struct Link {
+        std::size_t n = 0;
+        double share = 0;
+        std::size_t a = 0, b = 0;
+    };
+    std::vector<std::tuple<std::size_t, std::size_t, std::size_t, double>> links;  // a, b, n, share
+    for (const auto& [key, n] : shared) {
+        const std::size_t a = std::size_t(key / groups.size()), b = std::size_t(key % groups.size());
+        const std::size_t smaller = std::min(groups[a].evidence.size(), groups[b].evidence.size());
+        const double share = smaller ? double(n) / double(smaller) : 0.0;
+        if (n >= kMinShared && share >= kMinSimilarity) links.emplace_back(a, b, n, share);
+    }
+    std::sort(links.begin(), links.end());  // the same bytes from the same class, whatever the hash order
+    for (const auto& [a, b, n, share] : links) {
+        uf.join(a, b);
+        inCluster[a] = inCluster[b] = true;
+    }
+    for (std::size_t k = 0; k < groups.size(); ++k)
+        if (groups[k].members.size() >= 2 && groups[k].evidence.size() >= kMinShared) inCluster[k] = true;
+
+    std::map<std::size_t, Link> best;  // root -> strongest link
+    std::map<std::size_t, std::vector<std::size_t>> parts;
+    for (std::size_t k = 0; k < groups.size(); ++k)
+        if (inCluster[k]) parts[uf.find(k)].push_back(k);
+    for (const auto& [a, b, n, share] : links) {
+        Link& l = best[uf.find(a)];
+        if (n > l.n || (n == l.n && share > l.share)) l = {n, share, a, b};
+    }
+    std::vector<Found> out;
+    for (const auto& [root, members] : parts) {
+        Found f;
+        f.exercise = exercise;
+        for (std::size_t g : members)
+            for (std::size_t k : groups[g].members) f.students.insert(list[k]->student);
+        if (f.students.size() < 2) continue;
+        f.identical = members.size() == 1;
+        std::size_t ga, gb;
+        const SimilarityFile *fa, *fb;
+        if (f.identical) {
+            ga = gb = members[0];
+            fa = list[groups[ga].members[0]];
+            fb = list[groups[ga].members[1]];
+            f.evidence = groups[ga].evidence.size();
+            f.similarity = 1.0;
+        } else {
+            const Link& l = best[root];
+            ga = l.a;
+            gb = l.b;
+            fa = list[groups[ga].members[0]];
+            fb = list[groups[gb].members[0]];
+            f.evidence = l.n;
+            f.similarity = std::round(l.share * 1000.0) / 1000.0;
+        }
+        f.a = fa->student;
+        f.b = fb->student;
+        for (const auto& [la, lb, n, share] : links)
+            if (uf.find(la) == root) {
+                std::string x = list[groups[la].members[0]]->student, y = list[groups[lb].members[0]]->student;
+                if (y < x) std::swap(x, y);
+                f.pairs.push_back({exercise, x, y, n, std::round(share * 1000.0) / 1000.0});
+            }
+        std::stable_sort(f.pairs.begin(), f.pairs.end(), [](const SimilarPair& p, const SimilarPair& q) {
+            return p.evidence != q.evidence ? p.evidence > q.evidence : std::tie(p.a, p.b) < std::tie(q.a, q.b);
+        });
+        if (f.pairs.size() > kMaxClusterPairs) f.pairs.resize(kMaxClusterPairs);
+        f.lines = sharedLines(*fa, groups[ga].prints, groups[gb].prints, evidence);
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string withoutCommentsOrSpacing(const std::string& text) {
     std::string out;
-    for (const Tok& t : tokens(text)) out += (out.empty() ? "" : " ") + t.text;
+    for (const Tok& t : tokens(text, false)) out += (out.empty() ? "" : " ") + t.raw;
     // Directives count too: the same code with another #define is not the same file.
     for (const std::string& l : linesOf(text)) {
         const std::string t = trim(l);
@@ -144,106 +388,82 @@ std::string withoutCommentsOrSpacing(const std::string& text) {
     return out;
 }
 
-std::vector<SimilarPair> findSimilarSubmissions(const std::vector<SimilarityFile>& files,
-                                                const std::vector<SimilarityFile>& stubs) {
-    std::map<std::string, std::vector<const SimilarityFile*>> byExercise;
-    for (const SimilarityFile& f : files) byExercise[f.exercise].push_back(&f);
-    std::vector<SimilarPair> pairs;
-    for (auto& [exercise, list] : byExercise) {
-        std::unordered_set<std::uint64_t> stubPrints;
-        std::string stubNormal;
-        for (const SimilarityFile& s : stubs)
-            if (s.exercise == exercise) {
-                for (const Print& p : winnow(tokens(s.text))) stubPrints.insert(p.hash);
-                stubNormal = withoutCommentsOrSpacing(s.text);
-            }
-        std::sort(list.begin(), list.end(),
-                  [](const SimilarityFile* a, const SimilarityFile* b) { return a->student < b->student; });
-        // Identical after normalisation (the stub itself is no evidence).
-        std::map<std::string, std::vector<std::size_t>> same;
-        std::vector<std::vector<Print>> prints(list.size());
-        std::unordered_map<std::uint64_t, std::vector<std::size_t>> owners;
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const std::string n = withoutCommentsOrSpacing(list[k]->text);
-            if (!n.empty() && n != stubNormal) same[n].push_back(k);
-            for (const Print& p : winnow(tokens(list[k]->text)))
-                if (!stubPrints.count(p.hash)) prints[k].push_back(p);
-            std::set<std::uint64_t> seen;
-            for (const Print& p : prints[k])
-                if (seen.insert(p.hash).second) owners[p.hash].push_back(k);
-        }
-        std::set<std::pair<std::size_t, std::size_t>> identical;
-        for (const auto& [text, who] : same)
-            for (std::size_t i = 0; i < who.size(); ++i)
-                for (std::size_t j = i + 1; j < who.size(); ++j) identical.insert({who[i], who[j]});
-        // At least 4 owners, so that a small class (or a test) still sees a copy shared by three.
-        const std::size_t common = std::max<std::size_t>(4, std::size_t(std::ceil(kCommonShare * double(list.size()))));
-        std::map<std::pair<std::size_t, std::size_t>, std::size_t> shared;
-        for (const auto& [hash, who] : owners) {
-            if (who.size() > common) continue;
-            for (std::size_t i = 0; i < who.size(); ++i)
-                for (std::size_t j = i + 1; j < who.size(); ++j) ++shared[{who[i], who[j]}];
-        }
-        auto distinct = [&](std::size_t k) {
-            std::set<std::uint64_t> s;
-            for (const Print& p : prints[k]) s.insert(p.hash);
-            return s.size();
-        };
-        std::set<std::pair<std::size_t, std::size_t>> chosen = identical;
-        std::map<std::pair<std::size_t, std::size_t>, double> score;
-        for (const auto& [pair, n] : shared) {
-            const std::size_t smaller = std::min(distinct(pair.first), distinct(pair.second));
-            const double s = smaller ? double(n) / double(smaller) : 0.0;
-            score[pair] = s;
-            if (n >= kMinShared && s >= kMinSimilarity) chosen.insert(pair);
-        }
-        for (const auto& pair : chosen) {
-            SimilarPair out;
-            out.exercise = exercise;
-            out.a = list[pair.first]->student;
-            out.b = list[pair.second]->student;
-            out.identical = identical.count(pair) > 0;
-            out.similarity = out.identical ? 1.0 : std::round(score[pair] * 1000.0) / 1000.0;
-            // Shared lines: the lines of A and B with the same trimmed text that are not the stub's.
-            std::set<std::string> stubLines;
-            for (const SimilarityFile& s : stubs)
-                if (s.exercise == exercise)
-                    for (const std::string& l : linesOf(s.text)) stubLines.insert(trim(l));
-            const std::vector<std::string> la = linesOf(list[pair.first]->text), lb = linesOf(list[pair.second]->text);
-            std::multimap<std::string, int> inB;
-            for (std::size_t k = 0; k < lb.size(); ++k) inB.insert({trim(lb[k]), int(k) + 1});
-            for (std::size_t k = 0; k < la.size() && out.lines.size() < 40; ++k) {
-                const std::string t = trim(la[k]);
-                if (t.size() < 4 || stubLines.count(t) || t.rfind("//", 0) == 0) continue;
-                auto it = inB.find(t);
-                if (it == inB.end()) continue;
-                out.lines.push_back({int(k) + 1, it->second, t});
-                inB.erase(it);
-            }
-            pairs.push_back(out);
-        }
-    }
-    std::stable_sort(pairs.begin(), pairs.end(), [](const SimilarPair& x, const SimilarPair& y) {
-        if (x.exercise != y.exercise) return x.exercise < y.exercise;
-        if (x.identical != y.identical) return x.identical;
-        return x.similarity > y.similarity;
-    });
-    return pairs;
+std::string normalisedTokens(const std::string& text) {
+    std::string out;
+    for (const Tok& t : tokens(text, true)) out += (out.empty() ? "" : " ") + t.text;
+    return out;
 }
 
-nlohmann::json toJson(const std::vector<SimilarPair>& pairs) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const SimilarPair& p : pairs) {
+SimilarityReport findSimilarSubmissions(const std::vector<SimilarityFile>& files,
+                                        const std::vector<SimilarityFile>& base, std::size_t limit) {
+    std::map<std::string, std::vector<const SimilarityFile*>> byExercise;
+    for (const SimilarityFile& f : files) byExercise[f.exercise].push_back(&f);
+    // One entry per set of students: the exercises where they share code, together.
+    std::map<std::set<std::string>, SimilarCluster> bySet;
+    std::map<std::set<std::string>, std::size_t> strongest;  // the evidence of the entry's example
+    for (const auto& [exercise, list] : byExercise)
+        for (Found& f : clustersOfExercise(exercise, list, base)) {
+            auto [it, fresh] = bySet.emplace(f.students, SimilarCluster{});
+            SimilarCluster& c = it->second;
+            if (fresh) {
+                c.students.assign(f.students.begin(), f.students.end());
+                c.studentCount = c.students.size();
+                if (c.students.size() > kMaxClusterStudents) c.students.resize(kMaxClusterStudents);
+                c.identical = true;
+            }
+            c.exercises.push_back(exercise);
+            for (const SimilarPair& p : f.pairs)
+                if (c.pairs.size() < kMaxClusterPairs) c.pairs.push_back(p);
+            c.identical = c.identical && f.identical;
+            c.evidence += f.evidence;
+            c.similarity = std::max(c.similarity, f.similarity);
+            if (fresh || f.evidence > strongest[f.students]) {
+                strongest[f.students] = f.evidence;
+                c.exercise = f.exercise;
+                c.a = f.a;
+                c.b = f.b;
+                c.lines = std::move(f.lines);
+            }
+        }
+    SimilarityReport report;
+    report.filesCompared = files.size();
+    for (auto& [set, c] : bySet) report.clusters.push_back(std::move(c));
+    std::stable_sort(report.clusters.begin(), report.clusters.end(), [](const SimilarCluster& x, const SimilarCluster& y) {
+        if (x.evidence != y.evidence) return x.evidence > y.evidence;
+        if (x.similarity != y.similarity) return x.similarity > y.similarity;
+        return x.students < y.students;
+    });
+    report.clustersFound = report.clusters.size();
+    if (report.clusters.size() > limit) report.clusters.resize(limit);
+    return report;
+}
+
+nlohmann::json toJson(const SimilarityReport& report) {
+    nlohmann::json clusters = nlohmann::json::array();
+    for (const SimilarCluster& c : report.clusters) {
         nlohmann::json lines = nlohmann::json::array();
-        for (const SharedLine& l : p.lines) lines.push_back({{"line_a", l.lineA}, {"line_b", l.lineB}, {"text", l.text}});
-        out.push_back({{"exercise", p.exercise},
-                       {"a", p.a},
-                       {"b", p.b},
-                       {"kind", p.identical ? "identical" : "similar"},
-                       {"similarity", p.similarity},
-                       {"shared_lines", lines}});
+        for (const SharedLine& l : c.lines) lines.push_back({{"line_a", l.lineA}, {"line_b", l.lineB}, {"text", l.text}});
+        nlohmann::json pairs = nlohmann::json::array();
+        for (const SimilarPair& p : c.pairs)
+            pairs.push_back({{"exercise", p.exercise}, {"a", p.a}, {"b", p.b}, {"evidence", p.evidence},
+                             {"similarity", p.similarity}});
+        clusters.push_back({{"students", c.students},
+                            {"pairs", pairs},
+                            {"student_count", c.studentCount},
+                            {"exercises", c.exercises},
+                            {"kind", c.identical ? "identical" : "similar"},
+                            {"evidence", c.evidence},
+                            {"similarity", c.similarity},
+                            {"example", {{"exercise", c.exercise}, {"a", c.a}, {"b", c.b}, {"shared_lines", lines}}}});
     }
-    return out;
+    return {{"clusters", clusters},
+            {"clusters_found", report.clustersFound},
+            {"clusters_listed", report.clusters.size()},
+            {"files_compared", report.filesCompared},
+            {"rule",
+             "fingerprints of the stub and the solution, and those held by more than 20% of the class's files of an "
+             "exercise (at least 4), are base code; files joined from 8 shared fingerprints and half of the smaller "
+             "file's; identifiers normalised, functions compared in any order"}};
 }
 
 }  // namespace rl

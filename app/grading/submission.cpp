@@ -5,7 +5,7 @@
 #include "core/file_handle.h"
 #include "grading/atomic_file.h"
 #include "grading/entry_name.h"
-#include "grading/legacy_text.h"
+#include "core/legacy_text.h"
 #include "grading/roster.h"
 #include "grading/safe_unzip.h"
 #include "shader/source_assembler.h"
@@ -27,9 +27,6 @@ namespace fs = std::filesystem;
 namespace rl {
 
 namespace {
-
-// Names the grader writes beside the students' folders in OUT.
-const std::set<std::string> kReservedIds = {"grades.csv", "index.html", "summary.json", "rubric.json", "_reference"};
 
 // Limits on what is copied from one submission: far above a real one.
 // Entries looked at in full (any shader file, for #include); past this only
@@ -294,6 +291,7 @@ public:
     std::vector<std::string> notes;
     std::string firstZipProblem;          // a zip that was refused, for when nothing else is found
     std::string overLimit;                // more than kMaxListedEntries: the submission is refused with this
+    std::size_t unlooked = 0;             // files past kMaxWalkedEntries not named as exercises: ignored, counted
 
     void folder(const fs::path& dir, const std::string& prefix, int zipDepth) {
         std::error_code ec;
@@ -321,7 +319,9 @@ public:
                 fs::file_status st = it->symlink_status(ec);
                 if (fs::is_directory(st) && (isSkippedFolder(name) || it.depth() + 1 >= kMaxWalkDepth))
                     it.disable_recursion_pending();
-                else if (!fs::is_directory(st) && exerciseNamed(name, exact))
+                else if (!fs::is_directory(st) && !exerciseNamed(name, exact))
+                    ++unlooked;
+                else if (!fs::is_directory(st))
                     items.push_back({fs::is_symlink(st) ? Item::Type::Link : fs::is_regular_file(st) ? Item::Type::File
                                                                                                      : Item::Type::Other,
                                      prefix + p.lexically_relative(dir).generic_string(), p,
@@ -639,10 +639,15 @@ void stageItems(const std::vector<Item>& items, const Collector& found, const fs
         copiedBytes += e.size;
     }
     if (!refusedOther.empty()) out.notes.push_back("refused: " + listSome(refusedOther));
-    if (!ignored.empty())
-        out.notes.push_back("ignored " + std::to_string(ignored.size()) + " file" + (ignored.size() == 1 ? "" : "s") +
-                            " that " + (ignored.size() == 1 ? "is" : "are") + " not part of the exercises: " +
-                            listSome(ignored));
+    // Every file that was not graded, those past the first 5,000 (counted, not listed) too.
+    const std::size_t ignoredAll = ignored.size() + found.unlooked;
+    if (ignoredAll)
+        out.notes.push_back("ignored " + std::to_string(ignoredAll) + " file" + (ignoredAll == 1 ? "" : "s") +
+                            " that " + (ignoredAll == 1 ? "is" : "are") + " not part of the exercises: " +
+                            listSome(std::vector<std::string>(ignored.begin(), ignored.begin() + std::ptrdiff_t(std::min<std::size_t>(5, ignored.size())))) +
+                            (ignoredAll > std::min<std::size_t>(5, ignored.size())
+                                 ? " and " + std::to_string(ignoredAll - std::min<std::size_t>(5, ignored.size())) + " more"
+                                 : ""));
 }
 
 }  // namespace
@@ -662,17 +667,18 @@ SubmissionList listSubmissions(const fs::path& dir) {
     for (const fs::directory_entry& entry : entries) {
         const std::string name = entry.path().filename().string();
         const std::string shown = safeEntryId(name);  // what JSON, HTML, CSV and the terminal get
-        if (isHidden(name)) {
+        LmsDownloadName lms = parseLmsDownloadName(name);
+        // A Moodle folder is named after the student's full name, which may begin with '.': graded.
+        if (isHidden(name) && lms.kind != LmsDownloadName::Kind::Moodle) {
             list.ignored.push_back(shown + " (hidden)");
             continue;
         }
         fs::file_status st = entry.symlink_status(ec);
-        LmsDownloadName lms = parseLmsDownloadName(name);
         // Canvas gives files only; a folder "lab_1_2_final" is a student's folder, not a download.
         const bool lmsPart = (lms.kind == LmsDownloadName::Kind::Canvas && fs::is_regular_file(st)) ||
                              (lms.kind == LmsDownloadName::Kind::Moodle && (fs::is_directory(st) || fs::is_regular_file(st)));
         if (lmsPart) {
-            SubmissionEntry& g = groups[safeEntryId(lms.student)];
+            SubmissionEntry& g = groups[graderSafeId(safeEntryId(lms.student))];
             if (g.parts.empty()) {
                 g.kind = SubmissionEntry::Kind::Group;
                 g.path = entry.path();
@@ -697,11 +703,8 @@ SubmissionList listSubmissions(const fs::path& dir) {
         s.id = safeEntryId(s.kind != SubmissionEntry::Kind::Folder && endsWithZip(name) ? name.substr(0, name.size() - 4)
                                                                                          : name);
         if (taken.count(s.id)) s.id = shown;  // "alice" and "alice.zip": both graded, apart
-        if (kReservedIds.count(s.id) || s.id == "." || s.id == "..") {
-            list.ignored.push_back(shown + " (its name is one of the grader's own outputs: rename it)");
-            continue;
-        }
-        for (int k = 2; taken.count(s.id); ++k) s.id = shown + "-" + std::to_string(k);  // an escaped id met a real one
+        s.id = graderSafeId(s.id);             // a folder named "grades.csv": graded as "student-grades.csv"
+        for (int k = 2; taken.count(s.id); ++k) s.id = graderSafeId(shown) + "-" + std::to_string(k);  // an escaped id met a real one
         taken.insert(s.id);
         list.students.push_back(s);
     }

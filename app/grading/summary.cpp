@@ -10,6 +10,11 @@ namespace rl {
 
 using nlohmann::json;
 
+namespace {
+// Names listed in summary.json (and the report) per list; the counts are whole.
+constexpr std::size_t kListedEntries = 100;
+}  // namespace
+
 json classMistakes(const Rubric& rubric, const std::vector<StudentGrade>& grades) {
     json all = json::array();
     // Most students first, then by text, so that the same class gives the same bytes.
@@ -44,6 +49,26 @@ json classMistakes(const Rubric& rubric, const std::vector<StudentGrade>& grades
                        {"failed_probe_groups", sorted(probes, "probe_group")}});
     }
     return all;
+}
+
+std::string reasonOf(const std::string& entry) {
+    // "name (reason)": the reason is the last parenthesis; a name may hold parentheses too.
+    const std::size_t open = entry.rfind(" (");
+    if (open == std::string::npos || entry.empty() || entry.back() != ')') return "other";
+    return entry.substr(open + 2, entry.size() - open - 3);
+}
+
+json byReason(const std::vector<std::string>& entries) {
+    std::map<std::string, int> counts;
+    for (const std::string& e : entries) ++counts[reasonOf(e)];
+    json out = json::array();
+    for (const auto& [reason, n] : counts) out.push_back({{"reason", reason}, {"count", n}});
+    return out;
+}
+
+json firstFew(const std::vector<std::string>& entries) {
+    std::vector<std::string> some(entries.begin(), entries.begin() + std::ptrdiff_t(std::min<std::size_t>(entries.size(), kListedEntries)));
+    return some;
 }
 
 json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades, const RunInfo& info) {
@@ -86,13 +111,16 @@ json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades,
     j["timeout_seconds"] = info.timeoutSeconds;
     j["shard"] = {{"index", info.shardIndex}, {"count", info.shardCount}};
     j["submissions_total"] = info.submissionsTotal;
-    j["ignored_entries"] = info.ignored;
-    j["roster_without_submission"] = info.rosterWithoutSubmission;
-    j["submissions_without_roster_student"] = info.unmatchedSubmissions;
+    // Bounded: 10,000 junk files beside the students are counts by reason and the first few names.
+    j["ignored_count"] = info.ignored.size();
+    j["ignored_by_reason"] = byReason(info.ignored);
+    j["ignored_entries"] = firstFew(info.ignored);
+    j["roster_without_submission"] = firstFew(info.rosterWithoutSubmission);
+    j["roster_without_submission_count"] = info.rosterWithoutSubmission.size();
+    j["submissions_without_roster_student"] = firstFew(info.unmatchedSubmissions);
+    j["submissions_without_roster_student_count"] = info.unmatchedSubmissions.size();
     j["class_mistakes"] = classMistakes(rubric, grades);
-    json ids = json::array();
-    for (const StudentGrade& g : grades) ids.push_back(g.id);
-    j["student_ids"] = ids;
+    j["students_file"] = "students.txt";
     return j;
 }
 

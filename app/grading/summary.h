@@ -1,5 +1,8 @@
 // OUT/summary.json: what a run found, in numbers, for the instructor and
 // for scripts (counts of exercise outcomes, students at full marks, time).
+// Bounded for any class: the students' ids are in OUT/students.txt, their
+// records in OUT/<id>/, and every list here is cut to its first 100 with
+// the whole count beside it.
 #pragma once
 
 #include "grading/rubric.h"
@@ -28,6 +31,11 @@ struct RunInfo {
 // mistake the checker recognised (its hint) and failed each probe group,
 // most students first (summary.json's "class_mistakes", the report's table).
 nlohmann::json classMistakes(const Rubric& rubric, const std::vector<StudentGrade>& grades);
+
+// "name (reason)" -> "reason", for the Not-graded counts.
+std::string reasonOf(const std::string& ignoredEntry);
+nlohmann::json byReason(const std::vector<std::string>& ignoredEntries);
+nlohmann::json firstFew(const std::vector<std::string>& entries);
 
 nlohmann::json gradeSummary(const Rubric& rubric, const std::vector<StudentGrade>& grades, const RunInfo& info);
 

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <set>
+#include <sstream>
 #include <cmath>
 #include <cstdlib>
 
@@ -520,6 +521,11 @@ TEST_F(Fuzz, ShaderFolders) {
 // Issue 22: entries of SUBMISSIONS named with any bytes (0xFF, escapes, Canvas
 // and Moodle shapes, Unicode): the run never stops, every entry is a student
 // or an ignored entry with its reason, and summary.json is valid JSON.
+// Issue 36: names of up to 248 bytes that escape to three times as many, the
+// grader's own output names (grades-moodle.csv, students.txt, ...), bidi
+// controls (U+202E) and raw ESC and BEL bytes, Moodle folders starting with
+// '.': every student gets a folder of a bounded name, and no raw control or
+// bidi character reaches index.html or summary.json.
 TEST_F(Fuzz, SubmissionNames) {
     Budget budget(settings_, 12);
     const std::string stub = readFile(sourceRoot() / "exercises" / "01-camera.glsl");
@@ -532,14 +538,33 @@ TEST_F(Fuzz, SubmissionNames) {
         const std::size_t entries = 1 + rng.below(4);
         for (std::size_t k = 0; k < entries; ++k) {
             std::string name;
-            for (std::size_t n = 1 + rng.below(12); name.size() < n;) {
-                const char c = char(1 + rng.below(255));
-                if (c != '/') name += c;
+            static const char* const kOutputs[] = {"grades.csv",       "grades-moodle.csv", "grades-canvas.csv",
+                                                   "summary.json",     "students.txt",      "index.html",
+                                                   "_reference",       "rubric.json",       "x.merging",
+                                                   "grades-moodle.report.txt"};
+            switch (rng.below(5)) {
+                case 0:  // long: 0xE9 escapes to "%E9", three bytes each
+                    name = std::string(60 + rng.below(160), rng.below(2) ? '\xe9' : 'a');  // + a suffix: within 255
+                    break;
+                case 1: name = kOutputs[rng.below(10)]; break;
+                case 2: {  // bidi and terminal controls amid text
+                    static const char* const kControls[] = {"\xe2\x80\xae", "\x1b[31m", "\x07", "\xe2\x81\xa6", "\r"};
+                    name = "ab" + std::string(kControls[rng.below(5)]) + "gnp.exe" + std::to_string(k);
+                    break;
+                }
+                default:
+                    for (std::size_t n = 1 + rng.below(12); name.size() < n;) {
+                        const char c = char(1 + rng.below(255));
+                        if (c != '/') name += c;
+                    }
             }
-            if (name == "." || name == ".." || name[0] == '.') name = "x" + name;
-            switch (rng.below(4)) {
+            const bool moodle = rng.below(4) == 1;
+            if (name == "." || name == ".." || (name[0] == '.' && !moodle)) name = "x" + name;
+            switch (moodle ? 1 : rng.below(4) == 1 ? 3 : rng.below(4)) {
                 case 0: name += "_" + std::to_string(1000 + k) + "_7002" + std::to_string(k) + "_01-camera.glsl"; break;
-                case 1: name += "_" + std::to_string(4000 + k) + "_assignsubmission_file_"; break;
+                case 1:  // Moodle's folder, its full name first (may start with '.': graded, not hidden)
+                    name = (rng.below(3) == 0 ? "." : "") + name + "_" + std::to_string(4000 + k) + "_assignsubmission_file_";
+                    break;
                 case 2: name += ".zip"; break;
                 default: break;
             }
@@ -567,10 +592,29 @@ TEST_F(Fuzz, SubmissionNames) {
         }
         // Every entry is a student (Canvas parts of one student count once) or ignored with its reason
         // ("folder/.keep" is hidden: one more ignored).
-        const std::size_t listed = j.value("student_ids", nlohmann::json::array()).size() +
-                                   j.value("ignored_entries", nlohmann::json::array()).size();
+        const std::size_t listed = j.value("students", std::size_t(0)) + j.value("ignored_count", std::size_t(0));
         EXPECT_GE(listed, 2u) << "seed " << run.seed;
         EXPECT_LE(listed, names.size() + 1) << "seed " << run.seed;
+        EXPECT_TRUE(j.value("students_not_written", nlohmann::json::array()).empty()) << "seed " << run.seed << ": " << j.dump();
+        // Every student has its folder, under a bounded name; the ids list is the students' count.
+        std::size_t ids = 0;
+        std::istringstream list(readFile(box.dir() / "graded" / "students.txt"));
+        for (std::string id; std::getline(list, id); ++ids) {
+            EXPECT_LE(id.size(), 120u) << "seed " << run.seed;
+            EXPECT_TRUE(fs::is_regular_file(box.dir() / "graded" / id / "grade.json")) << "seed " << run.seed << ": " << id;
+        }
+        EXPECT_EQ(ids, j.value("students", std::size_t(0))) << "seed " << run.seed;
+        // What a browser or a terminal shows: no raw control character (but newline and tab), no bidi control.
+        for (const char* file : {"index.html", "summary.json", "grades.csv"}) {
+            const std::string text = readFile(box.dir() / "graded" / file);
+            for (char c : text)
+                if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r') || c == 0x7f) {
+                    ADD_FAILURE() << "seed " << run.seed << ": " << file << " holds the raw byte " << int(c);
+                    break;
+                }
+            EXPECT_EQ(text.find("\xe2\x80\xae"), std::string::npos) << "seed " << run.seed << ": U+202E in " << file;
+            EXPECT_EQ(text.find("\xe2\x81\xa6"), std::string::npos) << "seed " << run.seed << ": U+2066 in " << file;
+        }
         if (HasFailure()) box.keep("submission names, seed " + std::to_string(run.seed));
     }
     budget.report("submission names");

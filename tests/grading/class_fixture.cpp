@@ -6,6 +6,8 @@
 
 #include <zip.h>
 
+#include <regex>
+#include <sstream>
 #include <stdexcept>
 #include <sys/stat.h>
 
@@ -97,6 +99,117 @@ std::string compileErrorGgx() {
     std::string text = readText(solutionsDir() / "05-ggx.glsl");
     auto second = text.find('\n', text.find('\n') + 1);
     return text.insert(second + 1, "float broken() { return 1.0 + ; }\n");
+}
+
+namespace {
+
+// The top-level functions of a GLSL file (a function runs from its header line to the
+// line of its closing brace at column 0), and what lies before the first.
+std::vector<std::string> functionsOf(const std::string& text, std::string& before) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    std::string line, current;
+    bool inside = false;
+    for (; std::getline(in, line);) {
+        if (!inside && !line.empty() && line.find('(') != std::string::npos && line.back() == '{') inside = true;
+        if (inside) {
+            current += line + "\n";
+            if (line == "}") {
+                out.push_back(current);
+                current.clear();
+                inside = false;
+            }
+        } else if (out.empty()) {
+            before += line + "\n";
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string ownCookTorrance(int author) {
+    const std::string solution = readText(solutionsDir() / "08-cook-torrance.glsl");
+    const std::string a = "k" + std::to_string(author);
+    // Three helpers and a specular lobe of the student's own; statements differ with the author.
+    const std::string helpers =
+        "float " + a + "Dot01(vec3 first, vec3 second) {\n"
+        "    float d = dot(first, second);\n" +
+        (author % 3 == 0   ? "    if (d < 0.0) return 0.0;\n    if (d > 1.0) return 1.0;\n    return d;\n"
+         : author % 3 == 1 ? "    d = d < 0.0 ? 0.0 : d;\n    d = d > 1.0 ? 1.0 : d;\n    return d;\n"
+                           : "    return min(max(d, 0.0), 1.0);\n") +
+        "}\n\n"
+        "vec3 " + a + "Halfway(vec3 toLight, vec3 toEye) {\n"
+        "    vec3 sum = toLight + toEye;\n" +
+        (author % 3 == 0 ? "    return normalize(sum);\n" : author % 3 == 1 ? "    float len = length(sum);\n    return sum / len;\n"
+                                                              : "    return sum * inversesqrt(dot(sum, sum));\n") +
+        "}\n\n"
+        "float " + a + "Denominator(float lightCos, float viewCos) {\n" +
+        (author % 3 == 0   ? "    float both = lightCos * viewCos;\n    return both * 4.0;\n"
+         : author % 3 == 1 ? "    return 4.0 * lightCos * viewCos;\n"
+                           : "    float four = 4.0;\n    four *= viewCos;\n    return four * lightCos;\n") +
+        "}\n\n";
+    std::string body;
+    if (author % 3 == 0)
+        body = "    float lightCos = " + a + "Dot01(n, l);\n"
+               "    if (lightCos <= 0.0) return vec3(0.0);\n"
+               "    float viewCos = max(" + a + "Dot01(n, v), 1e-4);\n"
+               "    vec3 hv = " + a + "Halfway(l, v);\n"
+               "    float dist = D_GGX(n, hv, ggxAlpha(m.roughness));\n"
+               "    float geo = G_SchlickGGX(viewCos, lightCos, m.roughness);\n"
+               "    vec3 fres = F_Schlick(baseReflectance(m), dot(hv, v));\n"
+               "    return dist * geo * fres / " + a + "Denominator(lightCos, viewCos);\n";
+    else if (author % 3 == 1)
+        body = "    vec3 hv = " + a + "Halfway(l, v);\n"
+               "    float viewCos = clamp(dot(n, v), 1e-4, 1.0);\n"
+               "    float lightCos = max(dot(n, l), 0.0);\n"
+               "    if (lightCos == 0.0) {\n        return vec3(0.0);\n    }\n"
+               "    vec3 fres = F_Schlick(baseReflectance(m), max(dot(v, hv), 0.0));\n"
+               "    float geo = G_SchlickGGX(viewCos, lightCos, m.roughness);\n"
+               "    float dist = D_GGX(n, hv, ggxAlpha(m.roughness));\n"
+               "    vec3 top = fres * (dist * geo);\n"
+               "    return top / " + a + "Denominator(lightCos, viewCos);\n";
+    else
+        body = "    float lightCos = " + a + "Dot01(n, l);\n"
+               "    float viewCos = max(" + a + "Dot01(n, v), 1e-4);\n"
+               "    vec3 result = vec3(0.0);\n"
+               "    if (lightCos > 0.0) {\n"
+               "        vec3 hv = " + a + "Halfway(l, v);\n"
+               "        float alpha = ggxAlpha(m.roughness);\n"
+               "        result = D_GGX(n, hv, alpha) * G_SchlickGGX(viewCos, lightCos, m.roughness) *\n"
+               "                 F_Schlick(baseReflectance(m), dot(hv, v)) / " + a + "Denominator(lightCos, viewCos);\n"
+               "    }\n"
+               "    return result;\n";
+    const std::string specular = "vec3 specularBRDF(vec3 n, vec3 v, vec3 l, Material m) {\n" + body + "}\n";
+    const std::size_t from = solution.find("// Specular lobe:");
+    const std::size_t to = solution.find("// Diffuse lobe:");
+    if (from == std::string::npos || to == std::string::npos) throw std::runtime_error("fixture: 08's lobes not found");
+    return solution.substr(0, from) + helpers + specular + "\n" + solution.substr(to);
+}
+
+std::string renamedCopy(const std::string& text, const std::string& prefix) {
+    // The student's own names: its helpers and locals (GLSL's and the course's names stay).
+    static const char* const kOwn[] = {"Dot01", "Halfway", "Denominator", "first", "second", "toLight", "toEye",
+                                       "sum", "len", "both", "lightCos", "viewCos", "hv", "dist", "geo", "fres", "top", "result", "alpha", "four"};
+    std::string out = text;
+    int k = 0;
+    for (const char* name : kOwn) {
+        const std::regex word(std::string("\\b(k[0-9]+)?") + name + "\\b");
+        out = std::regex_replace(out, word, prefix + std::to_string(k++));
+    }
+    return out;
+}
+
+std::string reorderedCopy(const std::string& text) {
+    std::string before;
+    std::vector<std::string> functions = functionsOf(text, before);
+    // GLSL needs a function declared before its use: prototypes first, then the bodies in reverse.
+    std::string prototypes, bodies;
+    for (auto it = functions.rbegin(); it != functions.rend(); ++it) {
+        prototypes += it->substr(0, it->find(" {\n")) + ";\n";
+        bodies += *it + "\n";
+    }
+    return before + prototypes + "\n" + bodies;
 }
 
 }  // namespace rl::test

@@ -40,4 +40,14 @@ std::string nanLambert();
 // 05-ggx.glsl with a syntax error on line 3.
 std::string compileErrorGgx();
 
+// 08-cook-torrance.glsl as a student wrote it: the solution's specular lobe
+// rewritten with three helper functions of their own (correct: PASS).
+// `author` 0..N gives a differently written file each (other helpers, other
+// statements), as independent students would.
+std::string ownCookTorrance(int author = 0);
+// The same file with every identifier of the student's own renamed
+// (`prefix` + a number), and with its functions in reverse order.
+std::string renamedCopy(const std::string& text, const std::string& prefix);
+std::string reorderedCopy(const std::string& text);
+
 }  // namespace rl::test

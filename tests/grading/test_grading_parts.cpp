@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
@@ -303,6 +304,32 @@ TEST(Shards, StableAndSpread) {
     }
     EXPECT_EQ(seen.size(), 7u);
     EXPECT_EQ(shardOf("alice", 7), shardOf(std::string("ali") + "ce", 7));
+}
+
+// Issue 36: a student whose folder cannot be written stopped the class with
+// "cannot write" and no outputs. Now it is listed, keeps its row, and every
+// class file is written.
+TEST(ClassOutputs, AStudentThatCannotBeWrittenDoesNotStopTheClass) {
+    Scratch scratch{freshTempDir("unwritable")};
+    const fs::path out = scratch.dir / "out";
+    Rubric rubric = loadRubric(defaultRubricPath());
+    std::vector<StudentGrade> grades(3);
+    for (std::size_t k = 0; k < grades.size(); ++k) grades[k].id = std::string(1, char('a' + k));
+    fs::create_directories(out);
+    writeText(out / "b", "a file where b's folder would go");  // writing OUT/b/... fails: not a directory
+    RunInfo info;
+    info.submissionsTotal = 3;
+    std::vector<std::string> failed = writeClassOutputs(out, rubric, grades, gradeSummary(rubric, grades, info));
+    ASSERT_EQ(failed.size(), 1u);
+    EXPECT_TRUE(contains(failed[0], "b/")) << failed[0];
+    const nlohmann::json summary = nlohmann::json::parse(readText(out / "summary.json"));
+    EXPECT_EQ(summary.at("students_not_written").size(), 1u);
+    const std::string csv = readText(out / "grades.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv;
+    EXPECT_EQ(readText(out / "students.txt"), "a\nb\nc\n");
+    EXPECT_TRUE(fs::is_regular_file(out / "a" / "index.html"));
+    EXPECT_TRUE(fs::is_regular_file(out / "c" / "index.html"));
+    EXPECT_TRUE(contains(readText(out / "index.html"), "could not be written"));
 }
 
 TEST(Merge, RefusesMissingShardsDifferentRubricsAndTwiceGradedStudents) {

@@ -360,7 +360,7 @@ TEST(GradeExportCli, WritesTheFileAndListsWhatWasLeftOut) {
         ids.push_back(g.id);
     }
     writeText(out / "rubric.json", toJson(rubric).dump(2));
-    writeText(out / "summary.json", nlohmann::json{{"student_ids", ids}}.dump(2));
+    writeText(out / "students.txt", "jdoe\nzed\n");  // the export reads the ids there, never summary.json
     CommandResult r = runRaylab("grade export " + out.string() + " --format moodle --roster " +
                                 fixture("moodle-grades-export.csv").string() + " --assignment 'Ray tracer'");
     EXPECT_EQ(r.status, 3) << "a submission was left out: " << r.output;

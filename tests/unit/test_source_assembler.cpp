@@ -104,6 +104,22 @@ TEST_F(AssemblerTest, NonUtf8AndOversizedFilesAreRefused) {
     EXPECT_THROW(readSourceFile(root / "lib"), Error);
 }
 
+// Issue 36: one rule for every command. A Windows-1252 byte in a comment was
+// PASS in `grade`, COMPILE ERROR in `check` and refused by `render --ask`:
+// every reader of a shader file now reads it as Windows-1252 there, and
+// refuses it outside a comment.
+TEST_F(AssemblerTest, Windows1252InACommentIsReadAsItIsEverywhere) {
+    write("lib/cp.glsl", "// r\xe9sum\xe9\nfloat a; /* \x93quoted\x94 */\n");
+    EXPECT_EQ(readSourceFile(root / "lib/cp.glsl"), "// r\xc3\xa9sum\xc3\xa9\nfloat a; /* \xe2\x80\x9cquoted\xe2\x80\x9d */\n");
+    write("lib/code.glsl", "// r\xe9sum\xe9\nfloat r\xe9 = 1.0;\n");
+    try {
+        readSourceFile(root / "lib/code.glsl");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("code.glsl:2: file is not UTF-8 text"), std::string::npos) << e.what();
+    }
+}
+
 TEST_F(AssemblerTest, VersionLinesAreRejectedWithAHint) {
     write("lib/main.frag", "#version 450\n");
     try {

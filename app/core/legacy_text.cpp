@@ -1,4 +1,4 @@
-#include "grading/legacy_text.h"
+#include "core/legacy_text.h"
 
 namespace rl {
 
