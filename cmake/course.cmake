@@ -164,6 +164,26 @@ foreach(id IN LISTS RAYLAB_UNITS)
     string(APPEND source_lines "${unit}/probes.cpp ${symbol}\n")
     string(APPEND probe_decls "std::vector<ProbeSpec> unitProbes_${symbol}();\n")
     string(APPEND probe_cases "    if (id == \"${id}\") return unitProbes_${symbol}();\n")
+  elseif(EXISTS ${unit}/probes.json)
+    # A student edition: the probes as the instructor's build recorded them
+    # (checks/probe_data.h), compiled in; no probes.cpp, no reference.
+    course_depends(${unit}/probes.json)
+    file(READ ${unit}/probes.json record)
+    string(FIND "${record}" ")rl_probes\"" clash)
+    if(NOT clash EQUAL -1)
+      message(FATAL_ERROR "course/${id}/probes.json: holds the text )rl_probes\" that the build quotes it with")
+    endif()
+    # In pieces: a compiler may limit one string literal (MSVC: 16 KB); adjacent ones join.
+    string(LENGTH "${record}" record_length)
+    set(pieces "")
+    set(at 0)
+    while(at LESS record_length)
+      string(SUBSTRING "${record}" ${at} 8000 piece)
+      string(APPEND pieces "    R\"rl_probes(${piece})rl_probes\"\n")
+      math(EXPR at "${at} + 8000")
+    endwhile()
+    string(APPEND probe_decls "const char* const kRecordedProbes_${symbol} =\n${pieces};\n")
+    string(APPEND probe_cases "    if (id == \"${id}\") return probesFromRecord(kRecordedProbes_${symbol}, \"course/${id}/probes.json\");\n")
   endif()
   if(EXISTS ${unit}/reference.cpp)
     list(APPEND RAYLAB_UNIT_REFERENCE_SOURCES ${unit}/reference.cpp)
@@ -207,8 +227,9 @@ ${unit_entries}    };
 }  // namespace rl
 ")
 
-write_generated(course_probes.cpp "// Written by cmake/course.cmake from course/*/probes.cpp: do not edit.
+write_generated(course_probes.cpp "// Written by cmake/course.cmake from course/*/probes.cpp (or probes.json): do not edit.
 #include \"checks/probe_cases.h\"
+#include \"checks/probe_data.h\"
 
 namespace rl {
 

@@ -111,6 +111,17 @@ ExerciseReport reportFromJson(const json& j) {
 
 // ---- check scenes ------------------------------------------------------------------------
 
+std::filesystem::path checkReferenceFile(const std::string& scene, const char* extension) {
+    return sourceRoot() / "recorded" / "check-scenes" / (scene + extension);
+}
+
+Rendering recordedCheckReference(const std::string& scene) {
+    Rendering r;
+    r.radiance = readPfm(checkReferenceFile(scene, ".pfm").string());
+    r.display = readPng(checkReferenceFile(scene, ".png").string());
+    return r;
+}
+
 std::vector<CheckScene> makeCheckScenes() {
     auto sized = [](Scene s, int w, int h) {
         s.render.width = w;
@@ -133,7 +144,8 @@ std::vector<CheckScene> makeCheckScenes() {
         {"lecture-scaled-1e-3", scaledScene(lecture, 1e-3), {}},
         {"wide-srgb-4spp", wide, {}},
     };
-    for (CheckScene& c : list) c.reference = ref::renderCpu(c.scene);
+    for (CheckScene& c : list)
+        c.reference = ref::referenceInThisCopy() ? ref::renderCpu(c.scene) : recordedCheckReference(c.name);
     return list;
 }
 

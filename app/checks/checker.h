@@ -97,6 +97,12 @@ struct CheckScene {
     Rendering reference;
 };
 std::vector<CheckScene> makeCheckScenes();
+// Where a student edition keeps a check scene's reference rendering, recorded
+// by the instructor's build (`raylab course --record DIR`): recorded/check-scenes/NAME.pfm
+// (linear radiance) and .png (display), read when the reference is not in
+// this copy (ref::referenceInThisCopy()).
+std::filesystem::path checkReferenceFile(const std::string& scene, const char* extension);
+Rendering recordedCheckReference(const std::string& scene);
 
 // Checks one exercise (in a child process when options.isolate).
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
