@@ -134,6 +134,15 @@ for id in $exercises; do
     leave_out+=("course/$id/solution.glsl" "course/$id/mutants" "course/$id/alternatives")
 done
 for path in "${leave_out[@]}"; do rm -rf -- "${stage:?}/$path"; done
+# raytracer.glsl includes the model variants only for a scene that asks for
+# one; in their place, a line that says so to such a scene.
+cat >"$stage/shaders/model_variants.glsl" <<'GLSL'
+// model_variants.glsl: a student edition leaves the shading-model variants
+// out (their lobes are the model's, line for line; docs/instructor.md, "A
+// student edition"). Only a scene with a "model" other than the reference
+// includes this file.
+#error a scene "model" other than the reference is not in this copy: a student edition renders the reference model only
+GLSL
 
 # The README says what this copy is (after its first paragraph, the title).
 python3 "$here/scripts/edition-readme.py" "$stage/README.md" "$with_reference"
