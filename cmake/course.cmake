@@ -50,7 +50,20 @@ function(course_symbol file symbol)
     set_source_files_properties(${file} PROPERTIES COMPILE_DEFINITIONS RL_UNIT_SYMBOL=${symbol})
   endif()
 endfunction()
-course_depends(${course_dir}/manifest.txt)
+course_depends(${course_dir}/manifest.txt ${course_dir}/unit.schema.json)
+
+# ---- every course file against course/unit.schema.json and the rules of
+# cmake/validate_course.py: one line naming the file, line and field ----------------
+find_program(RAYLAB_PYTHON3 NAMES python3)
+if(NOT RAYLAB_PYTHON3)
+  message(FATAL_ERROR "python3 is missing: the build checks the course's files with it (scripts/setup.sh installs it)")
+endif()
+execute_process(COMMAND ${RAYLAB_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/validate_course.py ${course_dir}
+                RESULT_VARIABLE course_valid OUTPUT_VARIABLE course_problem ERROR_VARIABLE course_problem)
+if(NOT course_valid EQUAL 0)
+  string(STRIP "${course_problem}" course_problem)
+  message(FATAL_ERROR " ${course_problem}")  # indented: CMake leaves the line as it is, unwrapped
+endif()
 
 # ---- the manifest ------------------------------------------------------------------
 file(READ ${course_dir}/manifest.txt manifest_text)
