@@ -89,7 +89,7 @@ foreach(line IN LISTS manifest_lines)
   endif()
   if(NOT line MATCHES "^[0-9][0-9]-[a-z0-9-]+$")
     message(FATAL_ERROR "course/manifest.txt:${line_number}: \"${line}\" is no unit name (two digits, a dash, "
-                        "lower-case letters, digits and dashes, like 05-ggx, optionally followed by \"optional\")")
+                        "lower-case letters, digits and dashes, like NN-name, optionally followed by \"optional\")")
   endif()
   if(NOT EXISTS ${course_dir}/${line}/unit.json)
     message(FATAL_ERROR "course/manifest.txt:${line_number}: no unit ${line} (course/${line}/unit.json is missing)")

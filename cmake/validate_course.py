@@ -147,7 +147,7 @@ def check_manifest(course, units):
         unit = words[0]
         if not NAME.match(unit):
             raise Mistake('%s:%d: %s is no unit name (two digits, a dash, lower-case letters, digits and dashes, '
-                          'like 05-ggx)' % (where, number, shown(unit)))
+                          'like NN-name)' % (where, number, shown(unit)))
         if unit not in units:
             raise Mistake('%s:%d: no unit %s (course/%s/unit.json is missing)' % (where, number, unit, unit))
         if words[1:] and words[1:] != ['optional']:
@@ -176,7 +176,7 @@ def main():
                 continue
             if not NAME.match(entry):
                 raise Mistake('course/%s: a unit folder is named NN-name (two digits, a dash, lower-case letters, '
-                              'digits and dashes, like 05-ggx), not %s' % (entry, shown(entry)))
+                              'digits and dashes, like NN-name), not %s' % (entry, shown(entry)))
             for required in ('unit.json', 'stub.glsl'):
                 if not os.path.isfile(os.path.join(course, entry, required)):
                     raise Mistake('course/%s/%s is missing (every unit has one; docs/instructor.md, '

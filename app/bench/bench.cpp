@@ -47,20 +47,6 @@ namespace {
 
 bool wanted(const Options& o, const std::string& sweep) { return o.sweeps.empty() || o.sweeps.count(sweep) > 0; }
 
-// The numerical strategies: a naive version of one solution function, taken
-// from the mutants the checker must catch (tests/mutants/) or the naive
-// versions the hard-case tests compare against (tests/mutants/).
-struct Strategy {
-    const char* name;
-    const char* exerciseFile;
-    const char* path;  // relative to the source root
-};
-const Strategy kStrategies[] = {
-    {"strategy:textbook-intersect", "02-intersect.glsl", "course/02-intersect/mutants/textbook-quadratic.glsl"},
-    {"strategy:naive-D", "05-ggx.glsl", "course/05-ggx/mutants/textbook-denominator.glsl"},
-    {"strategy:fixed-offset", "04-shadows.glsl", "course/04-shadows/mutants/fixed-offset.glsl"},
-};
-
 struct ModelVariant {
     const char* name;
     ShadingModel model;
@@ -191,14 +177,21 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         }
     }
     if (wanted(options, "strategies")) {
-        for (const Strategy& st : kStrategies) {
-            Variant* v = add(st.name, "strategies", true, scene);
-            fs::path file = sourceRoot() / st.path;
-            if (fs::is_regular_file(file))
-                v->overrides[st.exerciseFile] = file;
-            else
-                v->skipReason = "strategy file " + std::string(st.path) + " not found";
-        }
+        // The numerical strategies: a naive version of one exercise's
+        // function, one of the mistakes its checker must catch, named by
+        // its unit ("bench_strategies" in unit.json).
+        for (const ExerciseInfo& e : allExercises())
+            for (const BenchStrategy& st : e.benchStrategies) {
+                Variant* v = add("strategy:" + st.name, "strategies", true, scene);
+                const fs::path file = sourceRoot() / e.unitDir() / st.mutant;
+                if (fs::is_regular_file(file))
+                    v->overrides[e.file()] = file;
+                else if (!hasSolutions())
+                    v->skipReason = "not in this copy: a student edition has no mutants (" + e.unitDir() + "/" +
+                                    st.mutant + ")";
+                else
+                    v->skipReason = "strategy file " + e.unitDir() + "/" + st.mutant + " not found";
+            }
     }
     if (wanted(options, "environment") && scene.environment) {
         // The GL picture's approximations of environment light, one setting

@@ -43,6 +43,13 @@ struct ExerciseFunction {
     bool geometry = false;
 };
 
+// A numerical strategy `raylab bench --sweeps strategies` times: one of the
+// unit's mutants in place of its solution ("bench_strategies" in unit.json).
+struct BenchStrategy {
+    std::string name;    // "naive-D": the bench row is "strategy:naive-D"
+    std::string mutant;  // "mutants/textbook-denominator.glsl", relative to the unit's folder
+};
+
 struct ExerciseInfo {
     int number;          // the two digits of its id: 5 for 05-ggx
     std::string id;      // "05-ggx": its unit folder course/05-ggx/, its file in exercises/ and solutions/
@@ -63,6 +70,7 @@ struct ExerciseInfo {
     // add nothing to the picture (RL_ENVIRONMENT); while the unit is
     // unfinished, only programs with it show the stripes. Empty: every program.
     std::string showsWith;
+    std::vector<BenchStrategy> benchStrategies;  // "bench_strategies"
     std::string file() const { return id + ".glsl"; }
     std::string unitDir() const { return "course/" + id; }  // relative to the repository's root
     std::string handout() const { return unitDir() + "/handout.md"; }
