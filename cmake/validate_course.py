@@ -198,10 +198,11 @@ def main():
                                   % (unit, k, f['name']))
         for unit, data in units.items():
             for k, f in enumerate(data['functions']):
-                for need in f.get('needs', []):
-                    if need not in owner:
-                        raise Mistake('course/%s/unit.json: functions[%d].needs: %s is no unit\'s function'
-                                      % (unit, k, need))
+                for field in ('needs', 'framework_calls'):
+                    for need in f.get(field, []):
+                        if need not in owner:
+                            raise Mistake('course/%s/unit.json: functions[%d].%s: %s is no unit\'s function'
+                                          % (unit, k, field, need))
             for s, strategy in enumerate(data.get('bench_strategies', [])):
                 if not os.path.isfile(os.path.join(course, unit, strategy['mutant'])) and \
                         os.path.isdir(os.path.join(course, unit, 'mutants')):

@@ -78,6 +78,9 @@ ExerciseInfo parseUnit(const UnitSource& source) {
         fn.probeCall = textOf(f["probe"], where + ": \"" + fn.name + "\" probe");
         if (f.contains("needs"))
             for (const json& n : f["needs"]) fn.needs.push_back(textOf(n, where + ": \"" + fn.name + "\" needs"));
+        if (f.contains("framework_calls"))
+            for (const json& n : f["framework_calls"])
+                fn.frameworkCalls.push_back(textOf(n, where + ": \"" + fn.name + "\" framework_calls"));
         fn.geometry = f.value("geometry", false);
         e.functions.push_back(std::move(fn));
     }

@@ -38,6 +38,10 @@ struct ExerciseFunction {
     // of them is ready too, so a finished 08 over an unfinished 05 gives
     // Lambert alone, not a wrong highlight.
     std::vector<std::string> needs;
+    // Functions of other units the framework calls on this one's behalf
+    // ("framework_calls"): the intersection behind a shadow ray or a bounce.
+    // The checker's hint names their units when they do not pass yet.
+    std::vector<std::string> frameworkCalls;
     // A function without which there is no geometry to see (the camera ray,
     // the intersection): the stripes then cover every pixel, not a frame.
     bool geometry = false;

@@ -11,7 +11,6 @@
 #include "reference/cpu_reference.h"
 #include "reference/pixel_breakdown.h"
 #include "reference/split_sum.h"
-#include "reference/unit_light.h"
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -48,10 +47,6 @@ glm::dvec3 Fd_Lambert(glm::dvec3) { absent("this value"); }
 glm::dvec3 specularBRDF(glm::dvec3, glm::dvec3, glm::dvec3, const Material&) { absent("this value"); }
 glm::dvec3 diffuseBRDF(glm::dvec3, glm::dvec3, glm::dvec3, const Material&) { absent("this value"); }
 glm::dvec3 cookTorranceBRDF(glm::dvec3, glm::dvec3, glm::dvec3, const Material&) { absent("this value"); }
-const std::vector<UnitLightTerm>& unitLightTerms() {
-    static const std::vector<UnitLightTerm> none;
-    return none;
-}
 
 // The split-sum table of the default settings (32 x 32 entries, 32^2 half
 // vectors each), as the instructor's build recorded it (`raylab course
