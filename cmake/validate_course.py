@@ -147,7 +147,7 @@ def check_manifest(course, units):
         unit = words[0]
         if not NAME.match(unit):
             raise Mistake('%s:%d: %s is no unit name (two digits, a dash, lower-case letters, digits and dashes, '
-                          'like NN-name)' % (where, number, shown(unit)))
+                          'like NN-name)' % (where, number, shown(' '.join(words))))
         if unit not in units:
             raise Mistake('%s:%d: no unit %s (course/%s/unit.json is missing)' % (where, number, unit, unit))
         if words[1:] and words[1:] != ['optional']:
@@ -157,7 +157,7 @@ def check_manifest(course, units):
             raise Mistake('%s:%d: %s is listed twice' % (where, number, unit))
         listed.add(unit)
     if not listed:
-        raise Mistake('%s: lists no unit' % where)
+        raise Mistake('%s lists no unit' % where)
 
 
 def main():

@@ -107,7 +107,7 @@ TEST(Hints, FailuresSpreadOverEveryKindOfInputNameNoGroup) {
         return d;
     }));
     EXPECT_FALSE(contains(o.hint, "aspect ratio")) << o.hint;
-    EXPECT_TRUE(contains(o.hint, " cases, some of every kind")) << o.hint;
+    EXPECT_TRUE(contains(o.hint, "of every kind: compare your formula")) << o.hint;
 }
 
 TEST(Hints, AGroupIsNamedOnlyWhenItsFailuresStandOut) {
