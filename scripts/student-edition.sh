@@ -34,8 +34,8 @@
 # The recording runs the instructor's program: $RAYLAB, else ./raylab (the
 # build of the working tree: build it from the commit you export).
 #
-# OUT_DIR must not exist or be an empty folder outside this repository, and
-# may be named anything (-R, -; put -- before a name that is also an
+# OUT_DIR must not exist or be an empty folder, outside this repository (or
+# in a folder of it that git ignores, such as build/), and may be named anything (-R, -; put -- before a name that is also an
 # option): anything else is refused with one line and exit status 1. The
 # edition is assembled in a new folder beside OUT_DIR and renamed into place
 # at the end; on any failure nothing else is touched, and only that
@@ -69,8 +69,12 @@ parent="$(dirname -- "$abs")"
 [ -w "$parent" ] || fail "$parent: not writable"
 parent_real="$(cd -- "$parent" && pwd -P)"
 here_real="$(cd -- "$here" && pwd -P)"
+# Inside the repository only in a folder git ignores (build/): elsewhere the
+# edition would be a second repository in the working tree.
 case "$parent_real/" in
-    "$here_real"/*) fail "$out: is inside the repository $here_real (the edition would be a second repository in its working tree); name a folder outside it" ;;
+    "$here_real"/*)
+        git -C "$here" check-ignore -q -- "$parent_real/$(basename -- "$abs")" ||
+            fail "$out: is inside the repository $here_real, in a folder git does not ignore (the edition would be a second repository in its working tree); name a folder outside it" ;;
 esac
 # git's own words when it refuses (a repository owned by another user:
 # "detected dubious ownership"), else the missing commit.

@@ -42,9 +42,9 @@ touch "$scratch/a-file"
 if out=$("$src/scripts/student-edition.sh" "$scratch/a-file" 2>&1); then fail "a file as OUT_DIR was accepted"; fi
 [[ "$out" == *"not a folder"* ]] && [ -f "$scratch/a-file" ] || fail "refusal: $out"
 [ -z "$(ls -A "$scratch" | grep '^\.student-edition-' || true)" ] || fail "a half-made folder was left beside OUT_DIR"
-if out=$(RAYLAB="$raylab" "$src/scripts/student-edition.sh" "$src/build/edition-inside" 2>&1); then fail "an OUT_DIR inside the repository was accepted"; fi
+if out=$(RAYLAB="$raylab" "$src/scripts/student-edition.sh" "$src/docs/edition-inside" 2>&1); then fail "an OUT_DIR inside the repository was accepted"; fi
 [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ "$out" == *"is inside the repository"* ]] || fail "refusal: $out"
-[ ! -e "$src/build/edition-inside" ] || fail "a folder was made inside the repository"
+[ ! -e "$src/docs/edition-inside" ] || fail "a folder was made inside the repository"
 
 step "odd folder names: -R (an empty folder), -"
 mkdir -p "$scratch/odd/-R"
