@@ -947,7 +947,7 @@ std::map<int, bool> exercisesCalled(const ExerciseInfo& exercise, const Implemen
         todo.pop_back();
         // What the unit declares: the functions each of its functions builds on
         // ("needs") and those the framework calls for it ("framework_calls":
-        // the intersection behind a shadow ray or a bounce).
+        // the intersection and the shading behind a bounce).
         for (const ExerciseFunction& f : caller.functions) {
             for (const std::string& name : f.needs)
                 if (const ExerciseInfo* owner = exerciseOfFunction(name); owner && owner->inCourse) add(owner->number, true);

@@ -39,7 +39,7 @@ struct ExerciseFunction {
     // Lambert alone, not a wrong highlight.
     std::vector<std::string> needs;
     // Functions of other units the framework calls on this one's behalf
-    // ("framework_calls"): the intersection behind a shadow ray or a bounce.
+    // ("framework_calls"): the intersection and the shading behind a bounce.
     // The checker's hint names their units when they do not pass yet.
     std::vector<std::string> frameworkCalls;
     // A function without which there is no geometry to see (the camera ray,

@@ -160,6 +160,20 @@ head -3 "$scratch/check-08.txt"
 grep -qE "^08-cook-torrance +FAIL" "$scratch/check-08.txt" || fail "08-cook-torrance is not FAIL"
 grep -q "hint: it calls exercise 03-lambert, whose probes do not pass yet" "$scratch/check-08.txt" || fail "08's hint"
 
+step "hints follow the call graph: 03 (calls nothing) names no other exercise, 09 names 02 (through the framework)"
+git -C "$clone" checkout -q -- exercises
+cp "$src/course/03-lambert/mutants/missing-pi.glsl" "$clone/exercises/03-lambert.glsl"
+status=0; (cd "$clone" && ./raylab check -e 3) >"$scratch/check-03-mutant.txt" 2>&1 || status=$?
+head -2 "$scratch/check-03-mutant.txt"
+grep -qE "^03-lambert +FAIL" "$scratch/check-03-mutant.txt" || fail "03's mutant is not FAIL"
+! grep -q "make that one pass first" "$scratch/check-03-mutant.txt" || fail "03, which calls no exercise, was sent to another"
+git -C "$clone" checkout -q -- exercises
+cp "$src/solutions/09-reflections.glsl" "$clone/exercises/"
+status=0; (cd "$clone" && ./raylab check -e 9) >"$scratch/check-09.txt" 2>&1 || status=$?
+grep -q "hint: it calls exercise 02-intersect (through the framework), whose probes do not pass yet" "$scratch/check-09.txt" ||
+    { head -3 "$scratch/check-09.txt"; fail "09's hint"; }
+git -C "$clone" checkout -q -- exercises
+
 step "all ten done: every check passes, images included, exit status 0"
 cp "$src"/solutions/*.glsl "$clone/exercises/"
 status=0; (cd "$clone" && ./raylab check) >"$scratch/check-all.txt" 2>&1 || status=$?
