@@ -25,7 +25,8 @@ note = ("> **Student edition.** This copy of raylab has no answers: no exercise'
         "> files for the others: its image step waits until every exercise passes its\n"
         "> probes ([docs/exercises/README.md](docs/exercises/README.md)). Documents\n"
         "> that mention `solutions/`, the solutions, the mutants, the reference's sources,\n"
-        "> the tests of the other labels, `scripts/test.sh` or `scripts/student-edition.sh`\n"
-        "> describe the instructor's repository, where grading runs.\n\n")
+        "> the tests of labels other than `unit` (`scripts/test.sh` runs only those here)\n"
+        "> or `scripts/student-edition.sh` describe the instructor's repository, where\n"
+        "> grading runs.\n\n")
 title_end = text.index('\n\n') + 2
 open(path, 'w', encoding='utf-8').write(text[:title_end] + note + text[title_end:])
