@@ -26,6 +26,7 @@ import re
 import sys
 
 NAME = re.compile(r'^[0-9]{2}-[a-z0-9]+(-[a-z0-9]+)*$')
+MAX_DEPTH = 64  # as the program's JSON reader (app/core/json_text.h)
 
 
 class Mistake(Exception):
@@ -78,6 +79,18 @@ def load_unit(course, unit, validator):
         text = raw.decode('utf-8')
     except UnicodeDecodeError as e:
         raise Mistake('%s:%d: not UTF-8 text (byte %d)' % (where, raw.count(b'\n', 0, e.start) + 1, e.start))
+    depth, deepest, in_string, escaped = 0, 0, False, False
+    for at, c in enumerate(text):  # nesting first: json and jsonschema recurse
+        if in_string:
+            escaped, in_string = (not escaped and c == '\\'), in_string and (escaped or c != '"')
+        elif c == '"':
+            in_string = True
+        elif c in '[{':
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise Mistake('%s:%d: values nest more than %d deep' % (where, text.count('\n', 0, at) + 1, MAX_DEPTH))
+        elif c in ']}':
+            depth -= 1
     try:
         data = json.loads(text, object_pairs_hook=no_duplicate_keys)
     except json.JSONDecodeError as e:
@@ -211,6 +224,9 @@ def main():
         check_manifest(course, units)
     except Mistake as m:
         print(m)
+        return 1
+    except (OSError, RecursionError, ValueError) as e:  # what no rule above foresaw: still one line
+        print('course/: cannot be checked: %s' % str(e).splitlines()[0][:200] if str(e) else type(e).__name__)
         return 1
     return 0
 
