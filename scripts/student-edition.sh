@@ -28,8 +28,10 @@
 #     (docs/exercises/images/make-images.sh, scripts/judge-*.py);
 # and the edition's README.md says what it is. Before the commit, every
 # function body of the exercises' solutions is searched for in the edition's
-# text files, app/ included (scripts/answer-leaks.py); one found stops the
-# export.
+# text files, app/ included (scripts/answer-leaks.py), and every function of
+# its framework GLSL with an exercise function's types is run, renamed,
+# against that exercise's probes (scripts/attack-leaks.py); a body found or a
+# function that passes stops the export.
 #
 # The recording runs the instructor's program: $RAYLAB, else ./raylab (the
 # build of the working tree: build it from the commit you export).
@@ -117,7 +119,7 @@ leave_out=(
     shaders/model_variants.glsl      # the model's lobes and their variants, line for line
     app/bench/expert.cpp app/bench/expert_scene.cpp app/bench/expert_scene.h  # writes the model fused into one shader
     docs/exercises/images/make-images.sh scripts/judge-kinds.py scripts/judge-hard-kinds.py
-    scripts/student-edition.sh scripts/answer-leaks.py scripts/edition-readme.py
+    scripts/student-edition.sh scripts/answer-leaks.py scripts/attack-leaks.py scripts/edition-readme.py
 )
 if [ "$with_reference" -eq 0 ]; then
     leave_out+=(
@@ -153,6 +155,16 @@ python3 "$here/scripts/edition-readme.py" "$stage/README.md" "$with_reference"
 
 if ! python3 "$here/scripts/answer-leaks.py" "$answers" "$stage" >&2; then
     fail "the files above hold an answer; nothing was written to $out"
+fi
+# The attack: every framework GLSL function with an exercise function's
+# types, renamed to it and run against its probes; one that passes is an answer.
+if [ -x "$raylab" ]; then
+    attack="$(mktemp -d)"
+    if ! python3 "$here/scripts/attack-leaks.py" "$raylab" "$stage" "$attack" >&2; then
+        rm -rf -- "$attack"
+        fail "the functions above pass an exercise's probes; nothing was written to $out"
+    fi
+    rm -rf -- "$attack"
 fi
 
 source_commit="$(git -C "$here" rev-parse --short HEAD)"

@@ -95,6 +95,17 @@ if python3 "$src/scripts/answer-leaks.py" "$src/solutions" "$planted" >"$scratch
     fail "answer-leaks.py did not find a solution pasted into a handout"
 fi
 grep -q "05-ggx.md: the body of D_GGX" "$scratch/planted.log" || fail "planted: $(cat "$scratch/planted.log")"
+# The attack finds no framework function that passes an exercise's probes in
+# the edition, and finds one planted on purpose: 05's D_GGX renamed, in a
+# framework file of its own.
+python3 "$src/scripts/attack-leaks.py" "$raylab" "$edition" "$scratch/attack" || fail "a framework function passes an exercise's probes"
+mkdir -p "$planted/shaders"
+cp -r "$edition/course" "$planted/"
+sed 's/D_GGX/myDistribution/' "$src/course/05-ggx/solution.glsl" >"$planted/shaders/extra.glsl"
+if python3 "$src/scripts/attack-leaks.py" "$raylab" "$planted" "$scratch/attack-planted" >"$scratch/attack.log"; then
+    fail "attack-leaks.py did not find a renamed solution in the framework"
+fi
+grep -q "shaders/extra.glsl: myDistribution passes all" "$scratch/attack.log" || fail "attack: $(cat "$scratch/attack.log")"
 
 step "a fresh clone, built as its README says (scripts/build.sh)"
 clone="$scratch/clone"
