@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The leak detector that attacks (issue 35): every function of every GLSL
-file of TREE's framework (shaders/, recursively) whose return and parameter
+file of TREE's framework (shaders/, recursively) and of every ```glsl block
+of its documents (handouts included) whose return and parameter
 types are those of an exercise function of the course is renamed to that
 function, put into the exercise's shipped stub in place of it, and checked
 by the instructor's program against that exercise's probes. A function that
@@ -74,13 +75,21 @@ def main():
     os.makedirs(scratch, exist_ok=True)
     targets = course(tree)
     leaks, tried = 0, 0
-    for folder, _, files in os.walk(os.path.join(tree, 'shaders')):
+    sources = []  # (shown path, GLSL text)
+    for folder, dirs, files in os.walk(tree):
+        dirs[:] = [d for d in dirs if not d.startswith(('.', 'build')) and d != 'node_modules']
+        rel = os.path.relpath(folder, tree)
         for name in sorted(files):
-            if not name.endswith(('.glsl', '.frag')):
-                continue
             path = os.path.join(folder, name)
-            shown = os.path.relpath(path, tree)
-            for ret, fname, types, definition in functions(open(path, encoding='utf-8').read()):
+            if name.endswith(('.glsl', '.frag')) and (rel == 'shaders' or rel.startswith('shaders' + os.sep)):
+                sources.append((os.path.relpath(path, tree), open(path, encoding='utf-8').read()))
+            elif name.endswith('.md'):
+                # A document's GLSL blocks: a handout may state a formula, not a body.
+                blocks = re.findall(r'^```glsl\n(.*?)^```', open(path, encoding='utf-8').read(), re.S | re.M)
+                if blocks:
+                    sources.append((os.path.relpath(path, tree), '\n'.join(blocks)))
+    for shown, text in sources:
+            for ret, fname, types, definition in functions(text):
                 for unit, target, tret, ttypes in targets:
                     if (ret, types) != (tret, ttypes) or fname == target:
                         continue

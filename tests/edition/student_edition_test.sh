@@ -106,6 +106,12 @@ if python3 "$src/scripts/attack-leaks.py" "$raylab" "$planted" "$scratch/attack-
     fail "attack-leaks.py did not find a renamed solution in the framework"
 fi
 grep -q "shaders/extra.glsl: myDistribution passes all" "$scratch/attack.log" || fail "attack: $(cat "$scratch/attack.log")"
+rm "$planted/shaders/extra.glsl"
+{ printf '# notes\n\n```glsl\n'; sed 's/D_GGX/ggxLobe/' "$src/course/05-ggx/solution.glsl"; printf '```\n'; } >"$planted/notes.md"
+if python3 "$src/scripts/attack-leaks.py" "$raylab" "$planted" "$scratch/attack-planted-md" >"$scratch/attack-md.log"; then
+    fail "attack-leaks.py did not find a renamed solution in a document's GLSL block"
+fi
+grep -q "notes.md: ggxLobe passes all" "$scratch/attack-md.log" || fail "attack: $(cat "$scratch/attack-md.log")"
 
 step "a fresh clone, built as its README says (scripts/build.sh)"
 clone="$scratch/clone"
