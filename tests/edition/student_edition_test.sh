@@ -132,6 +132,11 @@ cmp -s "$clone/raylab.png" "$scratch/stubs.png" || fail "the edition's picture i
 step "no reference: --cpu says so in one line, exit status 1"
 status=0; out=$(cd "$clone" && ./raylab render --cpu -o cpu.png 2>&1) || status=$?
 [ "$status" -eq 1 ] && [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ "$out" == *"not in this copy"* ]] || fail "--cpu: $out"
+# A scene with a model variant: the edition renders the reference model only, and says so.
+printf '{"spheres": [{"center": [0, 0, -3], "radius": 1}], "lights": [{"position": [2, 2, 0], "intensity": 10}], "model": {"distribution": "beckmann"}}\n' >"$scratch/variant.json"
+status=0; out=$(cd "$clone" && ./raylab render "$scratch/variant.json" -o variant.png 2>&1) || status=$?
+[ "$status" -eq 1 ] && [[ "$out" == *"is not in this copy"* ]] && [[ "$out" != *"the cause is in an exercise"* ]] ||
+    fail "a model variant: $out"
 
 step "no yardstick in the edition: ./raylab bench says why its textbook and expert rows are skipped"
 [ ! -e "$clone/shaders/yardstick/textbook.frag" ] || fail "the edition ships shaders/yardstick/textbook.frag"
