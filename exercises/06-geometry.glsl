@@ -8,7 +8,7 @@ float G1_SchlickGGX(float NoX, float k) {
 }
 
 // Smith's separable shadowing-masking for direct light:
-//     r = clamp(roughness, 0.045, 1),  k = (r + 1)^2 / 8
+//     r = clamp(roughness, MIN_ROUGHNESS, 1),  k = (r + 1)^2 / 8
 //     G = G1(NoV) G1(NoL)
 float G_SchlickGGX(float NoV, float NoL, float roughness) {
     return NOT_STARTED;  // TODO

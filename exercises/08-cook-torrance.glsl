@@ -4,7 +4,7 @@
 // Until you write these, surfaces are lit with Lambert alone (exercise 03).
 // n, v, l are unit vectors: normal, towards the viewer, towards the light.
 
-// GGX alpha from perceptual roughness:  r = clamp(roughness, 0.045, 1),  alpha = r^2
+// GGX alpha from perceptual roughness:  r = clamp(roughness, MIN_ROUGHNESS, 1),  alpha = r^2
 float ggxAlpha(float roughness) {
     return NOT_STARTED;  // TODO
 }

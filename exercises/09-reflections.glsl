@@ -4,7 +4,7 @@
 
 // Roughness-aware Schlick Fresnel of the macro normal (for reflections of the
 // scene, not for point lights):
-//     r = clamp(roughness, 0.045, 1)
+//     r = clamp(roughness, MIN_ROUGHNESS, 1)
 //     Fr = F0 + (max(vec3(1 - r), F0) - F0) (1 - NoV)^5
 vec3 F_SchlickRoughness(vec3 F0, float NoV, float roughness) {
     return vec3(NOT_STARTED);  // TODO

@@ -50,10 +50,26 @@ elif ! { grep -qx '<!-- standing:begin -->' "$doc" && grep -qx '<!-- standing:en
 fi
 
 cd "$root"
+# A student's files beside the course's: the solutions with a comment line
+# added at the top of each (folder "commented"), and a complete submission
+# written differently, every exercise's first alternative where it has one
+# (folder "alternatives"): the bench's rows specialised:commented and
+# specialised:alternatives, the same program path as the course's files.
+students=$(mktemp -d)
+trap 'rm -rf "$students"' EXIT
+mkdir -p "$students/commented" "$students/alternatives"
+for unit in course/*/; do
+    [ -f "$unit/solution.glsl" ] || continue
+    name=$(basename "$unit").glsl
+    { echo "// my own copy of the solution, with this comment"; cat "$unit/solution.glsl"; } > "$students/commented/$name"
+    alternative=$(find "$unit/alternatives" -name '*.glsl' 2>/dev/null | sort | head -1)
+    cp "${alternative:-$students/commented/$name}" "$students/alternatives/$name"
+done
 scenes="scenes/metal-row.json tests/bench/course-row-ground.json scenes/lecture.json tests/bench/random-30.json"
 rel() { python3 -c 'import os,sys; print(os.path.relpath(sys.argv[1]))' "$1"; }
 # shellcheck disable=SC2086
 "$raylab" bench $scenes --sweeps "$sweeps" --size "$size" --clock cpu --frames "$frames" \
+    --also-impl "$students/commented" --also-impl "$students/alternatives" \
     --csv "$(rel "$csv")" --plot "$(rel "$plot")" --markdown "$(rel "$doc")" 2> >(tee "$log" >&2)
 wait
 context=$(sed -n 's/^bench: \(EGL\|OSMesa\|GLFW\)/\1/p' "$log" | head -1)
@@ -69,7 +85,10 @@ for r in rows:
 def row(scene, variant):
     return next((r for r in rows if r["scene"] == scene and r["variant"] == variant), None)
 columns = [("expert", "expert (strongest yardstick)"), ("textbook", "textbook (straightforward yardstick)"),
-           ("specialised", "raylab `render` (specialised)"), ("generic", "raylab `--generic`")]
+           ("specialised", "raylab `render`, the course's files"),
+           ("specialised:commented", "the same with a comment added"),
+           ("specialised:alternatives", "a submission written differently (the alternatives)"),
+           ("generic", "raylab `--generic`")]
 load = ""
 try:
     load = open("/proc/loadavg").read().split()[0]
@@ -90,7 +109,7 @@ for scene in scenes:
         ms = float(r["ms_median"])
         ratio = float(strongest["ms_median"]) / ms if strongest and ms > 0 else 0
         err = "%.3f LSB, %.3f%% off" % (float(r["err_mean_lsb"]), 100 * float(r["off_frac"]))
-        speed = "" if r is strongest else ", **%.2fx**" % ratio if variant == "specialised" else ", %.2fx" % ratio
+        speed = "" if r is strongest else ", **%.2fx**" % ratio if variant.startswith("specialised") else ", %.2fx" % ratio
         cells.append("%.2f ms%s; %s" % (ms, speed, err))
     out.append("| %s | %s |" % (scene, " | ".join(cells)))
 out.append("")

@@ -111,7 +111,9 @@ git -C "$here" archive --format=tar HEAD | tar -x -C "$stage"
 leave_out=(
     tests/portability
     tests/exercises tests/grading tests/gpu tests/accuracy tests/metamorphic tests/fuzz
-    tests/walkthrough tests/window tests/browser tests/edition tests/bench
+    tests/walkthrough tests/window tests/browser tests/edition
+    tests/bench/test_bench_cli.cpp tests/bench/test_specialisation.cpp  # its scenes stay: unit tests read them
+    tests/bench/test_environment_sweep.cpp
     tests/unit/test_shipped_stubs.cpp tests/unit/test_loop_guard.cpp
     tests/unit/test_define_table.cpp tests/unit/defines.golden  # its implementations are the solutions and mutants
     tests/unit/test_select_tables.cpp  # the expert yardstick's generator

@@ -4,6 +4,18 @@
 
 const float PI = 3.14159265358979;
 
+// The model's constants (docs/model.md, "Constants"): their one definition in
+// the GLSL; the CPU reference's are in app/reference/brdf_reference.h and
+// app/core/float_range.h.
+//
+// The least perceptual roughness shading uses: r = clamp(roughness,
+// MIN_ROUGHNESS, 1) keeps alpha^2 = r^4 = 4.1e-6 above 0, so GGX's D stays
+// finite at NoH = 1 for a mirror (roughness 0).
+const float MIN_ROUGHNESS = 0.045;
+// u = 2^-24, the unit roundoff of float32: a correctly rounded operation on x
+// is off by at most u |x| (error_bounds.glsl).
+const float UNIT_ROUNDOFF = 5.9604644775390625e-8;
+
 // intersectSphere() returns NO_HIT when the ray misses (any t <= 0 is a miss).
 const float NO_HIT = -1.0;
 

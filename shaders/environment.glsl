@@ -110,11 +110,11 @@ vec3 prefilteredRadiance(vec3 r, float level) {
 }
 
 // The split-sum table's (scale, bias) at n.v and perceptual roughness
-// (clamped to [0.045, 1], as the table), bilinear between texel centres,
+// (clamped to [MIN_ROUGHNESS, 1], as the table), bilinear between texel centres,
 // clamped at the edges.
 vec2 splitSumLookup(float NoV, float roughness) {
     ivec2 size = textureSize(u_envSplitSum, 0);
-    vec2 p = clamp(vec2(NoV, clamp(roughness, 0.045, 1.0)) * vec2(size) - 0.5, vec2(0.0), vec2(size - 1));
+    vec2 p = clamp(vec2(NoV, clamp(roughness, MIN_ROUGHNESS, 1.0)) * vec2(size) - 0.5, vec2(0.0), vec2(size - 1));
     vec2 f = floor(p);
     ivec2 i0 = ivec2(f);
     ivec2 i1 = min(i0 + 1, size - 1);

@@ -9,11 +9,7 @@
 // spheres: a hit point carries float32's rounding of the scene's size,
 // whatever the scene's position in the world or the camera's distance.
 
-// u = 2^-24, the unit roundoff of float32: a correctly rounded operation on x
-// is off by at most u |x|.
-const float UNIT_ROUNDOFF = 5.9604644775390625e-8;
-
-// gamma_k = k u / (1 - k u) (Higham; pbrt-v4's gamma(n)): bounds the relative
+// gamma_k = k u / (1 - k u), u = UNIT_ROUNDOFF (common.glsl) (Higham; pbrt-v4's gamma(n)): bounds the relative
 // error of k chained roundings.
 float roundingGamma(float k) { return k * UNIT_ROUNDOFF / (1.0 - k * UNIT_ROUNDOFF); }
 

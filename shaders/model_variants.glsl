@@ -179,7 +179,7 @@ float Fr_BlinnPhong(vec3 n, vec3 h, float shininess) {
     //     f = (s + 2)(s + 4) / (8 pi (2^(-s/2) + s)) NoH^s,  0 for NoH <= 0
     // NoH^s as exp(s/2 ln NoH^2). Near the peak ln NoH^2 = ln(1 - |n x h|^2)
     // comes from |n x h|^2, which keeps its relative precision: NoH rounded to
-    // float is off by up to 6e-8 there, which s = 4.9e5 (r = 0.045) would turn
+    // float is off by up to 6e-8 there, which s = 4.9e5 (r = MIN_ROUGHNESS) would turn
     // into 3% (the cancellation D_GGX avoids). Away from the peak NoH itself is
     // the better-conditioned input (1 - |n x h|^2 would cancel instead).
     float s = shininess;

@@ -413,8 +413,8 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
             // program draws for half a second) has evicted this one's code and
             // data from the caches, and a steady stream of frames (the live
             // view, the bench's own claim of time per frame) finds them warm.
-            // Measured: the metal row's course program 1.6 to 3.6 ms a frame
-            // from one run to the next without it (docs/performance.md).
+            // Measured: the metal row's picture 1.6 to 3.6 ms a frame from one
+            // run to the next without it (docs/performance.md).
             renderer.draw(programs[i], frame);
             times[i].push_back(timeFrame(renderer, programs[i], frame, clock));
         }

@@ -32,13 +32,11 @@ struct Variant {
     bool specialised = true; // the scene's structure compiled in (Purpose::EveryView, or Picture with `picture`)
     bool picture = true;     // without the term views (Purpose::Picture, or GenericPicture when not specialised)
     bool textbook = false;   // the straightforward yardstick instead (bench/textbook.h): none of the flags above apply
-    // The picture program of the exercise API even where the course's own files
-    // would get the generated one (render/course_program.h): what it saves.
     bool expert = false;     // the expert yardstick instead (bench/expert.h): none of the flags above apply
     std::filesystem::path outside;  // non-empty: a yardstick from outside, this file (bench/outside.h)
     Scene scene;             // the scene as rendered (size already reduced for a resolution variant)
     std::vector<std::string> withoutDefines;  // defines taken out again ("RL_BOUNCE_CUTOFF")
-    ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_CANDIDATE_SHADOWS")
+    ShaderDefines withDefines;                // defines added (the other side of a choice: "RL_BOUNCE_CUTOFF")
     // Exercise file -> replacement (numerical strategies: naive versions of a solution function).
     std::map<std::string, std::filesystem::path> overrides;
     std::string skipReason;  // non-empty: not measured, reported with this note

@@ -15,13 +15,6 @@ std::string probeHintFor(const Implementation& impl, int exercise) {
     ShaderProgram probe(assembleShader("fullscreen.vert", impl, {}),
                         assembleShader("probe.frag", impl, {{"RL_PROBE_EXERCISE", std::to_string(exercise)}}));
     const Scene scene = probeScene();
-    // The probe program is deleted on return; left current it would be freed
-    // by the next glUseProgram, and a caller that saved GL_CURRENT_PROGRAM to
-    // restore it (Dear ImGui's renderer in the live view) would then ask for a
-    // program that no longer exists (GL_INVALID_VALUE, seen in the window test).
-    struct Unbind {
-        ~Unbind() { gl::UseProgram(0); }
-    } unbind;
     for (const ProbeSpec& spec : probesForExercise(exercise)) {
         const ProbeOutcome o = evaluateProbe(spec, runProbe(probe, spec, spec.needsScene ? &scene : nullptr));
         if (o.summary.passed == o.summary.total) continue;

@@ -13,6 +13,11 @@
 
 namespace rl {
 
+// u = 2^-24, float32's unit roundoff: a correctly rounded float32 operation
+// on x is off by at most u |x|. The host's one copy of the shaders' constant
+// (shaders/common.glsl, UNIT_ROUNDOFF), for the bounds it computes for them.
+inline constexpr double kFloatUnitRoundoff = 5.9604644775390625e-8;
+
 // float32's largest finite value and smallest normal one.
 constexpr double kFloat32Max = 3.4028234663852886e38;
 constexpr double kFloat32MinNormal = 1.1754943508222875e-38;
@@ -51,9 +56,10 @@ bool refinesRoots(const Scene& scene, std::size_t i);
 glm::dvec3 sceneAnchor(const Scene& scene);
 
 // A position as the shader holds it: relative to `anchor`, in `unit`s, in
-// double until it is rounded to float32 last. The scene block, the camera
-// compiled into a picture program and the shadow cones (which must cover
-// exactly these floats) all take it from here.
+// double until it is rounded to float32 last. The scene block and the
+// numbers compiled into a picture program (render/scene_constants.h: the
+// light's-side shadow test is proven exact on exactly these floats) all take
+// it from here.
 inline glm::vec3 shaderPosition(const glm::dvec3& position, const glm::dvec3& anchor, double unit) {
     return glm::vec3((position - anchor) / unit);
 }

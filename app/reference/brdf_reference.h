@@ -32,7 +32,10 @@ constexpr double kNoHit = -1.0;
 constexpr double kRayOffsetRelative = 1.0 / 524288.0;  // 2^-19: 16 float32 ulps of the largest number that produced p
 
 // The spec's clamps, shared by every term below.
-constexpr double kMinRoughness = 0.045;  // spec: r >= 0.045 keeps alpha^2 = 4.1e-6 > 0, so D stays finite at NoH = 1
+// The least perceptual roughness: r >= 0.045 keeps alpha^2 = 4.1e-6 > 0, so D
+// stays finite at NoH = 1. The C++'s one definition (the GLSL's:
+// MIN_ROUGHNESS in shaders/common.glsl; tests/unit holds them equal).
+constexpr double kMinRoughness = 0.045;
 constexpr double kMinNoV = 1e-4;         // spec: NoV >= 1e-4 keeps 1/(4 NoL NoV) finite at grazing view
 
 // ---- 01 camera ---------------------------------------------------------------

@@ -1,5 +1,7 @@
 #include "render/bounce_cutoff.h"
 
+#include "reference/brdf_reference.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -16,14 +18,14 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 double maxComponent(const glm::dvec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
 
 // Peak over all l and v of f(l, v) NoL for the reference model (spec "Direct
-// light"), with r = clamp(roughness, 0.045, 1), alpha = r^2, k = (r + 1)^2 / 8:
+// light"), with r = ref::clampRoughness(roughness), alpha = r^2, k = (r + 1)^2 / 8:
 //   diffuse:  kd albedo / pi NoL <= (1 - metallic) albedo / pi   (kd = (1 - F)(1 - metallic), F >= 0)
 //   specular: D G F / (4 NoL NoV) NoL = D F G1(NoL) G1(NoV) / (4 NoV)
 //             <= 1 / (pi alpha^2) * 1 * 1 * 1 / (4 k)
 // since D peaks at n.h = 1 with 1 / (pi alpha^2), F <= 1, G1 <= 1 and
 // G1(NoV) / NoV = 1 / (NoV (1 - k) + k) <= 1 / k (k <= 1/2).
 double brdfCosinePeak(const Material& m) {
-    double r = std::clamp(m.roughness, 0.045, 1.0);
+    double r = ref::clampRoughness(m.roughness);
     double alpha = r * r;
     double k = (r + 1.0) * (r + 1.0) / 8.0;
     double diffuse = std::max(0.0, 1.0 - m.metallic) * maxComponent(m.albedo) / kPi;
@@ -61,7 +63,7 @@ double bounceFresnelBound(const Scene& scene) {
     double bound = 0.0;
     for (const Sphere& s : scene.spheres) {
         const Material& m = s.material;
-        double r = std::clamp(m.roughness, 0.045, 1.0);
+        double r = ref::clampRoughness(m.roughness);
         glm::dvec3 F0 = glm::mix(glm::dvec3(0.04), m.albedo, m.metallic);
         bound = std::max(bound, std::max(1.0 - r, maxComponent(F0)));
     }

@@ -20,7 +20,7 @@ namespace rl {
 double hitRadianceBound(const Scene& scene);
 
 // The largest factor one bounce's Fresnel can apply to the throughput (any
-// channel): max over spheres of max(1 - r, F0), r clamped to [0.045, 1].
+// channel): max over spheres of max(1 - r, F0), r clamped to [kMinRoughness, 1] (reference/brdf_reference.h).
 double bounceFresnelBound(const Scene& scene);
 
 // The brightest linear radiance (any channel) a ray can bring back when it

@@ -44,14 +44,16 @@ constexpr unsigned kOnePicture = kPicture | kLiveStill;
 
 int sphereCount(const DefineInput& in) { return int(in.scene.spheres.size()); }
 
-// A data row's macro where there is something to index: a scene without
-// spheres (or lights) never calls the accessor, which then reads the
-// uniform block as in the generic program.
+// A data row's macro where there is something to index, each index a
+// constant (written out: render/scene_constants.h): a scene without spheres
+// (or lights) never calls the accessor, and a loop over them reads the
+// uniform block, as in the generic program, where a chain of selects on a
+// varying index would cost a test per sphere.
 Value spheresOrNone(const DefineInput& in, std::string (*macro)(const Scene&)) {
-    return in.scene.spheres.empty() ? kNone : Value(macro(in.scene));
+    return in.scene.spheres.empty() || !writesSpheresOut(in.scene) ? kNone : Value(macro(in.scene));
 }
 Value lightsOrNone(const DefineInput& in, std::string (*macro)(const Scene&)) {
-    return in.scene.lights.empty() ? kNone : Value(macro(in.scene));
+    return in.scene.lights.empty() || !writesLightsOut(in.scene) ? kNone : Value(macro(in.scene));
 }
 
 std::vector<DefineRow> makeTable() {
@@ -103,10 +105,14 @@ std::vector<DefineRow> makeTable() {
     t.push_back({"RL_FOR_EACH_SPHERE(X)", kStructure, kGeometryConstants, {}, {},
                  "the spheres written out one by one (closestHit, the shadow tests): every index, and with it "
                  "every sphere's numbers, a constant",
-                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.spheres.size()); }});
+                 [](const DefineInput& in) -> Value {
+                     return writesSpheresOut(in.scene) ? Value(forEachIndex(in.scene.spheres.size())) : kNone;
+                 }});
     t.push_back({"RL_FOR_EACH_LIGHT(X)", kStructure, kGeometryConstants, {}, {},
                  "the lights written out one by one: each light's numbers and shadow tests fold",
-                 [](const DefineInput& in) -> Value { return forEachIndex(in.scene.lights.size()); }});
+                 [](const DefineInput& in) -> Value {
+                     return writesLightsOut(in.scene) ? Value(forEachIndex(in.scene.lights.size())) : kNone;
+                 }});
     t.push_back({"RL_SINGLE_SPHERE", kStructure, kSpecialised, {}, {},
                  "one convex sphere shadows only points seen from inside it: no shadow ray (lighting.glsl)",
                  [](const DefineInput& in) { return when(sphereCount(in) == 1); }});

@@ -14,9 +14,8 @@ namespace rl {
 
 namespace {
 
-// Float32's unit roundoff and Higham's gamma_k, as in shaders/error_bounds.glsl.
-constexpr double kUnitRoundoff = 5.9604644775390625e-8;
-double roundingGamma(double k) { return k * kUnitRoundoff / (1.0 - k * kUnitRoundoff); }
+// Higham's gamma_k, as in shaders/error_bounds.glsl.
+double roundingGamma(double k) { return k * kFloatUnitRoundoff / (1.0 - k * kFloatUnitRoundoff); }
 
 // Whether makeHit()'s residual form can pay for some point of the sphere
 // (shaders/error_bounds.glsl: it is taken where its bound is below the centre

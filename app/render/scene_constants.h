@@ -27,6 +27,24 @@ std::string floatLiteral(float x);
 // is the default, so an index out of range reads it.
 std::string selectChain(const std::string& index, const std::vector<std::string>& values);
 
+// How much of a scene a program writes out, test by test. Written out, every
+// index is a constant and each sphere's numbers fold into its tests; the
+// code, and the compile time with it, grows with the tests a bounce makes:
+// a nearest-hit test per sphere and a shadow test per light and sphere,
+// spheres x (lights + 1). On llvmpipe each costs about 15-20 ms of compile
+// time, and saves far more per frame: tests/bench/random-30.json (30 x 7 =
+// 210 tests) builds in 3.9 s written out and draws a 640x480 frame in 90 ms,
+// where looped over the uniform block it builds in 0.5 s and draws in 458 ms
+// (docs/performance.md, "Compile time"). Beyond the budget (a 64-sphere
+// scene with 16 lights built for 23 s) the spheres are looped over and read
+// from the uniform block, as in the generic program; the lights are written
+// out up to kWrittenOutLights (each a copy of the shading, not of the
+// sphere tests).
+inline constexpr std::size_t kWrittenOutTests = 256;
+inline constexpr std::size_t kWrittenOutLights = 16;
+bool writesSpheresOut(const Scene& scene);
+bool writesLightsOut(const Scene& scene);
+
 // The scene's numbers from its own camera (the camera of `raylab render`).
 ShaderScene sceneNumbers(const Scene& scene);
 
@@ -51,9 +69,8 @@ std::string vec3Literal(const glm::vec3& v);
 //     light's side decides, Y where the segment test does;
 //   RL_LIGHT_OCCLUDERS: vec4[](...), light-major, vec4(L - c, |L - c|^2 - r^2)
 //     for every light and sphere, from double.
-// None where no sphere takes the light's side, or the pairs of lights and
-// spheres exceed kLightSidePairs.
-inline constexpr std::size_t kLightSidePairs = 256;
+// None where no sphere takes the light's side, or where the spheres or the
+// lights are not written out (writesSpheresOut(), writesLightsOut()).
 std::optional<std::string> shadowStepsMacro(const Scene& scene);
 std::string lightOccludersArray(const Scene& scene);
 

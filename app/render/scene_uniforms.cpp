@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
+#include "core/float_range.h"
 #include "core/light_surface.h"
 #include "core/message.h"
 #include "render/bounce_cutoff.h"
@@ -53,15 +54,25 @@ SceneUniformBlock::~SceneUniformBlock() {
     if (buffer_) gl::DeleteBuffers(1, &buffer_);
 }
 
-CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor, const glm::dvec3& anchor, double unit) {
-    constexpr double u = 5.9604644775390625e-8;  // float32's unit roundoff, 2^-24
-    const glm::dvec3 c = (sphere.center - anchor) / unit, f = eyeFromAnchor - c;
-    const double r = sphere.radius / unit, distance = glm::length(f);
+CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eye, const glm::dvec3& anchor, double unit) {
+    constexpr double u = kFloatUnitRoundoff;
+    // C from the world's numbers in long double (x87: 11 more bits than
+    // double): a camera put on a sphere's surface is a rounding of double off
+    // it, and |e - c| - r, rounded in double, can take the wrong side; the
+    // differences e - c of doubles are exact there, and the sign of C is the
+    // one the true picture has.
+    using Real = long double;
+    const Real fx = Real(eye.x) - Real(sphere.center.x), fy = Real(eye.y) - Real(sphere.center.y),
+               fz = Real(eye.z) - Real(sphere.center.z), r = Real(sphere.radius);
+    const Real distance = std::sqrt(fx * fx + fy * fy + fz * fz);
     CameraSphere out;
-    out.C = (distance - r) * (distance + r);
-    // exerciseCError() of error_bounds.glsl: 4 u (2 |f|.(|e| + |c|) + 4 (|f|^2 + r^2)).
+    out.C = double((distance - r) * (distance + r) / (Real(unit) * Real(unit)));
+    // exerciseCError() of error_bounds.glsl, on the numbers the shader holds:
+    // 4 u (2 |f|.(|e| + |c|) + 4 (|f|^2 + r^2)).
+    const glm::dvec3 eyeFromAnchor = (eye - anchor) / unit, c = (sphere.center - anchor) / unit, f = eyeFromAnchor - c;
+    const double rs = sphere.radius / unit, fs = glm::length(f);
     glm::dvec3 af = glm::abs(f), spread = glm::abs(eyeFromAnchor) + glm::abs(c);
-    double exerciseError = 4.0 * u * (2.0 * glm::dot(af, spread) + 4.0 * (distance * distance + r * r));
+    double exerciseError = 4.0 * u * (2.0 * glm::dot(af, spread) + 4.0 * (fs * fs + rs * rs));
     // Beyond float32's range C is no use to the shader: a camera that far is
     // clearly outside (or inside) and the exercise tells it.
     out.hostDecides = std::abs(out.C) < exerciseError && std::abs(out.C) < 1e37;
@@ -69,7 +80,7 @@ CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor,
 }
 
 LightOnSurface lightOnSurface(const Scene& scene, std::size_t k, const glm::dvec3& anchor, double unit) {
-    constexpr double u = 5.9604644775390625e-8;
+    constexpr double u = kFloatUnitRoundoff;
     const glm::dvec3 light = scene.lights.at(k).position;
     LightOnSurface out;
     double nearest = INFINITY;
@@ -121,7 +132,7 @@ ShaderScene shaderScene(const Scene& scene, const glm::dvec3& eye, const glm::dv
         // uploads the block again whenever its camera moves): C = |e - c|^2 -
         // r^2 in double, and whether the exercise's float32 can tell its sign
         // (error_bounds.glsl, exerciseCError, with the same margins).
-        CameraSphere relation = cameraSphere(s, eyeFromAnchor, anchor, unit);
+        CameraSphere relation = cameraSphere(s, eye, anchor, unit);
         out.sphereFromCamera.push_back(glm::vec4(float(relation.C), relation.hostDecides ? 1.0f : 0.0f, 0.0f, 0.0f));
     }
     for (std::size_t k = 0; k < lights; ++k) {

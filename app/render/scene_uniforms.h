@@ -18,15 +18,15 @@ namespace rl {
 glm::dmat4 cameraToWorld(const Camera& camera);
 
 // The camera's relation to a sphere (scene.glsl, u_sphereFromCamera): C =
-// |e - c|^2 - r^2 in double (e and c relative to the anchor, in the shader's
-// unit), and whether the exercise's float32 |o - c|^2 - r^2 cannot tell its
+// |e - c|^2 - r^2 from the world's eye and centre in long double, in the
+// shader's unit, and whether the exercise's float32 |o - c|^2 - r^2 cannot tell its
 // sign, so that camera rays take their root from C (issue #23: a camera 1e-3
 // above a ground of radius 1e5). Recomputed for every camera position.
 struct CameraSphere {
     double C = 0.0;
     bool hostDecides = false;
 };
-CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eyeFromAnchor, const glm::dvec3& anchor, double unit);
+CameraSphere cameraSphere(const Sphere& sphere, const glm::dvec3& eye, const glm::dvec3& anchor, double unit);
 
 // The sphere whose surface light k lies on or within float32's reach of
 // (-1: none; the nearest if several), and its side from double

@@ -155,8 +155,22 @@ ShaderProgram::ShaderProgram(const AssembledSource& vertex, const AssembledSourc
     }
 }
 
+namespace {
+// A program deleted while current is only freed at the next glUseProgram,
+// and its name is no longer valid: a caller that saved GL_CURRENT_PROGRAM to
+// restore it (Dear ImGui's renderer in the live view) would ask for a program
+// that no longer exists (GL_INVALID_VALUE, seen when a hot reload drops the
+// still picture's program). So none of ours stays current when it goes.
+void deleteProgram(GLuint id) {
+    GLint current = 0;
+    gl::GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) == id) gl::UseProgram(0);
+    gl::DeleteProgram(id);
+}
+}  // namespace
+
 ShaderProgram::~ShaderProgram() {
-    if (id_) gl::DeleteProgram(id_);
+    if (id_) deleteProgram(id_);
 }
 
 ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
@@ -165,7 +179,7 @@ ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
 
 ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
     if (this != &other) {
-        if (id_) gl::DeleteProgram(id_);
+        if (id_) deleteProgram(id_);
         id_ = std::exchange(other.id_, 0);
         locations_ = std::move(other.locations_);
         warnings_ = std::move(other.warnings_);

@@ -28,7 +28,7 @@ std::vector<ProbeSpec> ggxProbes() {
         c.group = "random";
         d.cases.push_back(c);
     }
-    for (double r : {0.045, 0.06, 0.1}) {  // the peak of a nearly mirror surface
+    for (double r : {R::kMinRoughness, 0.06, 0.1}) {  // the peak of a nearly mirror surface
         for (double cosTheta : {1.0, 1.0 - 1e-7, 1.0 - 1e-6, 1.0 - 4e-6}) {
             ProbeCase c;
             putNormalHalf(c, rng, cosTheta);

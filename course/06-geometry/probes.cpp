@@ -31,7 +31,7 @@ std::vector<ProbeSpec> geometryProbes() {
         c.in[0] = float(rng.range(1e-4, 1));
         c.in[1] = float(rng.range(1e-3, 1));
         c.in[2] = float(k < 5 ? 0.0 : k < 10 ? 1.0 : rng.range(0, 1));
-        c.group = k < 5 ? "roughness 0 (clamped to 0.045)" : k < 10 ? "roughness 1" : "random";
+        c.group = k < 5 ? "roughness 0 (clamped to MIN_ROUGHNESS)" : k < 10 ? "roughness 1" : "random";
         g.cases.push_back(c);
     }
     g.expected = [](const ProbeCase& c) { return value(R::G_SchlickGGX(f(c, 0), f(c, 1), f(c, 2))); };
@@ -48,21 +48,21 @@ std::vector<ProbeSpec> geometryProbes() {
         {"the image-based-lighting remapping k = alpha/2 is used for point lights",
          "for direct light k = (r + 1)^2 / 8 (Karis 2013); alpha/2 is for IBL",
          [=](const ProbeCase& c) {
-             double r = std::clamp(double(f(c, 2)), 0.045, 1.0);
+             double r = R::clampRoughness(f(c, 2));
              return gWithK(c, r * r / 2);
          }},
-        {"roughness is not clamped", "r = clamp(roughness, 0.045, 1) before k = (r + 1)^2 / 8",
+        {"roughness is not clamped", "r = clamp(roughness, MIN_ROUGHNESS, 1) before k = (r + 1)^2 / 8",
          [=](const ProbeCase& c) {
              double r = f(c, 2);
              return gWithK(c, (r + 1) * (r + 1) / 8);
          }},
         {"G is a sum, not a product", "G = G1(NoV) * G1(NoL)",
          [](const ProbeCase& c) {
-             double r = std::clamp(double(f(c, 2)), 0.045, 1.0), k = (r + 1) * (r + 1) / 8;
+             double r = R::clampRoughness(f(c, 2)), k = (r + 1) * (r + 1) / 8;
              return value(R::G1_SchlickGGX(f(c, 0), k) + R::G1_SchlickGGX(f(c, 1), k));
          }},
     };
-    g.groupHints = {{"roughness 0 (clamped to 0.045)", "clamp the roughness to [0.045, 1] first"}};
+    g.groupHints = {{"roughness 0 (clamped to MIN_ROUGHNESS)", "clamp the roughness to [MIN_ROUGHNESS, 1] first"}};
     return {g1, g};
 }
 

@@ -63,10 +63,10 @@ std::vector<ProbeCase> brdfCases(std::uint64_t seed) {
 
 std::vector<ProbeSpec> cookTorranceProbes() {
     ProbeSpec alpha{"ggxAlpha", "ggxAlpha(roughness)", 1};
-    for (double r : {0.0, 0.01, 0.045, 0.1, 0.3, 0.5, 0.77, 1.0}) {
+    for (double r : {0.0, 0.01, R::kMinRoughness, 0.1, 0.3, 0.5, 0.77, 1.0}) {
         ProbeCase c;
         c.in[0] = float(r);
-        c.group = r < 0.045 ? "roughness below 0.045 (clamped)" : "roughness";
+        c.group = r < R::kMinRoughness ? "roughness below MIN_ROUGHNESS (clamped)" : "roughness";
         alpha.cases.push_back(c);
     }
     alpha.expected = [](const ProbeCase& c) { return value(R::ggxAlpha(f(c, 0))); };
@@ -75,9 +75,9 @@ std::vector<ProbeSpec> cookTorranceProbes() {
     alpha.describe = [](const ProbeCase& c) { return "roughness=" + fmt(f(c, 0)); };
     alpha.mistakes = {
         {"highlights far too wide: alpha = roughness instead of roughness^2",
-         "alpha = r * r with r = clamp(roughness, 0.045, 1) (perceptual roughness, Burley 2012)",
-         [](const ProbeCase& c) { return value(std::clamp(double(f(c, 0)), 0.045, 1.0)); }},
-        {"mirror-like surfaces blow up: roughness is not clamped", "clamp roughness to [0.045, 1] before squaring",
+         "alpha = r * r with r = clamp(roughness, MIN_ROUGHNESS, 1) (perceptual roughness, Burley 2012)",
+         [](const ProbeCase& c) { return value(R::clampRoughness(f(c, 0))); }},
+        {"mirror-like surfaces blow up: roughness is not clamped", "clamp roughness to [MIN_ROUGHNESS, 1] before squaring",
          [](const ProbeCase& c) { return value(double(f(c, 0)) * f(c, 0)); }},
     };
 

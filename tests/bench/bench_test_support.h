@@ -1,5 +1,5 @@
-// What the bench suite's tests share (test_specialisation, test_course_program,
-// test_live_course_program, test_bench_cli, test_environment_sweep): one
+// What the bench suite's tests share (test_specialisation, test_bench_cli,
+// test_environment_sweep): one
 // headless context, small scenes, the core's error budget between two
 // renderings, and the bench's CSV read back.
 #pragma once

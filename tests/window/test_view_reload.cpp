@@ -178,11 +178,11 @@ TEST_F(ReloadTest, CtrlSSavesTheSceneWithTheTrackballCamera) {
     EXPECT_EQ(saved.spheres.size(), original.spheres.size());
 }
 
-// The live program is specialised to the scene's structure only
-// (Purpose::LiveView, render/define_table.h): a value edit re-uploads uniforms, a structural
-// edit builds another program. Every metallic set to 0 is the hard case: the
-// fully specialised program of `raylab render` compiles that in
-// (RL_NO_METALS), the live one must not.
+// The moving picture's program is specialised to the scene's structure only
+// (Purpose::LiveView, render/define_table.h): a value edit never builds
+// another one, a structural edit does. The still picture's program has the
+// values compiled in too (Purpose::LiveStill): a value edit builds that one
+// again (docs/decisions.md, "One program").
 TEST_F(ReloadTest, ValueEditsNeverRecompileAStructuralEditDoes) {
     auto view = startView(
         "wait 1\nscreenshot before.png\n"
@@ -212,24 +212,27 @@ TEST_F(ReloadTest, ValueEditsNeverRecompileAStructuralEditDoes) {
     ASSERT_EQ(r.status, 0) << r.err;
     DisplayImage structureExpected = renderHeadless({}, "structure-expected.png");
 
-    // The picture is drawn with the course generator's program (issue #25,
-    // render/live_course_program.h), built once at the start.
-    EXPECT_NE(r.out.find("generated for the scene's structure"), std::string::npos) << r.out;
-    // Between the two screenshots (the value edit) nothing is built; after
-    // them the structural edit builds (the structure's defines and the
-    // generated program: each prints a "built" line).
-    auto builtLines = [&](std::size_t from, std::size_t to) {
+    // The still picture is drawn by the program `raylab render` uses, built
+    // for whatever files are shown.
+    EXPECT_NE(r.out.find("for the still picture, the scene's numbers compiled in"), std::string::npos) << r.out;
+    // Between the two screenshots (the value edit) no structure's program is
+    // built, only the still picture's; after them the structural edit builds
+    // the structure's program ("raylab: built impl for final ...").
+    auto builtLines = [&](std::size_t from, std::size_t to, bool still) {
         std::size_t built = 0;
         for (std::size_t at = r.out.find("raylab: built ", from); at != std::string::npos && at < to;
-             at = r.out.find("raylab: built ", at + 1))
-            ++built;
+             at = r.out.find("raylab: built ", at + 1)) {
+            const std::size_t end = r.out.find('\n', at);
+            if ((r.out.substr(at, end - at).find("for the still picture") != std::string::npos) == still) ++built;
+        }
         return built;
     };
     const std::size_t beforeShot = r.out.find("before.png"), valuesShot = r.out.find("values.png");
     ASSERT_NE(beforeShot, std::string::npos) << r.out;
     ASSERT_NE(valuesShot, std::string::npos) << r.out;
-    EXPECT_EQ(builtLines(beforeShot, valuesShot), 0u) << r.out;
-    EXPECT_GE(builtLines(valuesShot, std::string::npos), 1u) << r.out;
+    EXPECT_EQ(builtLines(beforeShot, valuesShot, false), 0u) << r.out;
+    EXPECT_EQ(builtLines(beforeShot, valuesShot, true), 1u) << r.out;
+    EXPECT_GE(builtLines(valuesShot, std::string::npos, false), 1u) << r.out;
     EXPECT_LE(comparePictures(picture("values.png"), valuesExpected).offFraction, kMaxOffFraction);
     EXPECT_LE(comparePictures(picture("structure.png"), structureExpected).offFraction, kMaxOffFraction);
     EXPECT_GT(comparePictures(picture("values.png"), picture("structure.png")).offFraction, 0.001);

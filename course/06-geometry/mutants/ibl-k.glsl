@@ -10,10 +10,10 @@ float G1_SchlickGGX(float NoX, float k) {
 }
 
 // Smith's separable form for direct light: G = G1(NoV) G1(NoL), with
-//     r = clamp(roughness, 0.045, 1),  k = (r + 1)^2 / 8
+//     r = clamp(roughness, MIN_ROUGHNESS, 1),  k = (r + 1)^2 / 8
 // (k = alpha / 2 is the image-based-lighting remapping, not this one).
 float G_SchlickGGX(float NoV, float NoL, float roughness) {
-    float r = clamp(roughness, 0.045, 1.0);
+    float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     float k = r * r / 2.0;
     return G1_SchlickGGX(NoV, k) * G1_SchlickGGX(NoL, k);
 }

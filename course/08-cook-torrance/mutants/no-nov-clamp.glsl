@@ -4,10 +4,10 @@
 // also breaks the hard case: scenes/hard/tangent-rays.json
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: course/08-cook-torrance/handout.md
 
-// GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
+// GGX alpha from perceptual roughness: r = clamp(roughness, MIN_ROUGHNESS, 1),
 // alpha = r^2. The lower clamp keeps D finite for mirror-like surfaces.
 float ggxAlpha(float roughness) {
-    float r = clamp(roughness, 0.045, 1.0);
+    float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     return r * r;
 }
 

@@ -1,10 +1,10 @@
 // mutant of: 08-cook-torrance
-// mistake: alpha = roughness^2 without the clamp to 0.045: D = 0/0 at the peak of a mirror, 0 elsewhere
+// mistake: alpha = roughness^2 without the clamp to MIN_ROUGHNESS: D = 0/0 at the peak of a mirror, 0 elsewhere
 // caught by: the check's message or hint contains "roughness is not clamped"
 // also breaks the hard case: scenes/hard/roughness-0.json
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: course/08-cook-torrance/handout.md
 
-// GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
+// GGX alpha from perceptual roughness: r = clamp(roughness, MIN_ROUGHNESS, 1),
 // alpha = r^2. The lower clamp keeps D finite for mirror-like surfaces.
 float ggxAlpha(float roughness) {
     return roughness * roughness;

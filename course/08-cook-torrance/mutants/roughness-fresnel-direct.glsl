@@ -3,10 +3,10 @@
 // caught by: the check's message or hint contains "roughness-aware Fresnel"
 // Exercise 08: the Cook-Torrance BRDF, metallic workflow. Handout: course/08-cook-torrance/handout.md
 
-// GGX alpha from perceptual roughness: r = clamp(roughness, 0.045, 1),
+// GGX alpha from perceptual roughness: r = clamp(roughness, MIN_ROUGHNESS, 1),
 // alpha = r^2. The lower clamp keeps D finite for mirror-like surfaces.
 float ggxAlpha(float roughness) {
-    float r = clamp(roughness, 0.045, 1.0);
+    float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     return r * r;
 }
 
@@ -24,7 +24,7 @@ vec3 specularBRDF(vec3 n, vec3 v, vec3 l, Material m) {
     vec3 h = normalize(l + v);
     float D = D_GGX(n, h, ggxAlpha(m.roughness));
     float G = G_SchlickGGX(NoV, NoL, m.roughness);
-    float r = clamp(m.roughness, 0.045, 1.0);
+    float r = clamp(m.roughness, MIN_ROUGHNESS, 1.0);
     vec3 F0 = baseReflectance(m);
     vec3 F = F0 + (max(vec3(1.0 - r), F0) - F0) * pow(1.0 - NoV, 5.0);
     return D * G * F / (4.0 * NoL * NoV);
