@@ -4,6 +4,7 @@
 #include "reference/split_sum.h"
 
 #include "core/environment_image.h"
+#include "reference/brdf_reference.h"  // kMinRoughness (declarations only: a student edition keeps it)
 
 #include <glm/geometric.hpp>
 
@@ -43,9 +44,9 @@ dvec3 ggxHalfVector(double u1, double u2, double alpha) {
 }
 
 RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples) {
-    // alpha = r^2, r = clamp(roughness, 0.045, 1): the framework's
+    // alpha = r^2, r = clamp(roughness, kMinRoughness, 1): the framework's
     // roughness convention (docs/model.md), stated in exercise 08's stub.
-    const double r = std::clamp(roughness, 0.045, 1.0), alpha = r * r;
+    const double r = std::clamp(roughness, kMinRoughness, 1.0), alpha = r * r;
     const int N = std::max(samples, 1);
     // The Hammersley half vectors around +z, the same for every pixel.
     std::vector<dvec3> halfVectors(size_t(N), dvec3(0.0));

@@ -96,7 +96,7 @@ std::vector<ProbeSpec> ggxProbes() {
          [=](const ProbeCase& c) { return dTextbookLike(c, R::kPi, false); }},
     };
     // The denominator clamped from below against a division by zero that
-    // cannot happen (alpha >= 0.045^2 keeps it >= alpha^4 > 0): at the peak
+    // cannot happen (alpha >= MIN_ROUGHNESS^2 keeps it >= alpha^4 > 0): at the peak
     // of a smooth surface (pi (...)^2 ~ 1e-11) the clamp caps D. Clamps of
     // the square or of the bracket, at the usual epsilons; any other
     // epsilon gets the group hint below, which names the clamp too.
@@ -109,7 +109,7 @@ std::vector<ProbeSpec> ggxProbes() {
                 {"the highlights of smooth surfaces too dim and flat-topped (the denominator clamped)",
                  "the denominator is clamped (max(" + std::string(ofSquare ? "denom * denom" : "denom") + ", " +
                      fmt(eps) + ")): at the peak of a smooth surface it is far smaller, and D must reach "
-                     "1 / (pi alpha^2) there: leave it unclamped (alpha >= 0.045^2 keeps it above 0)",
+                     "1 / (pi alpha^2) there: leave it unclamped (alpha >= MIN_ROUGHNESS^2 keeps it above 0)",
                  [=](const ProbeCase& c) {
                      dvec3 n = get(c, 0), h = get(c, 4);
                      double NoH = glm::dot(n, h), a = f(c, 8), a2 = a * a;

@@ -5,9 +5,9 @@
 
 // Roughness-aware Schlick Fresnel of the macro normal, for reflections of the
 // environment (not for point lights):
-//     Fr = F0 + (max(vec3(1 - r), F0) - F0) (1 - NoV)^5,  r = clamp(roughness, 0.045, 1)
+//     Fr = F0 + (max(vec3(1 - r), F0) - F0) (1 - NoV)^5,  r = clamp(roughness, MIN_ROUGHNESS, 1)
 vec3 F_SchlickRoughness(vec3 F0, float NoV, float roughness) {
-    float r = clamp(roughness, 0.045, 1.0);
+    float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     float m = 1.0 - clamp(NoV, 0.0, 1.0);
     float m2 = m * m;
     return F0 + (max(vec3(1.0 - r), F0) - F0) * (m2 * m2 * m);

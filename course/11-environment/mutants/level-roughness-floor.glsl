@@ -1,6 +1,6 @@
 // mutant of: 11-environment
-// mistake: the roughness clamped to [0.045, 1] (ggxAlpha's floor) before it picks the level: level 0, the mirror-sharp one, is never used (issue 35: it was told to clamp to [0, 1], which it did, differently)
-// caught by: the check's message or hint contains "not [0.045, 1]: level 0 holds roughness 0"
+// mistake: the roughness clamped to [MIN_ROUGHNESS, 1] (ggxAlpha's floor) before it picks the level: level 0, the mirror-sharp one, is never used (issue 35: it was told to clamp to [0, 1], which it did, differently)
+// caught by: the check's message or hint contains "not [MIN_ROUGHNESS, 1]: level 0 holds roughness 0"
 // Exercise 11: environment light, as real-time renderers approximate it.
 // Handout: course/11-environment/handout.md
 
@@ -25,7 +25,7 @@ vec3 shIrradiance(vec3 n) {
 // roughness k / (levels - 1), so the level is roughness * (levels - 1)
 // (roughness clamped to [0, 1]), a fraction between two levels.
 float prefilteredLevel(float roughness, int levels) {
-    return clamp(roughness, 0.045, 1.0) * float(levels - 1);
+    return clamp(roughness, MIN_ROUGHNESS, 1.0) * float(levels - 1);
 }
 
 // What environment light the hit sends to the viewer, from its parts:
