@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace rl::ref {
 
 namespace {
@@ -31,6 +33,11 @@ namespace {
 }  // namespace
 
 bool referenceInThisCopy() { return false; }
+
+// The framework's roughness convention, not a term of the model (exercise
+// 08's stub states it, shaders/common.glsl has MIN_ROUGHNESS): the picture's
+// bounce cutoff (render/bounce_cutoff.cpp) needs it to render.
+double clampRoughness(double roughness) { return std::clamp(roughness, kMinRoughness, 1.0); }
 
 Rendering renderCpu(const Scene&, int) { absent("rendering with --cpu"); }
 Rendering renderCpu(const Scene&, int, const EnvironmentOptions&) { absent("rendering with --cpu"); }
