@@ -50,7 +50,20 @@ function(course_symbol file symbol)
     set_source_files_properties(${file} PROPERTIES COMPILE_DEFINITIONS RL_UNIT_SYMBOL=${symbol})
   endif()
 endfunction()
-course_depends(${course_dir}/manifest.txt)
+course_depends(${course_dir}/manifest.txt ${course_dir}/unit.schema.json)
+
+# ---- every course file against course/unit.schema.json and the rules of
+# cmake/validate_course.py: one line naming the file, line and field ----------------
+find_program(RAYLAB_PYTHON3 NAMES python3)
+if(NOT RAYLAB_PYTHON3)
+  message(FATAL_ERROR "python3 is missing: the build checks the course's files with it (scripts/setup.sh installs it)")
+endif()
+execute_process(COMMAND ${RAYLAB_PYTHON3} ${CMAKE_CURRENT_LIST_DIR}/validate_course.py ${course_dir}
+                RESULT_VARIABLE course_valid OUTPUT_VARIABLE course_problem ERROR_VARIABLE course_problem)
+if(NOT course_valid EQUAL 0)
+  string(STRIP "${course_problem}" course_problem)
+  message(FATAL_ERROR " ${course_problem}")  # indented: CMake leaves the line as it is, unwrapped
+endif()
 
 # ---- the manifest ------------------------------------------------------------------
 file(READ ${course_dir}/manifest.txt manifest_text)
@@ -76,7 +89,7 @@ foreach(line IN LISTS manifest_lines)
   endif()
   if(NOT line MATCHES "^[0-9][0-9]-[a-z0-9-]+$")
     message(FATAL_ERROR "course/manifest.txt:${line_number}: \"${line}\" is no unit name (two digits, a dash, "
-                        "lower-case letters, digits and dashes, like 05-ggx, optionally followed by \"optional\")")
+                        "lower-case letters, digits and dashes, like NN-name, optionally followed by \"optional\")")
   endif()
   if(NOT EXISTS ${course_dir}/${line}/unit.json)
     message(FATAL_ERROR "course/manifest.txt:${line_number}: no unit ${line} (course/${line}/unit.json is missing)")
@@ -164,6 +177,26 @@ foreach(id IN LISTS RAYLAB_UNITS)
     string(APPEND source_lines "${unit}/probes.cpp ${symbol}\n")
     string(APPEND probe_decls "std::vector<ProbeSpec> unitProbes_${symbol}();\n")
     string(APPEND probe_cases "    if (id == \"${id}\") return unitProbes_${symbol}();\n")
+  elseif(EXISTS ${unit}/probes.json)
+    # A student edition: the probes as the instructor's build recorded them
+    # (checks/probe_data.h), compiled in; no probes.cpp, no reference.
+    course_depends(${unit}/probes.json)
+    file(READ ${unit}/probes.json record)
+    string(FIND "${record}" ")rl_probes\"" clash)
+    if(NOT clash EQUAL -1)
+      message(FATAL_ERROR "course/${id}/probes.json: holds the text )rl_probes\" that the build quotes it with")
+    endif()
+    # In pieces: a compiler may limit one string literal (MSVC: 16 KB); adjacent ones join.
+    string(LENGTH "${record}" record_length)
+    set(pieces "")
+    set(at 0)
+    while(at LESS record_length)
+      string(SUBSTRING "${record}" ${at} 8000 piece)
+      string(APPEND pieces "    R\"rl_probes(${piece})rl_probes\"\n")
+      math(EXPR at "${at} + 8000")
+    endwhile()
+    string(APPEND probe_decls "const char* const kRecordedProbes_${symbol} =\n${pieces};\n")
+    string(APPEND probe_cases "    if (id == \"${id}\") return probesFromRecord(kRecordedProbes_${symbol}, \"course/${id}/probes.json\");\n")
   endif()
   if(EXISTS ${unit}/reference.cpp)
     list(APPEND RAYLAB_UNIT_REFERENCE_SOURCES ${unit}/reference.cpp)
@@ -207,8 +240,9 @@ ${unit_entries}    };
 }  // namespace rl
 ")
 
-write_generated(course_probes.cpp "// Written by cmake/course.cmake from course/*/probes.cpp: do not edit.
+write_generated(course_probes.cpp "// Written by cmake/course.cmake from course/*/probes.cpp (or probes.json): do not edit.
 #include \"checks/probe_cases.h\"
+#include \"checks/probe_data.h\"
 
 namespace rl {
 

@@ -2,7 +2,7 @@
 //
 // Until you write these, the framework looks straight ahead from every pixel
 // and paints grey/magenta stripes (NOT STARTED). Check with:
-//     build/bin/raylab check --exercise 1
+//     ./raylab check --exercise 1
 
 // Offset of sample s inside its pixel, for n*n samples per pixel.
 // Contract: the centre of cell (a, b) of an n x n grid over the unit square,

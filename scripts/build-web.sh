@@ -70,6 +70,15 @@ if [ -z "$SOURCES" ]; then
     echo "scripts/build-web.sh: found no raylab_layer() sources in CMakeLists.txt" >&2
     exit 1
 fi
+# The reference model's sources, or in a student edition, which leaves them
+# out, the file that says they are not in this copy (CMakeLists.txt chooses
+# the same way).
+if [ -f app/reference/cpu_reference.cpp ]; then
+    SOURCES="$SOURCES app/reference/cpu_reference.cpp app/reference/pixel_breakdown.cpp app/reference/brdf_reference.cpp"
+    SOURCES="$SOURCES app/reference/environment_reference.cpp app/reference/split_sum.cpp"
+else
+    SOURCES="$SOURCES app/reference/absent.cpp"
+fi
 # The browser's own: the WebGL2 context (instead of gl/context.cpp and
 # context_egl.cpp) and the entry points.
 SOURCES="$SOURCES web/context_webgl.cpp web/raylab_web.cpp"
@@ -106,6 +115,9 @@ OBJECTS=$(sed -n 's/^OBJECTS = //p' "$OUT/Makefile.objects")
 # student's own files (docs/web.md).
 SOLUTIONS=""
 if [ -d solutions ]; then SOLUTIONS="--embed-file solutions@/raylab/solutions"; fi
+# What a student edition's instructor recorded from the reference (the check
+# scenes' pictures, the split-sum table): its page checks against them.
+if [ -d recorded ]; then SOLUTIONS="$SOLUTIONS --embed-file recorded@/raylab/recorded"; fi
 # The units the manifest leaves out: their solutions are framework code.
 FRAMEWORK_UNITS=""
 for unit in course/*/; do

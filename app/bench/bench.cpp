@@ -47,20 +47,6 @@ namespace {
 
 bool wanted(const Options& o, const std::string& sweep) { return o.sweeps.empty() || o.sweeps.count(sweep) > 0; }
 
-// The numerical strategies: a naive version of one solution function, taken
-// from the mutants the checker must catch (tests/mutants/) or the naive
-// versions the hard-case tests compare against (tests/mutants/).
-struct Strategy {
-    const char* name;
-    const char* exerciseFile;
-    const char* path;  // relative to the source root
-};
-const Strategy kStrategies[] = {
-    {"strategy:textbook-intersect", "02-intersect.glsl", "course/02-intersect/mutants/textbook-quadratic.glsl"},
-    {"strategy:naive-D", "05-ggx.glsl", "course/05-ggx/mutants/textbook-denominator.glsl"},
-    {"strategy:fixed-offset", "04-shadows.glsl", "course/04-shadows/mutants/fixed-offset.glsl"},
-};
-
 struct ModelVariant {
     const char* name;
     ShadingModel model;
@@ -191,14 +177,21 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
         }
     }
     if (wanted(options, "strategies")) {
-        for (const Strategy& st : kStrategies) {
-            Variant* v = add(st.name, "strategies", true, scene);
-            fs::path file = sourceRoot() / st.path;
-            if (fs::is_regular_file(file))
-                v->overrides[st.exerciseFile] = file;
-            else
-                v->skipReason = "strategy file " + std::string(st.path) + " not found";
-        }
+        // The numerical strategies: a naive version of one exercise's
+        // function, one of the mistakes its checker must catch, named by
+        // its unit ("bench_strategies" in unit.json).
+        for (const ExerciseInfo& e : allExercises())
+            for (const BenchStrategy& st : e.benchStrategies) {
+                Variant* v = add("strategy:" + st.name, "strategies", true, scene);
+                const fs::path file = sourceRoot() / e.unitDir() / st.mutant;
+                if (fs::is_regular_file(file))
+                    v->overrides[e.file()] = file;
+                else if (!hasSolutions())
+                    v->skipReason = "not in this copy: a student edition has no mutants (" + e.unitDir() + "/" +
+                                    st.mutant + ")";
+                else
+                    v->skipReason = "strategy file " + e.unitDir() + "/" + st.mutant + " not found";
+            }
     }
     if (wanted(options, "environment") && scene.environment) {
         // The GL picture's approximations of environment light, one setting
@@ -367,9 +360,13 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 }
                 Rendering got = renderer.readBack();
                 const Rendering& expected = v.environment && exact ? exact->withVisibility : reference;
-                if (got.display.width != expected.display.width || got.display.height != expected.display.height)
+                const bool noReference = expected.display.width == 0;  // a student edition: none in this copy
+                if (!noReference &&
+                    (got.display.width != expected.display.width || got.display.height != expected.display.height))
                     got = resampleNearest(got, expected.display.width, expected.display.height);
-                if (v.environment && exact) {
+                if (noReference) {
+                    // times only: the error columns stay 0, and the note says why
+                } else if (v.environment && exact) {
                     m.error = compareRenderings(got, exact->withVisibility);
                     m.errorWithoutVisibility = compareRenderings(got, exact->withoutVisibility);
                 } else {
@@ -377,7 +374,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                 }
                 m.skipped = false;
                 m.clock = clock == Clock::Gpu ? "gpu" : clock == Clock::Wall ? "wall" : "cpu";
-                m.note.clear();
+                m.note = noReference ? "no error: the CPU reference is not in this copy (a student edition)" : "";
             } catch (const Error& e) {  // ShaderError included: a variant that does not build
                 if (!v.outside.empty()) throw;  // asked for by name: its error (file:line) ends the run
                 programs[i] = PictureProgram();
@@ -497,7 +494,10 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
         // The converged reference of every other sweep; the environment
         // sweep's exact references, computed once per scene and run.
         Rendering reference;
-        if (otherRows) {
+        if (!ref::referenceInThisCopy()) {
+            log << "bench: " << name << ": not in this copy: a student edition has no CPU reference; "
+                << "times only, no error columns\n";
+        } else if (otherRows) {
             Scene converged = scene;
             converged.render.spp = options.referenceSpp;
             auto start = std::chrono::steady_clock::now();
@@ -506,7 +506,7 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
                 << " at " << options.referenceSpp << " spp in " << int(msSince(start)) << " ms\n";
         }
         std::optional<ExactReferences> exact;
-        if (environmentRows) {
+        if (environmentRows && ref::referenceInThisCopy()) {
             log << "bench: " << name << ": ";
             exact = exactReferences(scene, options.environmentSamples, log);
         }

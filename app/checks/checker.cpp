@@ -111,6 +111,17 @@ ExerciseReport reportFromJson(const json& j) {
 
 // ---- check scenes ------------------------------------------------------------------------
 
+std::filesystem::path checkReferenceFile(const std::string& scene, const char* extension) {
+    return sourceRoot() / "recorded" / "check-scenes" / (scene + extension);
+}
+
+Rendering recordedCheckReference(const std::string& scene) {
+    Rendering r;
+    r.radiance = readPfm(checkReferenceFile(scene, ".pfm").string());
+    r.display = readPng(checkReferenceFile(scene, ".png").string());
+    return r;
+}
+
 std::vector<CheckScene> makeCheckScenes() {
     auto sized = [](Scene s, int w, int h) {
         s.render.width = w;
@@ -133,7 +144,8 @@ std::vector<CheckScene> makeCheckScenes() {
         {"lecture-scaled-1e-3", scaledScene(lecture, 1e-3), {}},
         {"wide-srgb-4spp", wide, {}},
     };
-    for (CheckScene& c : list) c.reference = ref::renderCpu(c.scene);
+    for (CheckScene& c : list)
+        c.reference = ref::referenceInThisCopy() ? ref::renderCpu(c.scene) : recordedCheckReference(c.name);
     return list;
 }
 
@@ -291,8 +303,11 @@ ProbeOutcome evaluateProbe(const ProbeSpec& spec, const std::vector<std::array<f
     // 4. No cause the numbers support: say where it fails, with the counts.
     bool everyGroupFails = std::all_of(groups.begin(), groups.end(), [](const auto& g) { return g.second.first > 0; });
     if (everyGroupFails) {
-        out.hint = "fails on every kind of input (" + countText(failed, total) +
-                   " cases): compare your formula with the handout, term by term";
+        // Every group, but perhaps not every case: say which, so that "6 of
+        // 45" does not read as "everywhere".
+        out.hint = (failed == total ? "fails on all " + std::to_string(total) + " cases, of every kind"
+                                    : "fails on " + countText(failed, total) + " cases, some of every kind") +
+                   ": compare your formula with the handout, term by term";
         return out;
     }
     std::vector<std::pair<std::string, std::pair<int, int>>> failing;
@@ -906,7 +921,7 @@ std::optional<ExerciseReport> checkTogether(const CheckOptions& options) {
     return report;
 }
 
-std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl) {
+std::map<int, bool> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl) {
     // Each exercise's function names, as its shipped stub declares them.
     static const std::vector<std::pair<int, std::vector<std::string>>> declared = [] {
         std::vector<std::pair<int, std::vector<std::string>>> out;
@@ -920,11 +935,25 @@ std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation
     }();
     static const std::regex comments(R"(//[^\n]*|/\*[\s\S]*?\*/)");
     constexpr std::uintmax_t kLargestExercise = 1 << 20;  // as the checks read an exercise file
-    std::set<int> called;
+    std::map<int, bool> called;  // exercise number -> called by the files themselves (else through the framework)
     std::vector<int> todo{exercise.number};
+    auto add = [&](int number, bool direct) {
+        if (number == exercise.number || called.count(number)) return;
+        called[number] = direct;
+        todo.push_back(number);
+    };
     while (!todo.empty()) {
         const ExerciseInfo& caller = findExercise(std::to_string(todo.back()));
         todo.pop_back();
+        // What the unit declares: the functions each of its functions builds on
+        // ("needs") and those the framework calls for it ("framework_calls":
+        // the intersection and the shading behind a bounce).
+        for (const ExerciseFunction& f : caller.functions) {
+            for (const std::string& name : f.needs)
+                if (const ExerciseInfo* owner = exerciseOfFunction(name); owner && owner->inCourse) add(owner->number, true);
+            for (const std::string& name : f.frameworkCalls)
+                if (const ExerciseInfo* owner = exerciseOfFunction(name); owner && owner->inCourse) add(owner->number, false);
+        }
         std::string code;
         try {
             code = std::regex_replace(readRegularFile(impl.fileFor(caller.file()), kLargestExercise), comments, " ");
@@ -935,8 +964,7 @@ std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation
             if (number == exercise.number || number == caller.number || called.count(number)) continue;
             for (const std::string& name : names)
                 if (std::regex_search(code, std::regex("\\b" + name + "\\s*\\("))) {
-                    called.insert(number);
-                    todo.push_back(number);
+                    add(number, true);
                     break;
                 }
         }
@@ -996,17 +1024,19 @@ ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOption
         return checkExercise(exercise, options, scenes);
     }
     if (report.status == CheckStatus::Fail) {
-        // A failure may come from an exercise this one builds on, which the
-        // stub stood in for: name the first it calls, else the first earlier one.
+        // A failure may come from an exercise this one calls, which the stub
+        // stood in for: name the first of them in the course's order, only
+        // one it calls (its file, or the framework for it), never one it
+        // merely follows.
         auto it = options.fileOverride.find(exercise.number);
         const fs::path file = it != options.fileOverride.end() ? it->second : options.implDir / exercise.file();
         std::string waiting;
-        for (int number : exercisesCalled(exercise, checkCompanions(exercise, file, options)))
-            if (!passes(number) && waiting.empty())
-                waiting = "it calls exercise " + findExercise(std::to_string(number)).id;
-        for (const ExerciseInfo& e : allExercises())
-            if (e.number < exercise.number && !passes(e.number) && waiting.empty())
-                waiting = "it may build on exercise " + e.id;
+        const std::map<int, bool> called = exercisesCalled(exercise, checkCompanions(exercise, file, options));
+        for (const ExerciseInfo& e : allExercises()) {
+            auto c = called.find(e.number);
+            if (c != called.end() && !passes(e.number) && waiting.empty())
+                waiting = "it calls exercise " + e.id + (c->second ? "" : " (through the framework)");
+        }
         if (!waiting.empty())
             report.hint = waiting + ", whose probes do not pass yet (its stub stood in for it): make that one pass " +
                           "first; " + report.hint;

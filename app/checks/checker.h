@@ -97,6 +97,12 @@ struct CheckScene {
     Rendering reference;
 };
 std::vector<CheckScene> makeCheckScenes();
+// Where a student edition keeps a check scene's reference rendering, recorded
+// by the instructor's build (`raylab course --record DIR`): recorded/check-scenes/NAME.pfm
+// (linear radiance) and .png (display), read when the reference is not in
+// this copy (ref::referenceInThisCopy()).
+std::filesystem::path checkReferenceFile(const std::string& scene, const char* extension);
+Rendering recordedCheckReference(const std::string& scene);
 
 // Checks one exercise (in a child process when options.isolate).
 ExerciseReport checkExercise(const ExerciseInfo& exercise, const CheckOptions& options,
@@ -158,15 +164,18 @@ std::map<int, ExerciseReport> checkProbesOfAll(const CheckOptions& options, cons
 // Then each exercise's verdict: when every exercise passes its probes, the
 // full check with the student's own files (its image step included);
 // otherwise the first pass's report, a PASS saying which exercise its image
-// step waits for (imagesWaitingFor), a FAIL whose hint names the exercise it
-// calls (or the earlier one) that does not pass yet. A check scene runs every exercise: with any of them
+// step waits for (imagesWaitingFor), a FAIL whose hint names the first
+// exercise it calls (its files, its unit's "needs" and "framework_calls")
+// that does not pass yet, and no other. A check scene runs every exercise: with any of them
 // wrong, its picture says nothing about the one under check.
 ExerciseReport checkWithOwnFiles(const ExerciseInfo& exercise, const CheckOptions& options,
                                  const std::vector<CheckScene>& scenes, const std::map<int, ExerciseReport>& firstPass);
 
 // The exercises (numbers) whose functions the files of `impl` for `exercise`
-// call, directly or through each other; `exercise` itself not included.
-std::set<int> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl);
+// call, directly or through each other, or that their units declare
+// ("needs"; "framework_calls": what the framework calls on their behalf,
+// mapped to false); `exercise` itself not included.
+std::map<int, bool> exercisesCalled(const ExerciseInfo& exercise, const Implementation& impl);
 
 // The one-line verdict printed by `raylab check` for a report, plus its hint
 // and details on the following lines (indented).

@@ -1,15 +1,28 @@
-// raylab course [--markdown] [--from DIR]
+// raylab course [--markdown] [--from DIR] [--record DIR]
 // The course as the registry has it (course/manifest.txt and the units'
 // unit.json): one line per exercise in the course's order, with its title,
 // the functions its students write, its weight in the default rubric and its
 // handout; then the units the manifest leaves out (framework code). With
 // --markdown, the table the documents show (docs/exercises/README.md holds
 // its output, and tests/docs/test_docs.cpp keeps the two equal), links
-// relative to the folder DIR (default: the repository root).
+// relative to the folder DIR (default: the repository root). With --record,
+// what a student edition needs from the reference, written under DIR as the
+// edition lays it out (scripts/student-edition.sh): course/NN-name/probes.json
+// for each exercise (checks/probe_data.h), recorded/check-scenes/NAME.pfm and
+// .png (the check scenes' reference pictures) and recorded/split-sum-32-32.json
+// (the environment light's table at its default settings).
 #include "commands/commands.h"
 
+#include "checks/checker.h"
+#include "checks/probe_data.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "course/exercise_registry.h"
+#include "reference/cpu_reference.h"
+#include "reference/split_sum.h"
+#include "render/environment_resources.h"
+
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <iomanip>
@@ -24,6 +37,34 @@ std::string functionList(const ExerciseInfo& e, bool markdown) {
     for (const ExerciseFunction& f : e.functions)
         out += (out.empty() ? "" : ", ") + (markdown ? "`" + f.name + "`" : f.name);
     return out;
+}
+
+// Everything --record writes; the folders are made as needed.
+void recordForEdition(const std::filesystem::path& dir) {
+    if (!ref::referenceInThisCopy())
+        throw Error("--record: not in this copy: a student edition has no reference to record from");
+    namespace fs = std::filesystem;
+    for (const ExerciseInfo& e : allExercises()) {
+        const fs::path file = dir / e.unitDir() / "probes.json";
+        fs::create_directories(file.parent_path());
+        writeFileAtomic(file, recordProbes(unitProbes(e.id)).dump() + "\n");
+    }
+    const fs::path scenes = dir / "recorded" / "check-scenes";
+    fs::create_directories(scenes);
+    for (const CheckScene& c : makeCheckScenes()) {
+        writePfm((scenes / (c.name + ".pfm")).string(), c.reference.radiance);
+        writePng((scenes / (c.name + ".png")).string(), c.reference.display);
+    }
+    const EnvironmentSettings defaults;
+    nlohmann::json table = nlohmann::json::array();
+    for (const glm::dvec2& v : ref::splitSumTable(defaults.tableSize, defaults.tableSamples)) {
+        table.push_back(v.x);
+        table.push_back(v.y);
+    }
+    writeFileAtomic(dir / "recorded" /
+                        ("split-sum-" + std::to_string(defaults.tableSize) + "-" + std::to_string(defaults.tableSamples) +
+                         ".json"),
+                    table.dump() + "\n");
 }
 
 }  // namespace
@@ -46,7 +87,15 @@ void addCourseCommand(CLI::App& app) {
     cmd->add_flag("--markdown", *markdown, "The table the documents show (docs/exercises/README.md)");
     cmd->add_option("--from", *from, "With --markdown: links relative to this folder of the repository")
         ->check(notEmpty());
-    cmd->callback([markdown, from] {
+    auto record = std::make_shared<std::string>();
+    cmd->add_option("--record", *record,
+                    "Write what a student edition needs from the reference under DIR (scripts/student-edition.sh)")
+        ->check(notEmpty());
+    cmd->callback([markdown, from, record] {
+        if (!record->empty()) {
+            recordForEdition(*record);
+            return;
+        }
         if (*markdown) {
             std::cout << courseMarkdownTable(*from);
             return;

@@ -58,6 +58,13 @@ ExerciseInfo parseUnit(const UnitSource& source) {
         if (e.showsWith.rfind("RL_", 0) != 0) throw Error(where + ": \"shows_with\" must name an RL_ define");
     }
     if (j.contains("light")) e.light = textOf(j["light"], where + ": \"light\"");
+    if (j.contains("bench_strategies"))
+        for (const json& s : j["bench_strategies"]) {
+            if (!s.is_object() || !s.contains("name") || !s.contains("mutant"))
+                throw Error(where + ": every bench strategy needs \"name\" and \"mutant\"");
+            e.benchStrategies.push_back({textOf(s["name"], where + ": bench strategy name"),
+                                         textOf(s["mutant"], where + ": bench strategy mutant")});
+        }
     if (!j.contains("functions") || !j["functions"].is_array() || j["functions"].empty())
         throw Error(where + ": needs \"functions\" (an array of at least one)");
     for (const json& f : j["functions"]) {
@@ -71,6 +78,9 @@ ExerciseInfo parseUnit(const UnitSource& source) {
         fn.probeCall = textOf(f["probe"], where + ": \"" + fn.name + "\" probe");
         if (f.contains("needs"))
             for (const json& n : f["needs"]) fn.needs.push_back(textOf(n, where + ": \"" + fn.name + "\" needs"));
+        if (f.contains("framework_calls"))
+            for (const json& n : f["framework_calls"])
+                fn.frameworkCalls.push_back(textOf(n, where + ": \"" + fn.name + "\" framework_calls"));
         fn.geometry = f.value("geometry", false);
         e.functions.push_back(std::move(fn));
     }
@@ -140,7 +150,8 @@ const ExerciseInfo& findExercise(const std::string& key) {
     }
     std::string valid;
     for (const ExerciseInfo& e : allExercises()) valid += (valid.empty() ? "" : ", ") + std::to_string(e.number);
-    throw Error("--exercise: no exercise " + quotedValue(key) + " (expected one of " + valid + ", or a name like 05-ggx)");
+    throw Error("--exercise: no exercise " + quotedValue(key) + " (expected one of " + valid + ", or a name like " +
+                (allExercises().empty() ? std::string("NN-name") : allExercises().front().id) + ")");
 }
 
 std::string normalisedGlsl(const std::string& text) {

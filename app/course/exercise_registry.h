@@ -38,9 +38,20 @@ struct ExerciseFunction {
     // of them is ready too, so a finished 08 over an unfinished 05 gives
     // Lambert alone, not a wrong highlight.
     std::vector<std::string> needs;
+    // Functions of other units the framework calls on this one's behalf
+    // ("framework_calls"): the intersection and the shading behind a bounce.
+    // The checker's hint names their units when they do not pass yet.
+    std::vector<std::string> frameworkCalls;
     // A function without which there is no geometry to see (the camera ray,
     // the intersection): the stripes then cover every pixel, not a frame.
     bool geometry = false;
+};
+
+// A numerical strategy `raylab bench --sweeps strategies` times: one of the
+// unit's mutants in place of its solution ("bench_strategies" in unit.json).
+struct BenchStrategy {
+    std::string name;    // "naive-D": the bench row is "strategy:naive-D"
+    std::string mutant;  // "mutants/textbook-denominator.glsl", relative to the unit's folder
 };
 
 struct ExerciseInfo {
@@ -63,6 +74,7 @@ struct ExerciseInfo {
     // add nothing to the picture (RL_ENVIRONMENT); while the unit is
     // unfinished, only programs with it show the stripes. Empty: every program.
     std::string showsWith;
+    std::vector<BenchStrategy> benchStrategies;  // "bench_strategies"
     std::string file() const { return id + ".glsl"; }
     std::string unitDir() const { return "course/" + id; }  // relative to the repository's root
     std::string handout() const { return unitDir() + "/handout.md"; }

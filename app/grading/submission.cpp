@@ -443,7 +443,11 @@ void stageItems(const std::vector<Item>& items, const Collector& found, const fs
         for (const Item& e : items)
             if (!hiddenPath(e.rel)) names.push_back(e.rel);
         out.problem = StagedSubmission::Problem::Empty;
-        out.problemReason = "no exercise files (01-camera.glsl ... 10-display.glsl) in the submission " + shownName +
+        out.problemReason = "no exercise files (" +
+                            (requiredExercises().empty()
+                                 ? std::string("none in the course")
+                                 : requiredExercises().front().file() + " ... " + requiredExercises().back().file()) +
+                            ") in the submission " + shownName +
                             "; it holds " + listSome(names);
         return;
     }

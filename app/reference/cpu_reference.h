@@ -17,6 +17,12 @@
 
 namespace rl::ref {
 
+// False in a student edition built without the reference's sources
+// (app/reference/absent.cpp, docs/instructor.md "A student edition"): every
+// function of this layer then throws rl::Error "not in this copy: ...", and
+// what needs its values reads them from what the instructor's build recorded.
+bool referenceInThisCopy();
+
 // How the reference integrates a scene's environment light (defined in
 // environment_reference.h; the defaults: 256 samples a strategy, seed 1,
 // with visibility). Scenes without an environment never look at it.

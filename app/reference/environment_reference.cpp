@@ -3,6 +3,7 @@
 #include "reference/environment_reference.h"
 
 #include "reference/brdf_reference.h"
+#include "reference/sh9.h"
 
 #include <glm/geometric.hpp>
 
@@ -277,6 +278,20 @@ dvec3 environmentLight(const Scene& scene, const Hit& hit, dvec3 v, const Enviro
         };
     return integrateEnvironmentLight(environment, *sampler, hit.n, v, sceneBrdf(scene, hit, v), escapes,
                                      options.samples, random);
+}
+
+// ---- SH irradiance (sh9.h): exercise 11's shIrradiance in double, so with the
+// reference, not with the projection a student edition keeps ------------------
+
+dvec3 sh9Irradiance(const Sh9& coefficients, dvec3 n) {
+    std::array<double, 9> Y = sh9Basis(n);
+    dvec3 E(0.0);
+    for (int k = 0; k < 9; ++k) E += coefficients[size_t(k)] * (sh9CosineFactor(sh9Band(k)) * Y[size_t(k)]);
+    return E;
+}
+
+dvec3 environmentIrradianceSh9(const Environment& environment, const Sh9& coefficients, dvec3 worldNormal) {
+    return environment.intensity * sh9Irradiance(coefficients, environmentLocalDirection(environment, worldNormal));
 }
 
 }  // namespace rl::ref

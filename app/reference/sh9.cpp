@@ -86,15 +86,4 @@ Sh9 projectSh9(const RadianceImage& image) {
     return out;
 }
 
-dvec3 sh9Irradiance(const Sh9& coefficients, dvec3 n) {
-    std::array<double, 9> Y = sh9Basis(n);
-    dvec3 E(0.0);
-    for (int k = 0; k < 9; ++k) E += coefficients[size_t(k)] * (sh9CosineFactor(sh9Band(k)) * Y[size_t(k)]);
-    return E;
-}
-
-dvec3 environmentIrradianceSh9(const Environment& environment, const Sh9& coefficients, dvec3 worldNormal) {
-    return environment.intensity * sh9Irradiance(coefficients, environmentLocalDirection(environment, worldNormal));
-}
-
 }  // namespace rl::ref

@@ -20,6 +20,7 @@
 #include "core/image.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <vector>
 
@@ -35,6 +36,10 @@ glm::dvec2 splitSumBrdf(double NoV, double roughness, int samples);
 // NoV = (i + 1/2)/size and roughness = (j + 1/2)/size (Filament's and
 // Karis's layout: n.v along x, roughness along y).
 std::vector<glm::dvec2> splitSumTable(int size, int samples);
+
+// A GGX half vector around +z for (u1, u2) in [0, 1)^2 (Walter et al. 2007
+// eq. 35): the sample directions of both the table and the prefiltering.
+glm::dvec3 ggxHalfVector(double u1, double u2, double alpha);
 
 // The environment prefiltered for perceptual roughness r (clamped to
 // [0.045, 1]) with n = v = r: each output pixel of a width x height

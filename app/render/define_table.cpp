@@ -3,6 +3,8 @@
 // comments the shaders carry where each is read, and of docs/performance.md.
 #include "render/define_table.h"
 
+#include "course/exercise_registry.h"
+
 #include "render/define_values.h"
 #include "render/scene_constants.h"
 
@@ -172,8 +174,12 @@ std::vector<DefineRow> makeTable() {
                  [](const DefineInput& in) {
                      // The checker's program serves the check of exercise 09 too,
                      // whose traceRay may still return NOT_STARTED for some rays:
-                     // there only the course's own 09 is trusted.
-                     if (in.purpose == Purpose::Probe) return when(in.facts.courseFile("09-reflections.glsl"));
+                     // there only the course's own traceRay is trusted (the
+                     // file of the unit that writes it, whatever its name).
+                     if (in.purpose == Purpose::Probe) {
+                         const ExerciseInfo* bounce = exerciseOfFunction("traceRay");
+                         return when(bounce != nullptr && in.facts.courseFile(bounce->file()));
+                     }
                      return kOne;
                  }});
     t.push_back({"RL_RESIDUAL_SPHERES", kGeometry, kPicture | kLivePictures, {}, {},

@@ -18,8 +18,9 @@ Implementation fromSingleFile(const fs::path& file, const std::string& option) {
     for (const ExerciseInfo& e : allExercises())
         if (e.id == id && file.extension() == ".glsl")
             return Implementation{fallbackImplementationDir(), {{e.file(), file}}};
-    throw Error(option + ": " + file.string() + " is not named after an exercise (expected e.g. 05-ggx.glsl or " +
-                "05-ggx--what-is-wrong.glsl)");
+    const std::string example = allExercises().empty() ? std::string("NN-name") : allExercises().front().id;
+    throw Error(option + ": " + file.string() + " is not named after an exercise (expected e.g. " + example +
+                ".glsl or " + example + "--what-is-wrong.glsl)");
 }
 
 }  // namespace

@@ -40,7 +40,8 @@ ViewCaption viewCaption(View view, int bounce, const Scene& scene, const Shading
 
 // The mapping the shader applies before writing the grey level (views.glsl):
 //   D: D / (1 + D);  F views: log10(F) / 2 + 1 (0.01 .. 1);  G, n.l, shadow: the value;
-//   normals: n * 0.5 + 0.5;  radiance views: the display step of the scene.
+//   normals: n * 0.5 + 0.5;  radiance views: the display step of the scene
+//   (-1 in a student edition, which has no CPU reference: no tick there).
 double scalePosition(View view, double value, const RenderSettings& render);
 
 // Where the caption box and the colour bar sit, in framebuffer pixels (origin

@@ -104,6 +104,24 @@ std::vector<ProbeSpec> intersectProbes() {
         float r = radii[k % 6], s = float(2 + k % 4);
         add(center + r * a - s * b, b, center, r, "exactly tangent ray (discriminant 0)");
     }
+    // The ray's origin and the sphere both far from (0, 0, 0), a few radii
+    // apart: f = origin - center is exact in float32 there (Sterbenz), so
+    // every form built on f is as good as near the origin, but c written
+    // out as |origin|^2 - 2 origin.center + |center|^2 - r^2 loses the
+    // ~1e8 it cancels to rounding of ~10 (issue 35: it passed every other
+    // case and changed pixels only for a far camera).
+    Random far(2035);
+    for (int k = 0; k < 8; ++k) {
+        const float distance = float(far.range(5e3, 2e4));
+        const vec3 base = distance * far.unitVector();
+        const vec3 towards = far.unitVector();
+        const float r = float(far.range(0.5, 1.5));
+        const float gap = float(far.range(3, 8));
+        const vec3 center = base + gap * towards;
+        const float miss = float(far.range(-0.8, 0.8));
+        const vec3 aim = center + miss * r * far.unitVector() - base;
+        add(base, aim, center, r, "origin and sphere far from (0, 0, 0) (1e4)");
+    }
     p.expected = [](const ProbeCase& c) { return value(R::intersectSphere(get(c, 0), get(c, 4), get(c, 8), f(c, 11))); };
     // t is computed from origin - center, which float32 rounds to ~1 ulp of
     // the larger of |origin| and |center| + radius; 1e-5 of that scale is
@@ -182,9 +200,13 @@ std::vector<ProbeSpec> intersectProbes() {
                               threshold});
     }
     p.groupHints = {
-        {"origin at the centre", "from the centre b = 0, and GLSL's sign(0.0) is 0, so q = 0: use b >= 0 ? 1 : -1"},
+        {"origin at the centre", "from the centre b = 0, where GLSL's sign(0.0) is 0 (so q = 0) and b / abs(b) is "
+                                 "0 / 0 = NaN: pick the sign with b >= 0.0 ? 1.0 : -1.0"},
         {"far sphere (distance 1e3 to 1e4)", "b^2 - c cancels in float32 for far spheres: use the discriminant "
                                               "r^2 - |f - b dir|^2 (perpendicular distance) and the roots c/q, q"},
+        {"origin and sphere far from (0, 0, 0) (1e4)",
+         "far from (0, 0, 0), c written out as |origin|^2 - 2 origin.center + |center|^2 - r^2 cancels in float32: "
+         "compute f = origin - center first and c = dot(f, f) - r^2"},
         {"origin inside the sphere", "from inside, the near root is behind the origin: take the far one"},
         {"sphere behind the origin", "both roots negative means NO_HIT"},
         {"nearly tangent ray", "a negative discriminant is a miss; zero or positive is a hit"},

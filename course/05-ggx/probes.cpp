@@ -95,8 +95,33 @@ std::vector<ProbeSpec> ggxProbes() {
          "alpha is already roughness^2; the formula squares it again: alpha^2",
          [=](const ProbeCase& c) { return dTextbookLike(c, R::kPi, false); }},
     };
+    // The denominator clamped from below against a division by zero that
+    // cannot happen (alpha >= MIN_ROUGHNESS^2 keeps it >= alpha^4 > 0): at the peak
+    // of a smooth surface (pi (...)^2 ~ 1e-11) the clamp caps D. Clamps of
+    // the square or of the bracket, at the usual epsilons; any other
+    // epsilon gets the group hint below, which names the clamp too.
+    // (The bracket is at least alpha^2 >= 4.1e-6, so only its larger
+    // epsilons change a value.)
+    for (double eps : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8}) {
+        for (bool ofSquare : {true, false}) {
+            if (!ofSquare && eps < 4.1e-6) continue;
+            d.mistakes.push_back(
+                {"the highlights of smooth surfaces too dim and flat-topped (the denominator clamped)",
+                 "the denominator is clamped (max(" + std::string(ofSquare ? "denom * denom" : "denom") + ", " +
+                     fmt(eps) + ")): at the peak of a smooth surface it is far smaller, and D must reach "
+                     "1 / (pi alpha^2) there: leave it unclamped (alpha >= MIN_ROUGHNESS^2 keeps it above 0)",
+                 [=](const ProbeCase& c) {
+                     dvec3 n = get(c, 0), h = get(c, 4);
+                     double NoH = glm::dot(n, h), a = f(c, 8), a2 = a * a;
+                     double den = glm::length2(glm::cross(n, h)) + NoH * NoH * a2;
+                     double den2 = ofSquare ? std::max(den * den, eps) : std::max(den, eps) * std::max(den, eps);
+                     return value(a2 / (R::kPi * den2));
+                 }});
+        }
+    }
     d.groupHints = {{"near the peak, smooth surface",
-                     "1 - (n.h)^2 cancels in float32 near n.h = 1: write it as |cross(n, h)|^2"}};
+                     "near n.h = 1, 1 - (n.h)^2 cancels in float32 (write it as |cross(n, h)|^2), and a clamp of "
+                     "the denominator (max(..., eps)) caps the peak, which reaches 1 / (pi alpha^2)"}};
     return {d};
 }
 

@@ -43,7 +43,10 @@ int closestHitLeaving(const Scene& scene, dvec3 o, dvec3 d, int leaving, R::Hit&
 }
 
 // A local trace loop with switches for the typical mistakes of exercise 09.
-dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, bool swapReflect) {
+// backgroundAfterLimit: the background added once more after the last
+// bounce too, as if the path escaped there (the background term after the loop).
+dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, bool swapReflect,
+                   bool backgroundAfterLimit = false) {
     dvec3 radiance(0), throughput(1);
     int leaving = -1;
     for (int bounce = 0; bounce <= scene.render.maxBounces; ++bounce) {
@@ -51,7 +54,7 @@ dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, 
         dir = glm::normalize(dir);  // closestHit() renormalises
         if (closestHitLeaving(scene, origin, dir, leaving, hit) < 0) {
             radiance += throughput * scene.render.background;
-            break;
+            return radiance;
         }
         radiance += throughput * R::shadeHit(scene, hit, -dir);
         const Material& m = scene.spheres[hit.sphere].material;
@@ -61,6 +64,7 @@ dvec3 traceVariant(const Scene& scene, dvec3 origin, dvec3 dir, bool attenuate, 
         dir = swapReflect ? hit.n - 2 * glm::dot(dir, hit.n) * dir : glm::reflect(dir, hit.n);
         leaving = hit.sphere;
     }
+    if (backgroundAfterLimit) radiance += throughput * scene.render.background;
     return radiance;
 }
 
@@ -155,8 +159,15 @@ std::vector<ProbeSpec> reflectionProbes() {
                                    return value(R::traceRadiance(scene, get(c, 0), get(c, 4)));
                                return value(dvec3(-2.0));
                            }});
+    tr.mistakes.push_back(
+        {"rays caught between mirrors end in the background colour (the background added after the last bounce)",
+         "a path that ends after maxBounces() bounces ends with nothing: the background counts only for a ray that "
+         "misses every sphere, not after the last bounce",
+         [scene](const ProbeCase& c) { return value(traceVariant(scene, get(c, 0), get(c, 4), true, false, true)); }});
     tr.groupHints = {{"metal sphere (bounces)", "check the bounce: origin offset, reflect(dir, n), throughput"},
-                     {"between two facing mirrors", "stop after the primary hit and maxBounces() bounces"}};
+                     {"between two facing mirrors",
+                      "stop after the primary hit and maxBounces() bounces, and add the background only for a ray "
+                      "that misses every sphere, never after the last bounce"}};
     return {fr, tr};
 }
 

@@ -135,7 +135,13 @@ std::vector<ProbeSpec> levelProbes() {
              return value(r * r * (f(c, 1) - 1.0));
          }},
     };
-    p.groupHints = {{"roughness outside [0, 1] (clamped)", "clamp the roughness to [0, 1] first"}};
+    p.mistakes.push_back(
+        {"the sharpest reflections a little blurry: the roughness clamped to [MIN_ROUGHNESS, 1]",
+         "clamp the roughness to [0, 1] here, not [MIN_ROUGHNESS, 1]: level 0 holds roughness 0 (that floor belongs "
+         "to alpha, ggxAlpha)",
+         [](const ProbeCase& c) { return value(std::clamp(f(c, 0), R::kMinRoughness, 1.0) * (f(c, 1) - 1.0)); }});
+    p.groupHints = {{"roughness outside [0, 1] (clamped)",
+                     "clamp the roughness to [0, 1] first (to [0, 1] exactly: level 0 holds roughness 0)"}};
     return {p};
 }
 

@@ -91,7 +91,7 @@ TEST(Hints, AMistakeMatchedOnlyWhereItDiffersIsNotNamed) {
     }));
     EXPECT_FALSE(contains(o.hint, "looks like")) << o.hint;
     EXPECT_FALSE(contains(o.hint, "aspect ratio")) << o.hint;
-    EXPECT_TRUE(contains(o.hint, "fails on every kind of input")) << o.hint;
+    EXPECT_TRUE(contains(o.hint, "of every kind: compare your formula")) << o.hint;
 }
 
 TEST(Hints, FailuresSpreadOverEveryKindOfInputNameNoGroup) {
@@ -107,7 +107,7 @@ TEST(Hints, FailuresSpreadOverEveryKindOfInputNameNoGroup) {
         return d;
     }));
     EXPECT_FALSE(contains(o.hint, "aspect ratio")) << o.hint;
-    EXPECT_TRUE(contains(o.hint, "fails on every kind of input (")) << o.hint;
+    EXPECT_TRUE(contains(o.hint, "of every kind: compare your formula")) << o.hint;
 }
 
 TEST(Hints, AGroupIsNamedOnlyWhenItsFailuresStandOut) {

@@ -1,5 +1,6 @@
 // Issue 11: a seeded, time-bounded fuzzer that runs the real `raylab` binary
-// on mutated scene files, command lines and shader folders, in a temporary
+// on mutated scene files, command lines and shader folders (and, issue 35,
+// configures mutated course files), in a temporary
 // folder, and checks raylab's promise on every input:
 //   - no signal (no crash) and no hang (a per-run timeout);
 //   - a bad input gives a non-zero exit status and exactly one line on
@@ -15,6 +16,7 @@
 // A failure prints the seed of the input and keeps it in
 // $TMPDIR/raylab_fuzz_failures/ so it can be run again by hand.
 #include "fuzz/fuzz_support.h"
+#include "support/test_support.h"
 
 #include "core/message.h"
 #include "course/exercise_registry.h"
@@ -27,6 +29,7 @@
 #include <sstream>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace rl::fuzz;
@@ -621,3 +624,74 @@ TEST_F(Fuzz, SubmissionNames) {
 }
 
 }  // namespace
+
+// ---- Course files (issue 35) ---------------------------------------------------
+//
+// A unit's unit.json mutated as the scene files are, a unit folder renamed
+// to an odd name, or the manifest mutated, in a copy of course/'s
+// configure-time files; then configured (cmake -P cmake/course.cmake, what
+// every build runs first). The promise: it configures, or it stops with one
+// message line naming a file of course/ (CMake's own "CMake Error at" header
+// aside), never a Python traceback or an internal error.
+TEST_F(Fuzz, CourseFiles) {
+    const fs::path course = sourceRoot() / "course";
+    std::vector<std::string> units;
+    for (const auto& e : fs::directory_iterator(course))
+        if (e.is_directory()) units.push_back(e.path().filename().string());
+    std::sort(units.begin(), units.end());
+    ASSERT_FALSE(units.empty());
+    Budget budget(settings_, 24);
+    for (std::uint64_t i = 0; budget.next(); ++i) {
+        Rng rng(settings_.seed, "course", i);
+        const fs::path root = rl::test::freshTempDir("fuzz-course");
+        fs::create_directories(root / "course");
+        for (const char* file : {"manifest.txt", "unit.schema.json"})
+            fs::copy_file(course / file, root / "course" / file);
+        for (const std::string& unit : units) {
+            fs::create_directories(root / "course" / unit);
+            for (const char* file : {"unit.json", "stub.glsl", "solution.glsl"})
+                if (fs::exists(course / unit / file)) fs::copy_file(course / unit / file, root / "course" / unit / file);
+        }
+        const std::string unit = units[rng.below(units.size())];
+        std::string description;
+        switch (rng.below(3)) {
+            case 0: {
+                Mutation m = mutateScene(readFile(course / unit / "unit.json"), rng);
+                rl::test::writeText(root / "course" / unit / "unit.json", m.text);
+                description = unit + "/unit.json: " + m.name;
+                break;
+            }
+            case 1: {
+                const std::string odd = rng.pick<std::string>(
+                    {"12 my unit", "12-q\"x", "12-a;b", "helpers", "12-\xc3\xa9t\xc3\xa9", "12-", "123-x", "12-A",
+                     "12-$(id)", "12-a\\b", "12-a'b"});
+                fs::create_directories(root / "course" / odd);
+                for (const char* file : {"unit.json", "stub.glsl"})
+                    fs::copy_file(course / unit / file, root / "course" / odd / file);
+                description = "a unit folder named " + odd;
+                break;
+            }
+            default: {
+                Mutation m = mutateScene(readFile(course / "manifest.txt"), rng);
+                rl::test::writeText(root / "course" / "manifest.txt", m.text);
+                description = "manifest.txt: " + m.name;
+                break;
+            }
+        }
+        const rl::test::CommandResult r = rl::test::runShell(
+            "cmake -DRAYLAB_ROOT_DIR=" + rl::test::shellQuoted(root.string()) + " -DRAYLAB_GENERATED_DIR=" +
+            rl::test::shellQuoted((root / "generated").string()) + " -P " +
+            rl::test::shellQuoted((sourceRoot() / "cmake" / "course.cmake").string()) + " 2>&1");
+        if (r.status == 0) continue;
+        // CMake's message: "CMake Error at FILE:LINE (message):", then the text indented.
+        std::vector<std::string> text;
+        std::istringstream lines(r.output);
+        for (std::string line; std::getline(lines, line);)
+            if (line.rfind("  ", 0) == 0) text.push_back(line);
+        EXPECT_EQ(text.size(), 1u) << "seed " << rng.seed() << ", " << description << ":\n" << r.output;
+        EXPECT_EQ(r.output.find("Traceback"), std::string::npos) << description << ":\n" << r.output;
+        EXPECT_EQ(r.output.find("internal error"), std::string::npos) << description << ":\n" << r.output;
+        EXPECT_NE(r.output.find("course/"), std::string::npos) << description << ":\n" << r.output;
+    }
+    budget.report("course files");
+}

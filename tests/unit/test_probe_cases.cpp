@@ -76,7 +76,7 @@ std::string hashOfExercise(int number, Fnv1a& all) {
 TEST(ProbeCases, AreTheSameOnEveryCompiler) {
     // Printed per exercise, so a failure says which exercise's cases moved.
     const char* pinned[10] = {
-        "ba2335859d616288", "7cdd21b41963cf6a", "4746a1127a3126d0", "2747ad3f7fed7813", "a51dcf6637b77ff7",
+        "ba2335859d616288", "647d2e49e98e2b15", "4746a1127a3126d0", "2747ad3f7fed7813", "a51dcf6637b77ff7",
         "73472b6f1005ae4c", "80061ade834b5b8c", "100a3969fd3c8f8e", "a78d4a37c161e3b6", "75e60b6da2e30741",
     };
     Fnv1a all;
@@ -85,7 +85,7 @@ TEST(ProbeCases, AreTheSameOnEveryCompiler) {
 
 TEST(ProbeCases, CountsArePinned) {
     // The counts alone, readable: clang++ and g++ once gave exercise 04 88 and 85 visibility cases.
-    const int pinned[10] = {110, 140, 81, 137, 76, 80, 56, 248, 112, 130};
+    const int pinned[10] = {110, 148, 81, 137, 76, 80, 56, 248, 112, 130};
     for (int e = 1; e <= 10; ++e) {
         int total = 0;
         for (const ProbeSpec& spec : probesForExercise(e)) total += int(spec.cases.size());

@@ -152,8 +152,8 @@ TEST(ShippedStubs, TheUnitsStubsNeverTheExercisesFolder) {
     fs::copy_file(root / "course" / "05-ggx" / "solution.glsl", root / "course" / "06-geometry" / "solution.glsl");
     test::writeText(root / "course" / "05-ggx" / "unit.json", "{\"title\": \"D\", \"functions\": [\n");
     out = manifestError("05-ggx\n");
-    EXPECT_NE(out.find("course/05-ggx/unit.json: failed parsing json"), std::string::npos) << out;
-    EXPECT_NE(out.find("Line 2"), std::string::npos) << out;
+    EXPECT_NE(out.find("course/05-ggx/unit.json:2:"), std::string::npos) << out;
+    EXPECT_NE(out.find("not one JSON value"), std::string::npos) << out;
 }
 
 // A picture program trusts traceRay() only once exercise 09 is written

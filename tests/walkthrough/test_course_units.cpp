@@ -238,3 +238,68 @@ TEST(Course, ACourseOfNine) {
     EXPECT_EQ(test::readText(repo / "ten.png"), test::readText(repo / "nine.png"))
         << "the picture changed when 09 left the course (its solution is framework code now)";
 }
+
+// Units own their exercises (issue 35): 02 and 04 replaced by units of other
+// names that provide the same functions (the intersection and the shadow
+// test), their folders, manifest lines and students' files renamed, and
+// nothing else changed. The course builds and runs end to end: the
+// solutions pass ten of ten, the stubs are NOT STARTED under the new names,
+// a renamed unit's mutant fails with its hint, the picture is byte for byte
+// the original course's, the live view runs (where this build has it), the
+// grade has the new columns, and the browser page's build lists the new units.
+TEST(Course, TwoUnitsRenamed) {
+    fs::path repo = repositoryCopy("renamed");
+    test::CommandResult before = test::runRaylab("render --size 96x72 -o " + (repo / "before.png").string());
+    ASSERT_EQ(before.status, 0) << before.output;
+    const std::vector<std::pair<std::string, std::string>> renames = {{"02-intersect", "02-hit-sphere"},
+                                                                      {"04-shadows", "04-occlusion"}};
+    std::string manifest = test::readText(repo / "course" / "manifest.txt");
+    for (const auto& [from, to] : renames) {
+        fs::rename(repo / "course" / from, repo / "course" / to);
+        fs::rename(repo / "exercises" / (from + ".glsl"), repo / "exercises" / (to + ".glsl"));
+        std::size_t at = manifest.find("\n" + from + "\n");
+        ASSERT_NE(at, std::string::npos) << manifest;
+        manifest.replace(at + 1, from.size(), to);
+    }
+    test::writeText(repo / "course" / "manifest.txt", manifest);
+
+    test::CommandResult build = runIn(repo, "scripts/build.sh");
+    ASSERT_EQ(build.status, 0) << build.output;
+    test::CommandResult solutions = runIn(repo, "./raylab check --impl solutions");
+    EXPECT_EQ(solutions.status, 0) << solutions.output;
+    EXPECT_NE(solutions.output.find("10 of 10 exercises pass"), std::string::npos) << solutions.output;
+    EXPECT_TRUE(std::regex_search(solutions.output, std::regex("02-hit-sphere +PASS"))) << solutions.output;
+    EXPECT_TRUE(std::regex_search(solutions.output, std::regex("04-occlusion +PASS"))) << solutions.output;
+    test::CommandResult stubs = runIn(repo, "./raylab check -e 2 -e 4");
+    EXPECT_EQ(stubs.status, 1) << stubs.output;
+    EXPECT_TRUE(std::regex_search(stubs.output, std::regex("02-hit-sphere +NOT STARTED"))) << stubs.output;
+    EXPECT_TRUE(std::regex_search(stubs.output, std::regex("04-occlusion +NOT STARTED"))) << stubs.output;
+    test::CommandResult mutant =
+        runIn(repo, "./raylab check -e 4 --file course/04-occlusion/mutants/fixed-offset.glsl --impl solutions");
+    EXPECT_EQ(mutant.status, 1) << mutant.output;
+    EXPECT_TRUE(std::regex_search(mutant.output, std::regex("04-occlusion +FAIL"))) << mutant.output;
+
+    test::CommandResult after = runIn(repo, "./raylab render --size 96x72 -o after.png");
+    ASSERT_EQ(after.status, 0) << after.output;
+    EXPECT_EQ(test::readText(repo / "before.png"), test::readText(repo / "after.png"))
+        << "the picture changed when 02 and 04 were renamed";
+    test::CommandResult bench = runIn(repo, "./raylab bench --sweeps strategies --size 16x12 --warmup 0 --frames 1 "
+                                            "--reference-spp 1");
+    EXPECT_EQ(bench.status, 0) << bench.output;
+    EXPECT_EQ(bench.output.find("not found"), std::string::npos) << bench.output;
+#ifdef RAYLAB_WITH_VIEW_TEST
+    test::CommandResult view = runIn(repo, "xvfb-run -a ./raylab view --frames 2 --size 64x48");
+    EXPECT_EQ(view.status, 0) << view.output;
+#endif
+
+    std::string header = gradeColumns(repo, repo / "solutions");
+    EXPECT_NE(header.find("02-hit-sphere"), std::string::npos) << header;
+    EXPECT_NE(header.find("04-occlusion"), std::string::npos) << header;
+    EXPECT_EQ(header.find("02-intersect"), std::string::npos) << header;
+    test::CommandResult listed = runIn(repo, "cmake -DRAYLAB_ROOT_DIR=. -DRAYLAB_GENERATED_DIR=web-generated "
+                                              "-P cmake/course.cmake && cat web-generated/course_sources.txt");
+    EXPECT_EQ(listed.status, 0) << listed.output;
+    EXPECT_NE(listed.output.find("course/04-occlusion/probes.cpp"), std::string::npos) << listed.output;
+    EXPECT_NE(test::readText(repo / "web-generated" / "course_units.cpp").find("{\"02-hit-sphere\", 1,"),
+              std::string::npos);
+}

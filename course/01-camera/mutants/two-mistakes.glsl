@@ -1,6 +1,6 @@
 // mutant of: 01-camera
 // mistake: two mistakes at once (+ 0.5 again and no normalize()): no single known mistake explains the numbers, and they fail on every kind of input
-// caught by: the check's message or hint contains "fails on every kind of input"
+// caught by: the check's message or hint contains "of every kind: compare your formula"
 // never says: "aspect ratio"
 // Exercise 01: camera rays. Handout: course/01-camera/handout.md
 

@@ -1,0 +1,97 @@
+// prefilter.cpp: the environment prefiltered for the split sum (see
+// split_sum.h): framework precomputation of what exercise 11 samples, no
+// term of the model, so a student edition keeps it.
+#include "reference/split_sum.h"
+
+#include "core/environment_image.h"
+#include "reference/brdf_reference.h"  // kMinRoughness (declarations only: a student edition keeps it)
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl::ref {
+
+using glm::dvec2;
+using glm::dvec3;
+
+namespace {
+
+constexpr double kPiPrefilter = 3.14159265358979323846;
+
+// Van der Corput's radical inverse in base 2: the second coordinate of Hammersley point i.
+double radicalInverse(unsigned bits) {
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return double(bits) * (1.0 / 4294967296.0);
+}
+
+
+}  // namespace
+
+// A GGX half vector around +z for (u1, u2): n.h from Walter et al. 2007 eq. 35.
+dvec3 ggxHalfVector(double u1, double u2, double alpha) {
+    double a2 = alpha * alpha;
+    double cos2 = (1.0 - u1) / (1.0 + (a2 - 1.0) * u1);
+    double cosTheta = std::sqrt(std::max(0.0, cos2));
+    double sinTheta = std::sqrt(std::max(0.0, 1.0 - cos2));
+    double phi = 2.0 * kPiPrefilter * u2;
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+}
+
+RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples) {
+    // alpha = r^2, r = clamp(roughness, kMinRoughness, 1): the framework's
+    // roughness convention (docs/model.md), stated in exercise 08's stub.
+    const double r = std::clamp(roughness, kMinRoughness, 1.0), alpha = r * r;
+    const int N = std::max(samples, 1);
+    // The Hammersley half vectors around +z, the same for every pixel.
+    std::vector<dvec3> halfVectors(size_t(N), dvec3(0.0));
+    for (int i = 0; i < N; ++i) halfVectors[size_t(i)] = ggxHalfVector((i + 0.5) / N, radicalInverse(unsigned(i)), alpha);
+    RadianceImage out;
+    out.width = width;
+    out.height = height;
+    out.rgb.assign(size_t(width) * size_t(height) * 3, 0.0f);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            dvec3 r = equirectDirection((x + 0.5) / width, (y + 0.5) / height);
+            // Tangent frame around r (Duff et al. 2017).
+            double sign = std::copysign(1.0, r.z);
+            double a = -1.0 / (sign + r.z);
+            double c = r.x * r.y * a;
+            dvec3 t(1.0 + sign * r.x * r.x * a, sign * c, -sign * r.x);
+            dvec3 b(c, sign + r.y * r.y * a, -r.y);
+            dvec3 sum(0.0);
+            double weight = 0.0;
+            for (const dvec3& hl : halfVectors) {
+                dvec3 h = hl.x * t + hl.y * b + hl.z * r;
+                double VoH = glm::dot(r, h);  // v = n = r
+                dvec3 l = 2.0 * VoH * h - r;
+                double NoL = glm::dot(r, l);
+                if (NoL <= 0.0) continue;
+                glm::dvec2 uv = equirectUv(glm::normalize(l));
+                sum += bilinearRadiance(image, uv.x, uv.y) * NoL;
+                weight += NoL;
+            }
+            dvec3 value = weight > 0.0 ? sum / weight : dvec3(0.0);
+            float* p = out.at(x, y);
+            for (int k = 0; k < 3; ++k) p[k] = float(value[k]);
+        }
+    return out;
+}
+
+double prefilterLevelRoughness(int level, int levels) { return levels > 1 ? double(level) / (levels - 1) : 0.0; }
+
+std::vector<RadianceImage> prefilterChain(const RadianceImage& image, int width, int height, int levels, int samples) {
+    std::vector<RadianceImage> chain;
+    for (int k = 0; k < levels; ++k) {
+        int w = std::max(width >> k, 8), h = std::max(height >> k, 4);
+        chain.push_back(prefilterEnvironment(image, prefilterLevelRoughness(k, levels), w, h, samples));
+    }
+    return chain;
+}
+
+}  // namespace rl::ref
