@@ -199,7 +199,8 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--clock", options->clock,
                     "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")
         ->capture_default_str();
-    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/; exercises/ where there is none)");
+    cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/; exercises/ where there is none)")
+        ->check(notEmpty());
     cmd->callback([options, cmd] {
         options->sizeGiven = cmd->count("--size") > 0;
         runBenchCommand(*options);

@@ -244,7 +244,8 @@ void addRecordCommand(CLI::App& app) {
     cmd->add_option("--orbit", o->orbit, "Turntable orbit about the scene's up, degrees over the clip (e.g. 360)");
     cmd->add_option("--sweep", o->sweep, "Slider sweep NAME:FROM:TO, NAME = exposure, roughness or metallic");
     cmd->add_option("--view", o->view, "Teaching view, as raylab render --view")->capture_default_str();
-    cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/; exercises/ where there is none)");
+    cmd->add_option("--impl", o->impl, "Exercise implementations (default: solutions/; exercises/ where there is none)")
+        ->check(notEmpty());
     cmd->add_option("--fps", o->fps, "Frame rate of the video")->check(CLI::Range(1, 120))->capture_default_str();
     cmd->add_option("--gif-fps", o->gifFps, "Frame rate of the GIF, at most --fps (fewer frames, a smaller file)")
         ->check(CLI::Range(1, 120))

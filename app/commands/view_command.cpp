@@ -19,7 +19,8 @@ void addViewCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("view", "Open the live ray tracer in a window (trackball, hot reload, panel)");
     cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted");
     cmd->add_option("--impl", options->impl,
-                    "Exercise implementations: a folder, or one exercise file such as a mutant (default: solutions/; exercises/ where there is none)");
+                    "Exercise implementations: a folder, or one exercise file such as a mutant (default: solutions/; exercises/ where there is none)")
+        ->check(notEmpty());
     cmd->add_option("--compare", options->compare,
                     "Second implementation (folder or file), shown right of a draggable divider (split-screen wipe)");
     cmd->add_option("--compare-model", options->compareModel,

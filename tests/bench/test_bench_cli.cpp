@@ -542,4 +542,8 @@ TEST(BenchCli, BadOptionsAreOneClearError) {
     auto clock = test::runRaylab("bench --clock sundial --size 8x8");
     EXPECT_EQ(clock.status, 1);
     EXPECT_NE(clock.output.find("--clock"), std::string::npos) << clock.output;
+    // An empty folder name (the fuzzer's find: it ran with the defaults and exited 0).
+    auto emptyImpl = test::runRaylab("bench --impl '' --size 8x8");
+    EXPECT_EQ(emptyImpl.status, 2);
+    EXPECT_NE(emptyImpl.output.find("--impl"), std::string::npos) << emptyImpl.output;
 }
