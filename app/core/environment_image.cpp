@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/message.h"
 
 #include <algorithm>
 #include <cmath>
@@ -85,13 +86,51 @@ std::string hdrScanlineProblem(const std::string& bytes, int width, int height) 
     return "";
 }
 
+// The resolution line of a .hdr, read here before stb_image sees it: stb
+// reads "-Y H +X W" with strtol and casts to int, so 4294967300 wraps to 4,
+// and a 0 or a missing number crashes its decoder (a division by the width,
+// a write past a 0-row image). Each number must be written in 1 to 9 decimal
+// digits and be at least 1; stb's orientation is the only one it decodes.
+void requireHdrResolution(const std::string& bytes, const std::string& path) {
+    std::size_t pos = bytes.find("\n\n");
+    if (pos == std::string::npos) return;  // stb refuses the file itself
+    pos += 2;
+    const std::size_t end = std::min(bytes.find('\n', pos), std::min(bytes.size(), pos + 64));
+    const std::string line = bytes.substr(pos, end - pos);
+    auto refuse = [&](const std::string& why) {
+        throw Error(path + ": cannot read the environment image (its resolution line " + quotedValue(line) + " " + why + ")");
+    };
+    if (line.compare(0, 3, "-Y ") != 0) refuse("is not \"-Y height +X width\", the orientation raylab reads");
+    auto number = [&](std::size_t& at, const char* what) {
+        std::size_t digits = 0;
+        long long value = 0;
+        while (at < line.size() && line[at] >= '0' && line[at] <= '9' && digits < 10) {
+            value = value * 10 + (line[at++] - '0');
+            ++digits;
+        }
+        if (digits == 0) refuse(std::string("has no ") + what);
+        if (digits > 9 || (at < line.size() && line[at] >= '0' && line[at] <= '9'))
+            refuse(std::string("gives a ") + what + " too large to be an image's");
+        if (value < 1) refuse(std::string("gives a ") + what + " of 0: an image has at least one pixel a side");
+        return value;
+    };
+    std::size_t at = 3;
+    const long long height = number(at, "height");
+    if (line.compare(at, 4, " +X ") != 0) refuse("is not \"-Y height +X width\", the orientation raylab reads");
+    at += 4;
+    const long long width = number(at, "width");
+    if (at != line.size()) refuse("has more after the width");
+    requireSize(width, height, path);  // before decoding: a lying header cannot ask for gigabytes
+}
+
 RadianceImage decodeHdr(const std::string& bytes, const std::string& path) {
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     int length = int(bytes.size());  // bytes.size() <= kMaxEnvironmentFileBytes < 2^31
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(data, length, &w, &h, &channels))
         throw Error(path + ": cannot read the environment image (" + stbi_failure_reason() + ")");
-    requireSize(w, h, path);  // before decoding: a lying header cannot ask for gigabytes
+    requireHdrResolution(bytes, path);
+    requireSize(w, h, path);
     std::string problem = hdrScanlineProblem(bytes, w, h);
     if (!problem.empty()) throw Error(path + ": cannot read the environment image (corrupt HDR: " + problem + ")");
     float* pixels = stbi_loadf_from_memory(data, length, &w, &h, &channels, 3);

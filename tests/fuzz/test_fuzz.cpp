@@ -695,3 +695,64 @@ TEST_F(Fuzz, CourseFiles) {
     }
     budget.report("course files");
 }
+
+// ---- Image headers (issue 34) ----------------------------------------------------
+
+// An environment scene whose image's header is mutated where the sizes are
+// read: the .hdr's resolution line and the PFM's size line, with zero,
+// negative, wrapped (2^32 + n), huge, missing and trailing numbers. Every one
+// is refused in one line naming the image, or decodes; none crashes (stb's
+// decoder divided by a width of 0 and took 4294967300 for 4).
+TEST_F(Fuzz, ImageHeaders) {
+    const fs::path folder = sourceRoot() / "scenes" / "environments";
+    const std::string hdr = readFile(folder / "sky.hdr");
+    const std::string sceneText = readFile(folder / "sky-spheres.json");
+    Budget budget(settings_, 40);
+    for (std::uint64_t i = 0; budget.next(); ++i) {
+        Rng rng(settings_.seed, "image", i);
+        // Sizes no image can have, and a few it can (which then decode or
+        // not, as the pixel data after them allows).
+        const std::set<std::string> possible = {"1", "4", "7", "8", "128", "256"};
+        auto odd = [&]() -> std::string {
+            return rng.pick<std::string>({"0", "-1", "-128", "4294967296", "4294967300", "2147483648", "99999999999",
+                                          "", " ", "1e3", "0x10", "+8", "00", "1", "7", "4097", "256 junk"});
+        };
+        const bool pfm = rng.below(2) == 0;
+        std::string image, name, description, w, h;
+        if (pfm) {
+            w = rng.below(3) ? odd() : "8";
+            h = rng.below(3) ? odd() : "4";
+            image = std::string(rng.below(2) ? "PF" : "Pf") + "\n" + w + " " + h + "\n-1.0\n" +
+                    std::string(8 * 4 * 12, '\0');
+            name = "env.pfm";
+            description = "PFM size line '" + w + " " + h + "'";
+        } else {
+            const std::size_t line = hdr.find("\n\n") + 2, end = hdr.find('\n', line);
+            h = rng.below(3) ? odd() : "128";
+            w = rng.below(3) ? odd() : "256";
+            const std::string resolution = rng.pick<std::string>({"-Y ", "+Y ", "-Y  ", "-X "}) + h +
+                                           rng.pick<std::string>({" +X ", " -X ", " +X  ", "+X "}) + w;
+            // The sky's pixels, or a few zero bytes (a small image's flat scanlines).
+            image = hdr.substr(0, line) + resolution + (rng.below(2) ? hdr.substr(end) : "\n" + std::string(256, '\0'));
+            name = "env.hdr";
+            description = ".hdr resolution line '" + resolution + "'";
+        }
+        Sandbox box;
+        box.write(name, image);
+        std::string scene = sceneText;
+        const std::size_t at = scene.find("\"sky.hdr\"");
+        ASSERT_NE(at, std::string::npos) << "sky-spheres.json names sky.hdr";
+        scene.replace(at, 9, "\"" + name + "\"");
+        box.write("scene.json", scene);
+        box.write("out.png", "the previous picture");
+        Invocation run;
+        run.args = {"render", "scene.json", "-o", "out.png", "--size", "16x12"};
+        run.outputs = {"out.png"};
+        run.culprits = {name};
+        run.description = description;
+        run.seed = rng.seed();
+        run.mayPass = possible.count(w) && possible.count(h);  // a wrapped 4294967300 must not read as 4
+        expectPromise(box, run, settings_);
+    }
+    budget.report("image headers");
+}
