@@ -62,7 +62,8 @@ for unit in course/*/; do
     [ -f "$unit/solution.glsl" ] || continue
     name=$(basename "$unit").glsl
     { echo "// my own copy of the solution, with this comment"; cat "$unit/solution.glsl"; } > "$students/commented/$name"
-    alternative=$(find "$unit/alternatives" -name '*.glsl' 2>/dev/null | sort | head -1)
+    alternative=""
+    [ -d "$unit/alternatives" ] && alternative=$(find "$unit/alternatives" -name '*.glsl' | sort | head -1)
     cp "${alternative:-$students/commented/$name}" "$students/alternatives/$name"
 done
 scenes="scenes/metal-row.json tests/bench/course-row-ground.json scenes/lecture.json tests/bench/random-30.json"
