@@ -28,9 +28,9 @@ MIN_BODY = 12
 SKIP_TOP = {'build', 'build-headless', 'build-glfw', 'build-asan', 'build-web', 'node_modules'}
 EXTENSIONS = {'.glsl', '.frag', '.vert', '.md', '.cpp', '.h', '.js', '.mjs', '.py', '.sh', '.txt', '.json',
               '.html', '.in', '.cmake'}
-COMMENTS = re.compile(r'//[^\n]*|/\*.*?\*/', re.S)
 WHITE = re.compile(r'\s+')
-HEADER = re.compile(r'^[ \t]*[A-Za-z_]\w*[ \t]+([A-Za-z_]\w*)[ \t]*\([^)]*\)\s*\{', re.M)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from glsl_functions import COMMENTS, definitions  # noqa: E402
 
 
 def code_form(text):
@@ -45,15 +45,8 @@ def quoted_form(text):
 
 def bodies(path):
     """(function name, normalised body) for each top-level function of a GLSL file."""
-    text = COMMENTS.sub('', open(path, encoding='utf-8').read())
-    out = []
-    for m in HEADER.finditer(text):
-        depth, i = 1, m.end()
-        while i < len(text) and depth:
-            depth += {'{': 1, '}': -1}.get(text[i], 0)
-            i += 1
-        out.append((m.group(1), WHITE.sub('', text[m.end():i - 1])))
-    return out
+    text, found = definitions(open(path, encoding='utf-8').read())
+    return [(m.group(2), WHITE.sub('', text[m.end():i - 1])) for m, i in found]
 
 
 def main():

@@ -25,8 +25,9 @@ import re
 import subprocess
 import sys
 
-COMMENTS = re.compile(r'//[^\n]*|/\*.*?\*/', re.S)
-HEADER = re.compile(r'^[ \t]*([A-Za-z_]\w*)[ \t]+([A-Za-z_]\w*)[ \t]*\(([^)]*)\)\s*\{', re.M)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from glsl_functions import COMMENTS, HEADER, definitions  # noqa: E402
+
 QUALIFIERS = {'in', 'const', 'highp', 'mediump', 'lowp'}
 
 
@@ -42,15 +43,8 @@ def param_types(params):
 
 def functions(text):
     """(return type, name, parameter types, whole definition) of each top-level function."""
-    text = COMMENTS.sub('', text)
-    out = []
-    for m in HEADER.finditer(text):
-        depth, i = 1, m.end()
-        while i < len(text) and depth:
-            depth += {'{': 1, '}': -1}.get(text[i], 0)
-            i += 1
-        out.append((m.group(1), m.group(2), param_types(m.group(3)), text[m.start():i]))
-    return out
+    text, found = definitions(text)
+    return [(m.group(1), m.group(2), param_types(m.group(3)), text[m.start():end]) for m, end in found]
 
 
 def course(tree):

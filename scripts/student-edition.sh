@@ -121,7 +121,7 @@ leave_out=(
     shaders/model_variants.glsl      # the model's lobes and their variants, line for line
     app/bench/expert.cpp app/bench/expert_scene.cpp app/bench/expert_scene.h  # writes the model fused into one shader
     docs/exercises/images/make-images.sh scripts/judge-kinds.py scripts/judge-hard-kinds.py
-    scripts/student-edition.sh scripts/answer-leaks.py scripts/attack-leaks.py scripts/edition-readme.py
+    scripts/student-edition.sh scripts/answer-leaks.py scripts/attack-leaks.py scripts/glsl_functions.py scripts/edition-readme.py
 )
 if [ "$with_reference" -eq 0 ]; then
     leave_out+=(
