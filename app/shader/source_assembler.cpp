@@ -1,9 +1,8 @@
 #include "shader/source_assembler.h"
 
-#include "core/legacy_text.h"
-
 #include "core/error.h"
 #include "core/file_handle.h"
+#include "core/legacy_text.h"
 #include "core/paths.h"
 #include "shader/loop_guard.h"
 
@@ -147,10 +146,6 @@ bool isValidUtf8(const std::string& s, std::size_t& badOffset) {
 
 }  // namespace
 
-namespace {
-std::string readSourceTail(std::string text, const std::string& shown);
-}  // namespace
-
 std::string readSourceFile(const fs::path& path) {
     const std::string shown = displayPath(path);
     // Opened without blocking (a FIFO would wait for a writer), then checked
@@ -192,27 +187,20 @@ std::string readSourceFile(const fs::path& path) {
         // One rule for check, grade, --ask and the browser page: bytes that are not UTF-8 inside
         // comments are read as Windows-1252 (core/legacy_text.h); outside a comment they are an error.
         LegacyTextResult legacy = commentsFromWindows1252(text);
-        if (legacy.badLine == 0) return readSourceTail(std::move(legacy.text), shown);
-        bad = legacy.badOffset;
-        int line = 1 + int(std::count(text.begin(), text.begin() + long(bad), '\n'));
-        throw Error(shown + ":" + std::to_string(line) + ": file is not UTF-8 text (byte " + std::to_string(bad) +
-                    ")");
+        if (legacy.badLine != 0) {
+            bad = legacy.badOffset;
+            int line = 1 + int(std::count(text.begin(), text.begin() + long(bad), '\n'));
+            throw Error(shown + ":" + std::to_string(line) + ": file is not UTF-8 text (byte " + std::to_string(bad) +
+                        ")");
+        }
+        text = std::move(legacy.text);
     }
-    return readSourceTail(std::move(text), shown);
-}
-
-namespace {
-
-// What every source file must be past its encoding: no NUL byte.
-std::string readSourceTail(std::string text, const std::string& shown) {
     if (auto nul = text.find('\0'); nul != std::string::npos) {
         int line = 1 + int(std::count(text.begin(), text.begin() + long(nul), '\n'));
         throw Error(shown + ":" + std::to_string(line) + ": file contains a NUL byte, not GLSL text");
     }
     return text;
 }
-
-}  // namespace
 
 namespace {
 
