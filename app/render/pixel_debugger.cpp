@@ -265,7 +265,7 @@ std::vector<std::array<float, 4>> recordPixelValues(const ShaderProgram& program
     gl::DeleteVertexArrays(1, &vertexArray);
     gl::DeleteFramebuffers(1, &framebuffer);
     gl::DeleteTextures(1, &target);
-    gl::UseProgram(0);  // as before the call (the program itself unbinds when deleted: shader/program.cpp)
+    gl::UseProgram(0);  // the caller's program is not left current (its own deletion unbinds it too: shader/program.cpp)
     gl::BindFramebuffer(GL_FRAMEBUFFER, GLuint(previousFramebuffer));
     gl::Viewport(previousViewport[0], previousViewport[1], previousViewport[2], previousViewport[3]);
     if (error != GL_NO_ERROR) throw Error("OpenGL error while asking a pixel: " + gl::errorName(error));

@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "core/float_range.h"
-#include "core/float_range.h"
 #include "core/light_surface.h"
 #include "core/message.h"
 #include "render/bounce_cutoff.h"
