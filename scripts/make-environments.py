@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Makes the environment images raylab ships (issue 24), from formulas: nothing
-is downloaded. Writes scenes/environments/{sky.hdr, studio.hdr, white.pfm}.
+is downloaded. Writes scenes/environments/{sky.hdr, studio.hdr, white.pfm, small-sun.pfm}.
 
     python3 scripts/make-environments.py [OUTPUT_FOLDER]
 
@@ -63,6 +63,21 @@ def sky(d):
     ground = (0.30, 0.26, 0.21)
     fade = 1.0 - 0.5 * min(-d[1] * 3.0, 1.0)  # darker straight down
     return tuple(c * fade for c in ground)
+
+
+# ---- a small bright sun: one pixel of a 128x64 map, on a dim sky ---------------
+# (issue 34: the case where a heavy-tailed estimate and SH9's ringing show)
+SMALL_SUN = from_angles(40.0, 25.0)
+SMALL_SUN_RADIUS = math.radians(1.0)
+SMALL_SUN_RADIANCE = (20000.0, 19000.0, 17000.0)  # irradiance about 6 at normal incidence
+
+
+def small_sun(d):
+    if dot(d, SMALL_SUN) >= math.cos(SMALL_SUN_RADIUS):
+        return SMALL_SUN_RADIANCE
+    if d[1] >= 0.0:
+        return mix((0.25, 0.28, 0.32), (0.05, 0.09, 0.2), math.sqrt(d[1]))
+    return (0.08, 0.07, 0.06)
 
 
 # ---- the studio: a dark room with three soft boxes ---------------------------
@@ -155,6 +170,7 @@ def main():
     write_hdr(os.path.join(folder, "sky.hdr"), render(sky, 256, 128))
     write_hdr(os.path.join(folder, "studio.hdr"), render(studio, 256, 128))
     write_pfm(os.path.join(folder, "white.pfm"), render(white, 64, 32))
+    write_pfm(os.path.join(folder, "small-sun.pfm"), render(small_sun, 128, 64))
 
 
 if __name__ == "__main__":

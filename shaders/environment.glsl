@@ -126,9 +126,16 @@ vec2 splitSumLookup(float NoV, float roughness) {
     return mix(mix(s00, s10, a.x), mix(s01, s11, a.x), a.y);
 }
 
+#if defined(RL_ENV_OCCLUSION) && RL_ENV_OCCLUSION != 0
+#include "environment_occlusion.glsl"  // the spheres' caps taken out of both parts
+#endif
+
 // The environment light a hit sends towards v: exercise 11's diffuse and
-// specular parts on the host's tables. Not shadowed by other spheres
-// (docs/model.md, "Environment light"): the integral with V = 1.
+// specular parts on the host's tables, with RL_ENV_OCCLUSION shadowed by the
+// other spheres (environment_occlusion.glsl); without it the integral with
+// V = 1 (docs/model.md, "Environment light"). SH9 irradiance rings below
+// zero opposite a small bright source: it is clamped at 0, as the light it
+// stands for.
 vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
     float NoV = clamp(dot(hit.n, v), 1e-4, 1.0);
 #ifdef RL_ENV_IRRADIANCE_MAP
@@ -138,8 +145,15 @@ vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
 #else
     vec3 E = u_envIntensity * shIrradiance(environmentLocal(hit.n));
 #endif
-    vec3 r = environmentLocal(reflect(-v, hit.n));
-    vec3 prefiltered = u_envIntensity * prefilteredRadiance(r, prefilteredLevel(m.roughness, u_envLevels));
+    E = max(E, vec3(0.0));
+    vec3 reflected = reflect(-v, hit.n);
+    vec3 prefiltered =
+        u_envIntensity * prefilteredRadiance(environmentLocal(reflected), prefilteredLevel(m.roughness, u_envLevels));
+#if defined(RL_ENV_OCCLUSION) && RL_ENV_OCCLUSION != 0
+    OccludedLight kept = occludeEnvironment(hit, reflected, m.roughness, E, prefiltered);
+    E = kept.irradiance;
+    prefiltered = kept.prefiltered;
+#endif
     return environmentShading(E, prefiltered, splitSumLookup(NoV, m.roughness), m);
 }
 #endif

@@ -25,6 +25,10 @@ std::string environmentVariantName(const EnvironmentApproximation& a) {
     if (a.prefilterLevels > 0) parts.push_back("levels=" + std::to_string(a.prefilterLevels));
     if (a.prefilterSamples > 0) parts.push_back("prefilter-samples=" + std::to_string(a.prefilterSamples));
     if (a.lutSize > 0) parts.push_back("lut=" + std::to_string(a.lutSize));
+    if (a.occlusion >= 0) {
+        static const char* const names[] = {"none", "caps", "directional"};
+        parts.push_back(std::string("occlusion=") + (a.occlusion <= 2 ? names[a.occlusion] : "?"));
+    }
     if (parts.empty()) return "env:default";
     std::string name = "env:" + parts[0];
     for (std::size_t i = 1; i < parts.size(); ++i) name += "," + parts[i];
@@ -59,14 +63,18 @@ std::vector<EnvironmentApproximation> environmentSweep() {
     for (int samples : {8, 32, 128, 512}) add({0, 0, 0, samples, 0});
     // The split-sum table.
     for (int size : {4, 8, 16, 32, 64}) add({0, 0, 0, 0, size});
+    // Occlusion by the spheres (shaders/environment_occlusion.glsl): none, and each strategy.
+    for (int occlusion : {0, 1, 2}) out.push_back({0, 0, 0, 0, 0, occlusion});
     return out;
 }
 
 std::string environmentApproximationUnsupported(const EnvironmentApproximation&) { return ""; }
 
 ShaderDefines environmentDefines(const EnvironmentApproximation& a) {
-    if (a.irradianceMap > 0) return {{"RL_ENV_IRRADIANCE_MAP", "1"}};
-    return {};
+    ShaderDefines defines;
+    if (a.irradianceMap > 0) defines["RL_ENV_IRRADIANCE_MAP"] = "1";
+    if (a.occlusion >= 0) defines["RL_ENV_OCCLUSION"] = std::to_string(a.occlusion);
+    return defines;
 }
 
 const EnvironmentBudget& environmentBudget() {

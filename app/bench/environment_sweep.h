@@ -34,12 +34,14 @@ struct EnvironmentApproximation {
     int prefilterLevels = 0;   // levels of the roughness-prefiltered environment
     int prefilterSamples = 0;  // GGX samples per prefiltered texel
     int lutSize = 0;           // the split-sum table is lutSize x lutSize
+    int occlusion = -1;        // -1: the table's RL_ENV_OCCLUSION; 0: none; 1, 2: its strategies (environment_occlusion.glsl)
 };
 // The renderer's settings for it: EnvironmentSettings{} with the non-zero fields put in.
 EnvironmentSettings environmentSettings(const EnvironmentApproximation& approximation);
 
 // "env:irradiance-map=32x16", "env:prefilter=256x128", "env:levels=6",
-// "env:prefilter-samples=64", "env:lut=32", and "env:default" when every field is 0.
+// "env:prefilter-samples=64", "env:lut=32", "env:occlusion=none|caps|directional",
+// and "env:default" when every field is 0 (occlusion -1).
 std::string environmentVariantName(const EnvironmentApproximation& approximation);
 
 // The sweep's rows, in table order: the default, then one setting changed at
@@ -49,7 +51,8 @@ std::vector<EnvironmentApproximation> environmentSweep();
 constexpr int kIrradianceMapWidths[] = {16, 32, 64, 128};
 
 // The defines a row's program adds to the picture's: RL_ENV_IRRADIANCE_MAP
-// for an irradiance map (shaders/environment.glsl), none otherwise.
+// for an irradiance map (shaders/environment.glsl), RL_ENV_OCCLUSION for an
+// occlusion strategy other than the table's, none otherwise.
 ShaderDefines environmentDefines(const EnvironmentApproximation& approximation);
 
 // Why the GL picture cannot show `approximation` in this build ("" when it

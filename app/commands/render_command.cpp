@@ -1,5 +1,5 @@
 // raylab render [SCENE] -o out.png [--hdr out.pfm] [--size WxH] [--spp N]
-//               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu] [--view NAME]
+//               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu [--samples N] [--seed S]] [--view NAME]
 // raylab render [SCENE] --ask X,Y [--impl DIR] [--size WxH]: the pixel debugger's
 //               table for pixel (X, Y) from the top left, no picture written
 #include "commands/commands.h"
@@ -12,12 +12,14 @@
 #include "checks/pixel_hint.h"
 #include "gl/context.h"
 #include "reference/cpu_reference.h"
+#include "reference/environment_reference.h"
 #include "render/gl_renderer.h"
 #include "render/define_table.h"
 #include "render/pixel_debugger.h"
 #include "shader/shader_library.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -37,6 +39,8 @@ struct RenderOptions {
     std::string impl;
     std::string view = "final";
     bool cpu = false;
+    int samples = 0;         // --cpu: environment samples per strategy per hit (0: the reference's default)
+    std::uint64_t seed = 0;  // --cpu: the environment integral's seed (0: the reference's default)
     bool generic = false;
     std::string ask;  // "X,Y": the pixel debugger instead of a picture
 };
@@ -103,6 +107,9 @@ void runRender(const RenderOptions& o) {
         if (o.cpu) throw Error("--ask: the pixel debugger asks the GL program; --cpu has no program to ask");
         return runAsk(o);
     }
+    if (!o.cpu && (o.samples != 0 || o.seed != 0))
+        throw Error(std::string(o.samples != 0 ? "--samples" : "--seed") +
+                    ": the CPU reference's environment integral only; add --cpu");
     requireOutputPath(o.png, "PNG");
     if (!o.pfm.empty()) requireOutputPath(o.pfm, "PFM");
     if (!o.pfm.empty()) {
@@ -119,7 +126,10 @@ void runRender(const RenderOptions& o) {
     Rendering result;
     if (o.cpu) {
         if (view != View::Final) throw Error("--view: the CPU reference renders the final image only");
-        result = ref::renderCpu(scene);
+        ref::EnvironmentOptions environment;  // independent of the pixel filter (--spp)
+        if (o.samples != 0) environment.samples = o.samples;
+        if (o.seed != 0) environment.seed = o.seed;
+        result = ref::renderCpu(scene, 0, environment);
     } else {
         Backend backend = parseBackend(o.backend);
         Implementation impl{o.impl.empty() ? defaultImplementationDir() : std::filesystem::path(o.impl), {}};
@@ -170,6 +180,12 @@ void addRenderCommand(CLI::App& app) {
                     "with an environment: irradiance, prefiltered, env-scale, env-bias")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");
+    cmd->add_option("--samples", options->samples,
+                    "With --cpu: environment light directions per strategy per hit (default 256; the pixel filter "
+                    "stays --spp's)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--seed", options->seed, "With --cpu: the seed of the environment integral (default 1)")
+        ->check(CLI::Range(std::uint64_t(1), std::uint64_t(~0ull)));
     cmd->add_option("--ask", options->ask,
                     "Pixel debugger: X,Y from the top left; prints the program's values beside the CPU reference's (no picture)")
         ->check(notEmpty());

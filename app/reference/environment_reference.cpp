@@ -53,71 +53,93 @@ void basisAround(dvec3 n, dvec3& t, dvec3& b) {
 
 EnvironmentSampler::EnvironmentSampler(const RadianceImage& image) : width_(image.width), height_(image.height) {
     const double pi = kPi;
-    cosTop_.resize(size_t(height_) + 1);
-    for (int y = 0; y <= height_; ++y) cosTop_[size_t(y)] = std::cos(pi * y / height_);
-    cosTop_[0] = 1.0;
-    cosTop_[size_t(height_)] = -1.0;
     const size_t count = size_t(width_) * size_t(height_);
-    std::vector<double> weight(count);
+    // Each pixel's weight: (its luminance + the floor) times its solid angle.
+    std::vector<double> solidAngle(static_cast<size_t>(height_));
+    for (int y = 0; y < height_; ++y)
+        solidAngle[size_t(y)] = 2.0 * pi / width_ * (std::cos(pi * y / height_) - std::cos(pi * (y + 1) / height_));
     double mean = 0.0;
     for (int y = 0; y < height_; ++y)
-        for (int x = 0; x < width_; ++x) {
-            double solidAngle = 2.0 * pi / width_ * (cosTop_[size_t(y)] - cosTop_[size_t(y) + 1]);
-            double l = luminance(image.at(x, y));
-            weight[size_t(y) * width_ + x] = l;
-            mean += l * solidAngle;
-        }
+        for (int x = 0; x < width_; ++x) mean += luminance(image.at(x, y)) * solidAngle[size_t(y)];
     mean /= 4.0 * pi;
     // Black image: uniform over the sphere.
-    double floor = mean > 0.0 ? 0.01 * mean : 1.0;
+    const double floor = mean > 0.0 ? 0.01 * mean : 1.0;
     cdf_.resize(count);
-    density_.resize(count);
+    probability_.resize(count);
     double total = 0.0;
-    for (int y = 0; y < height_; ++y) {
-        double solidAngle = 2.0 * pi / width_ * (cosTop_[size_t(y)] - cosTop_[size_t(y) + 1]);
+    for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
-            size_t k = size_t(y) * width_ + x;
-            weight[k] = (weight[k] + floor) * solidAngle;
-            total += weight[k];
+            const size_t k = size_t(y) * width_ + x;
+            probability_[k] = (luminance(image.at(x, y)) + floor) * solidAngle[size_t(y)];
+            total += probability_[k];
             cdf_[k] = total;
         }
-    }
     for (size_t k = 0; k < count; ++k) {
-        int y = int(k / size_t(width_));
-        double solidAngle = 2.0 * pi / width_ * (cosTop_[size_t(y)] - cosTop_[size_t(y) + 1]);
         cdf_[k] /= total;
-        density_[k] = weight[k] / total / solidAngle;  // probability of the pixel over its solid angle
+        probability_[k] /= total;
     }
     cdf_.back() = 1.0;
 }
 
+namespace {
+// A tent on [-1, 1] (the sum of two uniforms, minus 1): the weight a pixel's
+// value has in the bilinear lookup at that offset from its centre, in pixels.
+double tent(double u1, double u2) { return u1 + u2 - 1.0; }
+}  // namespace
+
 EnvironmentSampler::Sample EnvironmentSampler::sample(double u1, double u2, double u3) const {
     size_t k = size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u1) - cdf_.begin());
     k = std::min(k, cdf_.size() - 1);
-    while (density_[k] == 0.0 && k + 1 < cdf_.size()) ++k;  // never: every weight is > 0
-    int x = int(k % size_t(width_));
-    int y = int(k / size_t(width_));
-    // Uniform in solid angle inside the pixel: phi uniform, cos(theta) uniform.
-    double u = (x + u2) / width_;
-    double cosTheta = cosTop_[size_t(y)] + (cosTop_[size_t(y) + 1] - cosTop_[size_t(y)]) * u3;
-    double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    double phi = (u - 0.5) * 2.0 * kPi;
+    const int px = int(k % size_t(width_));
+    const int py = int(k / size_t(width_));
+    // Where the bilinear lookup spreads the pixel: a tent around its centre in
+    // each axis (texel coordinates x = u W - 1/2, y = v H - 1/2). Two more
+    // uniforms per axis from the two given ones (their low and high bits).
+    auto split = [](double u, double& a, double& b) {
+        const double scaled = u * 4294967296.0;
+        a = std::floor(scaled) / 4294967296.0;
+        b = scaled - std::floor(scaled);
+    };
+    double a2, b2, a3, b3;
+    split(u2, a2, b2);
+    split(u3, a3, b3);
+    double x = px + tent(a2, b2);
+    double y = py + tent(a3, b3);
+    // The lookup clamps y to the first and last centre: the half pixel beyond
+    // each is folded back, so the density there is the edge row's alone.
+    if (y < -0.5) y = -1.0 - y;
+    if (y > height_ - 0.5) y = 2.0 * height_ - 1.0 - y;
+    const double u = (x + 0.5) / width_;  // wraps: atan2 does
+    const double v = std::clamp((y + 0.5) / height_, 0.0, 1.0);
+    const double theta = kPi * v;
+    const double phi = (u - 0.5) * 2.0 * kPi;
     Sample s;
-    s.direction = dvec3(sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi));
-    s.pdf = density_[k];
+    s.direction = dvec3(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+    s.pdf = pdf(glm::dvec2(u - std::floor(u), v), std::cos(theta));
     return s;
 }
 
 double EnvironmentSampler::pdf(dvec3 d) const { return pdf(equirectUv(d), d.y); }
 
 double EnvironmentSampler::pdf(glm::dvec2 uv, double cosTheta) const {
-    int x = std::clamp(int(uv.x * width_), 0, width_ - 1);
-    // The row from cos(theta) against the edges (the same numbers sample() used).
-    double c = std::clamp(cosTheta, -1.0, 1.0);
-    int y = std::clamp(int(uv.y * height_), 0, height_ - 1);
-    while (y > 0 && c > cosTop_[size_t(y)]) --y;
-    while (y + 1 < height_ && c < cosTop_[size_t(y) + 1]) ++y;
-    return density_[size_t(y) * width_ + x];
+    // The pixels' probabilities interpolated exactly as the lookup
+    // interpolates their radiance (bilinearRadiance: between centres,
+    // wrapping in u, clamped in v): the density per unit of texel area.
+    const double x = uv.x * width_ - 0.5;
+    const double y = std::clamp(uv.y * height_ - 0.5, 0.0, double(height_ - 1));
+    const double fx = std::floor(x), fy = std::floor(y);
+    int x0 = int(fx) % width_;
+    if (x0 < 0) x0 += width_;
+    const int x1 = x0 + 1 >= width_ ? 0 : x0 + 1;
+    const int y0 = int(fy);
+    const int y1 = std::min(y0 + 1, height_ - 1);
+    const double ax = x - fx, ay = y - fy;
+    auto p = [&](int px, int py) { return probability_[size_t(py) * width_ + px]; };
+    const double perTexel = (1 - ay) * ((1 - ax) * p(x0, y0) + ax * p(x1, y0)) + ay * ((1 - ax) * p(x0, y1) + ax * p(x1, y1));
+    // Per steradian: d(omega) = sin(theta) d(theta) d(phi) = 2 pi^2 sin(theta) du dv, and du dv = dx dy / (W H).
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const double jacobian = 2.0 * kPi * kPi * std::max(sinTheta, 1e-12) / (double(width_) * double(height_));
+    return perTexel / jacobian;
 }
 
 std::shared_ptr<const EnvironmentSampler> environmentSampler(const Environment& environment) {

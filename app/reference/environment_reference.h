@@ -50,12 +50,17 @@ private:
 // A seed from several numbers (the options' seed, a ray's bits, a bounce).
 std::uint64_t mixSeed(std::uint64_t a, std::uint64_t b);
 
-// Importance sampling of a radiance map: a pixel is drawn with probability
-// proportional to (its luminance + 1% of the mean luminance) times its solid
-// angle, then a direction uniformly (in solid angle) inside that pixel. The
-// 1% keeps every direction possible, where bilinear filtering lights a black
-// pixel's corner. Works in the image's own frame; directions in and out are
-// world directions (turned by the environment's rotation).
+// Importance sampling of a radiance map by the bilinear lookup's own
+// distribution: a pixel is drawn with probability proportional to (its
+// luminance + 1% of the mean luminance) times its solid angle, then a point
+// around its centre with the weight the lookup gives the pixel there (a tent
+// of one pixel each way in x and in y, wrapping in u, the half pixel beyond
+// the first and last row folded back as the lookup clamps). The density is
+// then the pixels' probabilities interpolated as the lookup interpolates
+// their radiance, so radiance over density stays within the pixels' own
+// ratios (plus the sin(theta) of the equirectangular mapping): a one-pixel sun
+// is sampled where the lookup spreads it, not only at the floor. The 1% keeps
+// every direction possible. Works in the image's own frame.
 class EnvironmentSampler {
 public:
     explicit EnvironmentSampler(const RadianceImage& image);
@@ -69,9 +74,8 @@ public:
 
 private:
     int width_ = 0, height_ = 0;
-    std::vector<double> cdf_;       // over the pixels, row-major from the top; cdf_.back() = 1
-    std::vector<double> density_;   // pdf per steradian inside each pixel
-    std::vector<double> cosTop_;    // cos(theta) of each row's top and bottom edge: height + 1 values
+    std::vector<double> cdf_;          // over the pixels, row-major from the top; cdf_.back() = 1
+    std::vector<double> probability_;  // each pixel's probability
 };
 
 // The sampler of an environment's image, built once per image (cached while

@@ -114,6 +114,8 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
     r->table = cachedTable(settings.tableSize, settings.tableSamples);
     if (settings.irradianceMap > 0)
         r->irradiance = environmentIrradianceMap(*environment.image, settings.irradianceMap);
+    r->sun = findSun(*environment.image);
+    r->caps = capAverageChain(*environment.image, r->sun);
     std::lock_guard<std::mutex> lock(mutex);
     cache.push_back({environment.image, settings, r});
     return r;
@@ -132,16 +134,20 @@ std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& 
 EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResources> resources)
     : resources_(std::move(resources)) {
     const EnvironmentResources& r = *resources_;
-    rects_ = environmentAtlasRects(r.levels);
+    std::vector<RadianceImage> stacked = r.levels;
+    stacked.insert(stacked.end(), r.caps.begin(), r.caps.end());
+    const std::vector<glm::ivec4> all = environmentAtlasRects(stacked);
+    rects_.assign(all.begin(), all.begin() + std::ptrdiff_t(r.levels.size()));
+    capRects_.assign(all.begin() + std::ptrdiff_t(r.levels.size()), all.end());
     int atlasWidth = 0, atlasHeight = 0;
-    for (const glm::ivec4& rect : rects_) {
+    for (const glm::ivec4& rect : all) {
         atlasWidth = std::max(atlasWidth, rect.z);
         atlasHeight = rect.y + rect.w;
     }
     std::vector<float> atlas(std::size_t(atlasWidth) * atlasHeight * 3, 0.0f);
-    for (std::size_t k = 0; k < r.levels.size(); ++k)
-        for (int y = 0; y < rects_[k].w; ++y)
-            std::copy_n(r.levels[k].at(0, y), 3 * rects_[k].z, &atlas[3 * (std::size_t(rects_[k].y + y) * atlasWidth)]);
+    for (std::size_t k = 0; k < stacked.size(); ++k)
+        for (int y = 0; y < all[k].w; ++y)
+            std::copy_n(stacked[k].at(0, y), 3 * all[k].z, &atlas[3 * (std::size_t(all[k].y + y) * atlasWidth)]);
     std::vector<float> table;
     for (const glm::dvec2& e : r.table) {
         table.push_back(float(e.x));
@@ -203,6 +209,12 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
                       float(r.w));
     }
     gl::Uniform1i(p.uniform("u_envLevels"), int(rects_.size()));
+    for (std::size_t k = 0; k < capRects_.size(); ++k) {  // only a program with RL_ENV_OCCLUSION reads them
+        const glm::ivec4& r = capRects_[k];
+        gl::Uniform4f(p.uniform("u_envCapRect[" + std::to_string(k) + "]"), float(r.x), float(r.y), float(r.z),
+                      float(r.w));
+    }
+    gl::Uniform1i(p.uniform("u_envCapLevels"), int(capRects_.size()));
     float sh[27];
     for (int k = 0; k < 9; ++k)
         for (int c = 0; c < 3; ++c) sh[3 * k + c] = float(resources_->sh[std::size_t(k)][c]);
@@ -212,6 +224,13 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
     double a = environment.rotationDegrees * 3.14159265358979323846 / 180.0;
     gl::Uniform2f(p.uniform("u_envRotation"), environment.rotationDegrees == 0.0 ? 1.0f : float(std::cos(a)),
                   environment.rotationDegrees == 0.0 ? 0.0f : float(std::sin(a)));
+    gl::Uniform1f(p.uniform("u_envSmallestCap"), float(capLevelAngle(0)));
+    const EnvironmentSun& sun = resources_->sun;  // turned into the world: R_y(rotation), environmentLocal's inverse
+    const double c = environment.rotationDegrees == 0.0 ? 1.0 : std::cos(a), s = environment.rotationDegrees == 0.0 ? 0.0 : std::sin(a);
+    const glm::dvec3 d = sun.direction;
+    gl::Uniform4f(p.uniform("u_envSun"), float(c * d.x + s * d.z), float(d.y), float(-s * d.x + c * d.z),
+                  sun.present ? float(sun.angularRadius) : 0.0f);
+    gl::Uniform3f(p.uniform("u_envSunPower"), float(sun.power.x), float(sun.power.y), float(sun.power.z));
 }
 
 }  // namespace rl

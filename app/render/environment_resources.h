@@ -14,6 +14,7 @@
 
 #include "core/environment_image.h"
 #include "gl/gl_api.h"
+#include "render/environment_caps.h"
 #include "reference/sh9.h"
 #include "shader/program.h"
 
@@ -53,6 +54,8 @@ struct EnvironmentResources {
     ref::Sh9 sh;                               // ref::projectSh9
     std::vector<glm::dvec2> table;             // ref::splitSumTable, tableSize^2 (scale, bias)
     RadianceImage irradiance;                  // environmentIrradianceMap(map, settings.irradianceMap); empty for 0
+    EnvironmentSun sun;                        // findSun(map) (environment_caps.h): for the spheres' occlusion
+    std::vector<RadianceImage> caps;           // capAverageChain(map, sun): the same
 };
 
 // The irradiance map of `image` (its own frame, no intensity): width x
@@ -74,7 +77,7 @@ RadianceImage environmentIrradianceMap(const RadianceImage& image, int width);
 std::shared_ptr<const EnvironmentResources> environmentResources(const Environment& environment,
                                                                  const EnvironmentSettings& settings = {});
 
-// The atlas of the prefiltered levels: level k's texel rectangle (x, y,
+// The atlas of the prefiltered levels (then the cap levels): level k's texel rectangle (x, y,
 // width, height); the levels stacked top to bottom, each at x = 0.
 std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& levels);
 
@@ -86,7 +89,9 @@ public:
     EnvironmentTextures& operator=(const EnvironmentTextures&) = delete;
 
     // Binds the textures to units 1, 2, 3 (and 4: the irradiance map, where
-    // the settings have one) and sets every u_env*
+    // the settings have one) and sets every u_env* (u_envCapRect[], u_envCapLevels,
+    // u_envSmallestCap: the cap levels in the atlas; u_envSun, u_envSunPower: the
+    // sun in world directions; for environment_occlusion.glsl)
     // uniform of `program` (the program is made current).
     void bind(const ShaderProgram& program, const Environment& environment) const;
     const EnvironmentResources& resources() const { return *resources_; }
@@ -96,7 +101,8 @@ public:
 private:
     std::shared_ptr<const EnvironmentResources> resources_;
     GLuint textures_[4] = {0, 0, 0, 0};  // map, prefiltered atlas, split-sum table, irradiance map (or 0)
-    std::vector<glm::ivec4> rects_;
+    std::vector<glm::ivec4> rects_;     // the prefiltered levels' in the atlas
+    std::vector<glm::ivec4> capRects_;  // the cap levels', below them in the same atlas
 };
 
 }  // namespace rl

@@ -1,0 +1,203 @@
+// environment_caps.cpp: the radiance map averaged over caps; see environment_caps.h.
+#include "render/environment_caps.h"
+
+#include "core/environment_image.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rl {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxWidth = 256;
+
+// A map with its pixels' directions and solid angles, in double.
+struct Source {
+    int width = 0, height = 0;
+    std::vector<glm::dvec3> radiance;  // per pixel
+    std::vector<double> solidAngle;    // per row
+    std::vector<glm::dvec3> direction; // per pixel, the centre's
+};
+
+double rowSolidAngle(int y, int width, int height) {
+    return 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
+}
+
+// The image, halved (2 x 2 blocks: radiance times solid angle summed, over the
+// block's solid angle) until it is at most kMaxWidth wide; an odd side keeps
+// its last column or row alone.
+Source downsampled(const RadianceImage& image) {
+    int w = image.width, h = image.height;
+    std::vector<glm::dvec3> L(std::size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = image.at(x, y);
+            L[std::size_t(y) * w + x] = glm::dvec3(p[0], p[1], p[2]);
+        }
+    while (w > kMaxWidth) {
+        const int w2 = (w + 1) / 2, h2 = std::max(1, (h + 1) / 2);
+        std::vector<glm::dvec3> next(std::size_t(w2) * h2, glm::dvec3(0.0));
+        std::vector<double> weight(std::size_t(w2) * h2, 0.0);
+        for (int y = 0; y < h; ++y) {
+            const double omega = rowSolidAngle(y, w, h);
+            for (int x = 0; x < w; ++x) {
+                const std::size_t k = std::size_t(std::min(y / 2, h2 - 1)) * w2 + std::size_t(x / 2);
+                next[k] += L[std::size_t(y) * w + x] * omega;
+                weight[k] += omega;
+            }
+        }
+        for (std::size_t k = 0; k < next.size(); ++k) next[k] = weight[k] > 0.0 ? next[k] / weight[k] : glm::dvec3(0.0);
+        L = std::move(next);
+        w = w2;
+        h = h2;
+    }
+    Source s;
+    s.width = w;
+    s.height = h;
+    s.radiance = std::move(L);
+    for (int y = 0; y < h; ++y) s.solidAngle.push_back(rowSolidAngle(y, w, h));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) s.direction.push_back(equirectDirection((x + 0.5) / w, (y + 0.5) / h));
+    return s;
+}
+
+int levelWidth(double cap, int imageWidth) {
+    const double ideal = 8.0 * kPi / cap;
+    int width = 8;
+    while (width < kMaxWidth && width * 1.5 < ideal) width *= 2;
+    return std::max(2, std::min(width, std::min(imageWidth - imageWidth % 2, kMaxWidth)));
+}
+
+RadianceImage capLevel(const Source& s, double cap, int width) {
+    RadianceImage out;
+    out.width = width;
+    out.height = std::max(1, width / 2);
+    out.rgb.assign(std::size_t(out.width) * out.height * 3, 0.0f);
+    const double pixel = kPi / s.height;
+    const double reach = cap + pixel;  // beyond this no pixel has weight
+    const double cosReach = std::cos(std::min(reach, kPi));
+    const double cosOuter = std::cos(std::min(cap + 0.5 * pixel, kPi));  // weight 0 at or beyond
+    const double cosInner = std::cos(std::max(cap - 0.5 * pixel, 0.0));  // weight 1 at or within
+    for (int ty = 0; ty < out.height; ++ty)
+        for (int tx = 0; tx < out.width; ++tx) {
+            const glm::dvec3 w = equirectDirection((tx + 0.5) / out.width, (ty + 0.5) / out.height);
+            const double theta = kPi * (ty + 0.5) / out.height;
+            const int y0 = std::max(0, int(std::floor((theta - reach) / pixel)));
+            const int y1 = std::min(s.height - 1, int(std::ceil((theta + reach) / pixel)));
+            glm::dvec3 sum(0.0);
+            double weight = 0.0;
+            const double phi = 2.0 * kPi * ((tx + 0.5) / out.width);  // u's angle; a column's is 2 pi (x + 1/2) / W
+            for (int y = y0; y <= y1; ++y) {
+                // The columns the cap can reach in this row: all where it holds a pole.
+                const double sinRow = std::min(std::sin(kPi * y / s.height), std::sin(kPi * (y + 1) / s.height));
+                int first = 0, count = s.width;
+                if (theta - reach > 0.0 && theta + reach < kPi && sinRow > std::sin(reach)) {
+                    const double dphi = std::asin(std::sin(reach) / sinRow);
+                    const int half = int(std::ceil(dphi / (2.0 * kPi) * s.width)) + 1;
+                    if (2 * half + 1 < s.width) {
+                        first = int(std::floor(phi / (2.0 * kPi) * s.width)) - half;
+                        count = 2 * half + 1;
+                    }
+                }
+                for (int i = 0; i < count; ++i) {
+                    const int x = ((first + i) % s.width + s.width) % s.width;
+                    const std::size_t k = std::size_t(y) * s.width + x;
+                    const double c = glm::dot(s.direction[k], w);
+                    if (c < cosReach || c <= cosOuter) continue;
+                    const double inside =
+                        c >= cosInner ? 1.0 : std::clamp(0.5 + (cap - std::acos(std::clamp(c, -1.0, 1.0))) / pixel, 0.0, 1.0);
+                    sum += inside * s.solidAngle[std::size_t(y)] * s.radiance[k];
+                    weight += inside * s.solidAngle[std::size_t(y)];
+                }
+            }
+            const glm::dvec3 mean = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+            float* p = out.at(tx, ty);
+            for (int c = 0; c < 3; ++c) p[c] = float(mean[c]);
+        }
+    return out;
+}
+
+}  // namespace
+
+double capLevelAngle(int level) { return kSmallestCap * std::pow(2.0, 0.5 * level); }
+
+namespace {
+double luminance(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+}  // namespace
+
+EnvironmentSun findSun(const RadianceImage& image) {
+    EnvironmentSun sun;
+    const int W = image.width, H = image.height;
+    int brightest = 0;
+    double mean = 0.0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double l = luminance(image.at(x, y));
+            mean += l * rowSolidAngle(y, W, H);
+            if (l > luminance(&image.rgb[3 * std::size_t(brightest)])) brightest = y * W + x;
+        }
+    mean /= 4.0 * kPi;
+    const double peak = luminance(&image.rgb[3 * std::size_t(brightest)]);
+    if (!(peak > 0.0)) return sun;
+    const glm::dvec3 centre = equirectDirection((brightest % W + 0.5) / W, (brightest / W + 0.5) / H);
+    const double cosReach = std::cos(kSunReach);
+    glm::dvec3 weighted(0.0);
+    double solidAngle = 0.0, lumPower = 0.0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const glm::dvec3 d = equirectDirection((x + 0.5) / W, (y + 0.5) / H);
+            const float* p = image.at(x, y);
+            if (glm::dot(d, centre) < cosReach || luminance(p) < kSunFloor * peak) continue;
+            const double omega = rowSolidAngle(y, W, H);
+            sun.pixels.push_back(y * W + x);
+            sun.power += omega * glm::dvec3(p[0], p[1], p[2]);
+            weighted += omega * luminance(p) * d;
+            lumPower += omega * luminance(p);
+            solidAngle += omega;
+        }
+    if (solidAngle > kSunSolidAngle || lumPower / solidAngle < kSunContrast * mean || glm::length(weighted) == 0.0) {
+        sun = EnvironmentSun{};
+        return sun;
+    }
+    sun.present = true;
+    sun.direction = glm::normalize(weighted);
+    sun.angularRadius = std::acos(1.0 - solidAngle / (2.0 * kPi));
+    return sun;
+}
+
+std::vector<RadianceImage> capAverageChain(const RadianceImage& image, const EnvironmentSun& sun) {
+    RadianceImage withoutSun;
+    if (sun.present) {  // the sun's pixels: the mean of the other pixels within twice its reach
+        withoutSun = image;
+        const int W = image.width, H = image.height;
+        std::vector<char> isSun(std::size_t(W) * H, 0);
+        for (int k : sun.pixels) isSun[std::size_t(k)] = 1;
+        const double cosAround = std::cos(2.0 * kSunReach);
+        glm::dvec3 sum(0.0);
+        double weight = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (isSun[std::size_t(y) * W + x]) continue;
+                if (glm::dot(equirectDirection((x + 0.5) / W, (y + 0.5) / H), sun.direction) < cosAround) continue;
+                const float* p = image.at(x, y);
+                sum += rowSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
+                weight += rowSolidAngle(y, W, H);
+            }
+        const glm::dvec3 around = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+        for (int k : sun.pixels)
+            for (int c = 0; c < 3; ++c) withoutSun.rgb[3 * std::size_t(k) + std::size_t(c)] = float(around[c]);
+    }
+    const Source s = downsampled(sun.present ? withoutSun : image);
+    std::vector<RadianceImage> chain;
+    for (int k = 0; k < kCapLevels; ++k) {
+        const double cap = capLevelAngle(k);
+        chain.push_back(capLevel(s, cap, levelWidth(cap, s.width)));
+    }
+    return chain;
+}
+
+}  // namespace rl

@@ -1,0 +1,138 @@
+// environment_occlusion.glsl: the spheres' shadow in the environment light
+// (issue 34; docs/model.md, "Environment light", "Occlusion by the spheres"),
+// compiled in with RL_ENV_OCCLUSION (app/render/define_table.cpp; its value
+// picks the strategy, the bench's env:occlusion=... rows sweep it):
+//   1  caps:             E and P each times the share of their lobe no sphere covers
+//   2  caps, directional: the diffuse part loses what the covered directions
+//                         would bring (each cap's mean radiance, from the
+//                         host's cap chain), the specular part as in 1
+// Each other sphere (centre c, radius R) seen from the hit point p covers a
+// cap of directions: axis w = (c - p) / d, d = |c - p|, half-angle
+// asin(R / d). The reference's V(p, l) is 0 inside a cap, 1 outside: the
+// light a covered direction would bring is lost (no light of its own: a
+// mirror bounce that meets the sphere adds that sphere's light, as before).
+// Included by environment.glsl after the lookups it uses.
+
+// ---- the model's constants, in one place --------------------------------------------
+// The specular lobe as a cone around r = reflect(-v, n): the cone that holds
+// all but ENV_CONE_ENERGY of a Phong lobe of the same width (exponent
+// 2 / alpha^2 - 2, alpha = roughness^2): cos(a) = ENV_CONE_ENERGY^(1 / (exponent + 1)).
+const float ENV_CONE_ENERGY = 0.244;
+// The caps' half-angles of the host's cap chain (app/render/environment_caps.h,
+// whose constants they are): level k averages the map over caps of
+// u_envSmallestCap * 2^(k/2), k < u_envCapLevels, stacked in u_envPrefiltered's atlas.
+const int ENV_MAX_CAP_LEVELS = 16;
+uniform vec4 u_envCapRect[ENV_MAX_CAP_LEVELS];
+uniform int u_envCapLevels;
+uniform float u_envSmallestCap;
+// The map's sun (app/render/environment_caps.h, findSun): its world direction
+// (xyz) and the angular radius of a disc of its solid angle (w; 0: no sun),
+// and its power (the sum of L dOmega over its pixels, no intensity). The cap
+// chain leaves it out: it is shadowed as a disc, every cap that covers part
+// of it taking that part (coneCapCoverage), so its shadow has its own penumbra.
+uniform vec4 u_envSun;
+uniform vec3 u_envSunPower;
+
+// The map's mean radiance (no intensity) over the cap of half-angle b around
+// the image-frame direction w, from the two cap levels around b: their
+// integrals over the cap (mean times solid angle 2 pi (1 - cos)) mixed
+// linearly in log2 of the angle (two levels an octave), over the cap's own solid angle; so a sun
+// inside both counts in full, one between their edges in part.
+vec3 capMeanRadiance(vec3 w, float b) {
+    float l = clamp(2.0 * log2(max(b, 1e-6) / u_envSmallestCap), 0.0, float(u_envCapLevels - 1));
+    int k0 = int(floor(l));
+    int k1 = min(k0 + 1, u_envCapLevels - 1);
+    vec2 uv = equirectUv(w);
+    float a0 = 1.0 - cos(u_envSmallestCap * exp2(0.5 * float(k0)));
+    float a1 = 1.0 - cos(u_envSmallestCap * exp2(0.5 * float(k1)));
+    vec3 integral = mix(a0 * environmentBilinear(u_envPrefiltered, u_envCapRect[k0], uv),
+                        a1 * environmentBilinear(u_envPrefiltered, u_envCapRect[k1], uv), l - float(k0));
+    return integral / max(1.0 - cos(b), 1e-7);
+}
+
+// The share of the cosine-weighted hemisphere of n that a sphere covers
+// (its form factor), seen at distance d in radii h = d / R along w, with
+// cos(beta) = n.w; clipped by the horizon where the cap crosses it
+// (Snyder 1996; Lagarde and de Rousiers 2014, "Moving Frostbite to PBR"):
+//     h cos(beta) >= 1  (above):  cos(beta) / h^2
+//     h cos(beta) <= -1 (below):  0
+//     otherwise, with x = sqrt(h^2 - 1), k = sqrt(1 - h^2 cos(beta)^2):
+//       (cos(beta) acos(-x cos(beta) / sin(beta)) - x k) / (pi h^2) + atan(k / x) / pi
+// (h > 1: the point is outside the sphere.)
+float capFormFactor(float h, float cosBeta) {
+    float h2 = h * h;
+    float k2 = 1.0 - h2 * cosBeta * cosBeta;
+    if (k2 <= 0.0) return max(cosBeta, 0.0) / h2;
+    float x = sqrt(h2 - 1.0);
+    float sinBeta = sqrt(max(1.0 - cosBeta * cosBeta, 1e-12));
+    float k = sqrt(k2);
+    float clipped = (cosBeta * acos(clamp(-x * cosBeta / sinBeta, -1.0, 1.0)) - x * k) / h2 + atan(k, x);
+    return clamp(clipped / PI, 0.0, 1.0);
+}
+
+// The share of a cone of half-angle a that a cap of half-angle b covers, their
+// axes theta apart (Oat and Sander 2007, "Ambient aperture lighting": the
+// smaller cap's area, faded by a smoothstep between the two tangencies).
+float coneCapCoverage(float a, float b, float theta) {
+    float small = min(a, b);
+    float overlap;
+    if (theta <= abs(a - b)) overlap = 1.0;
+    else if (theta >= a + b) overlap = 0.0;
+    else overlap = smoothstep(0.0, 1.0, 1.0 - (theta - abs(a - b)) / (a + b - abs(a - b)));
+    return overlap * (1.0 - cos(small)) / max(1.0 - cos(a), 1e-7);
+}
+
+// The specular cone's half-angle for perceptual roughness.
+float specularConeAngle(float roughness) {
+    float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
+    float alpha = r * r;
+    float exponent = 2.0 / (alpha * alpha) - 2.0;
+    return acos(pow(ENV_CONE_ENERGY, 1.0 / (exponent + 1.0)));
+}
+
+// The environment light a hit keeps with the spheres' caps taken out:
+// irradiance E (world, with intensity) and prefiltered radiance P towards r
+// (world), both as environmentHitLight() read them.
+struct OccludedLight {
+    vec3 irradiance;
+    vec3 prefiltered;
+};
+
+OccludedLight occludeEnvironment(Hit hit, vec3 r, float roughness, vec3 E, vec3 P) {
+    float coneAngle = specularConeAngle(roughness);
+    float diffuseVisible = 1.0, specularVisible = 1.0;
+    vec3 lost = vec3(0.0);
+    float sunVisible = 1.0;
+    for (int i = 0; i < sphereCount(); ++i) {
+        if (i == hit.sphere) continue;  // its own sphere hides only what lies below the horizon
+        vec4 s = sphereGeometry(i);
+        vec3 toCentre = s.xyz - hit.p;
+        float d = length(toCentre);
+        vec3 w = toCentre / d;
+        float h = d / s.w;
+        if (h <= 1.0) {  // inside that sphere: every direction covered
+            diffuseVisible = 0.0;
+            specularVisible = 0.0;
+            lost = E;
+            continue;
+        }
+        float F = capFormFactor(h, dot(hit.n, w));
+        float capAngle = asin(1.0 / h);
+        float S = coneCapCoverage(coneAngle, capAngle, acos(clamp(dot(r, w), -1.0, 1.0)));
+        specularVisible *= 1.0 - clamp(S, 0.0, 1.0);
+#if RL_ENV_OCCLUSION == 2
+        if (F > 0.0) lost += PI * F * u_envIntensity * capMeanRadiance(environmentLocal(w), capAngle);
+        if (u_envSun.w > 0.0)
+            sunVisible *= 1.0 - clamp(coneCapCoverage(u_envSun.w, capAngle, acos(clamp(dot(u_envSun.xyz, w), -1.0, 1.0))), 0.0, 1.0);
+#else
+        diffuseVisible *= 1.0 - F;
+#endif
+    }
+#if RL_ENV_OCCLUSION == 2
+    lost += (1.0 - sunVisible) * u_envIntensity * u_envSunPower * max(dot(hit.n, u_envSun.xyz), 0.0);
+#endif
+    OccludedLight o;
+    o.irradiance = max(E * diffuseVisible - lost, vec3(0.0));
+    o.prefiltered = P * specularVisible;
+    return o;
+}
