@@ -77,11 +77,13 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
         float visibility = -1.0;
         if (E != vec3(0.0)) visibility = lightShadow(hit, i);  // as lightTerm(): no shadow ray where the light adds nothing
         debugRecord(DBG_VISIBILITY, bounce, i, vec3(visibility, 0.0, 0.0));
+        // The material's inputs of D and F (08) before D, G, F themselves:
+        // a wrong alpha is named as alpha, not as the D it feeds.
+        debugRecord(DBG_ALPHA, bounce, i, vec3(ggxAlpha(m.roughness), 0.0, 0.0));
+        debugRecord(DBG_F0, bounce, i, baseReflectance(m));
         debugRecord(DBG_D, bounce, i, vec3(D_GGX(hit.n, h, ggxAlpha(m.roughness)), 0.0, 0.0));
         debugRecord(DBG_G, bounce, i, vec3(G_SchlickGGX(NoV, NoL, m.roughness), 0.0, 0.0));
         debugRecord(DBG_F, bounce, i, F_Schlick(baseReflectance(m), dot(h, v)));
-        debugRecord(DBG_ALPHA, bounce, i, vec3(ggxAlpha(m.roughness), 0.0, 0.0));
-        debugRecord(DBG_F0, bounce, i, baseReflectance(m));
         vec3 lit = visibility > 0.0 ? E : vec3(0.0);
         debugRecord(DBG_DIFFUSE, bounce, i, diffuseBRDF(hit.n, v, l, m) * lit);
         debugRecord(DBG_SPECULAR, bounce, i, specularBRDF(hit.n, v, l, m) * lit);
