@@ -454,10 +454,22 @@ std::vector<std::string> pixelDebugLabel(const PixelDebug& d) {
     const PixelValue* f = d.first();
     if (!f) return {"agrees with the model"};
     if (d.pixelAgrees) return {"agrees with the model", "(" + f->name() + " differs, not affecting this pixel)"};
+    // Short: the quantity (the primary hit unsaid), the function, 5 digits.
     std::string where = f->function.substr(0, f->function.find('('));
     if (where.rfind("framework: ", 0) == 0) where = where.substr(11);
-    return {f->name() + ": " + where + " in " + exerciseName(*f), "here  " + programValue(*f),
-            "model " + modelValue(*f)};
+    std::string name = f->name();
+    for (const char* primary : {"primary hit: ", "primary hit, "})
+        if (name.rfind(primary, 0) == 0) name = name.substr(std::string(primary).size());
+    auto brief = [f](const dvec3& v) {
+        char text[96];
+        if (f->components == 1) std::snprintf(text, sizeof text, "%.5g", v.x);
+        else if (f->components == 2) std::snprintf(text, sizeof text, "(%.5g, %.5g)", v.x, v.y);
+        else std::snprintf(text, sizeof text, "(%.5g, %.5g, %.5g)", v.x, v.y, v.z);
+        return std::string(text);
+    };
+    return {name + ": " + where + " in " + exerciseName(*f),
+            "here  " + (std::isnan(f->gl.x) ? std::string("not computed") : brief(f->gl)),
+            "model " + (f->reference ? brief(*f->reference) : std::string("nothing"))};
 }
 
 std::string formatPixelDebug(const PixelDebug& d) {

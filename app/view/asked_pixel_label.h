@@ -20,16 +20,16 @@ struct AskedPixelLabel {
     bool agrees = false;              // the pixel agrees with the model: drawn green, else red
 };
 
-// Where the label goes (window units): beside the pixel, right and below,
-// else right and above, left and below, left and above: the first of them
-// inside the window (less a margin) and clear of every box of `avoid`; where
-// none is, the one that overlaps least, moved inside the window. `width` and
-// `height`: the label's size.
+// Where a label of `width` x `height` goes (window units): inside the window
+// (less a margin), the place that covers the least of `avoid` and of the
+// pixel, and of those the nearest to the pixel (beside it where there is
+// room: right and below first). `overlap`: the area it still covers (0: free).
 LayoutRect askedPixelLabelBox(float x, float y, float width, float height, float windowWidth, float windowHeight,
-                              float uiScale, const std::vector<LayoutRect>& avoid);
+                              float uiScale, const std::vector<LayoutRect>& avoid, float* overlap = nullptr);
 
-// Draws the ring and the label (ImGui, window units); the text is shrunk down
-// to UI scale 1 and then wrapped where a line does not fit the window.
+// Draws the ring and the label (ImGui, window units): at the UI scale where
+// a free place fits it, else smaller (down to UI scale 1), else wrapped
+// narrower (down to 14 characters a line).
 // Returns the label's box (window units).
 LayoutRect drawAskedPixelLabel(const AskedPixelLabel& label, float uiScale, const std::vector<LayoutRect>& avoid);
 
