@@ -91,12 +91,20 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
     const int levels = int(tables.levels->size());
     e.level = std::clamp(m.roughness, 0.0, 1.0) * double(levels - 1);
     const dvec3 r = environmentLocalDirection(environment, glm::reflect(-v, n));
-    const glm::dvec2 uv = equirectUv(r);
     const double l = std::clamp(e.level, 0.0, double(levels - 1));
     const int k0 = int(std::floor(l)), k1 = std::min(k0 + 1, levels - 1);
-    e.prefiltered = environment.intensity * glm::mix(bilinearRadiance((*tables.levels)[std::size_t(k0)], uv.x, uv.y),
-                                                     bilinearRadiance((*tables.levels)[std::size_t(k1)], uv.x, uv.y),
-                                                     l - double(k0));
+    auto lookup = [&](dvec3 d) {
+        const glm::dvec2 uv = equirectUv(d);
+        return environment.intensity * glm::mix(bilinearRadiance((*tables.levels)[std::size_t(k0)], uv.x, uv.y),
+                                                bilinearRadiance((*tables.levels)[std::size_t(k1)], uv.x, uv.y),
+                                                l - double(k0));
+    };
+    e.prefiltered = lookup(r);
+    // Turned by kLookupAngle four ways, across r.
+    const dvec3 a = glm::normalize(glm::cross(r, std::abs(r.y) < 0.9 ? dvec3(0, 1, 0) : dvec3(1, 0, 0)));
+    const dvec3 b = glm::cross(r, a);
+    for (const dvec3& t : {a, -a, b, -b})
+        e.prefilteredSpread = glm::max(e.prefilteredSpread, glm::abs(lookup(glm::normalize(r + kLookupAngle * t)) - e.prefiltered));
     e.scaleBias = splitSumAt(tables, NoV, m.roughness);
     const dvec3 F0 = baseReflectance(m);
     const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * e.irradiance;

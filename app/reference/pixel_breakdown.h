@@ -53,10 +53,17 @@ struct EnvironmentTerms {
     glm::dvec3 irradiance{0.0};   // intensity * sh9Irradiance(sh, local n): shIrradiance
     double level = 0;             // clamp(roughness, 0, 1) * (levels - 1): prefilteredLevel
     glm::dvec3 prefiltered{0.0};  // intensity * the chain at local reflect(-v, n), that level, bilinear
+    // How much `prefiltered` moves per channel when reflect(-v, n) turns by
+    // kLookupAngle: the float direction and the shader's atan and acos miss
+    // the double one by up to ~1e-5 rad, times the map's gradient there (a
+    // small bright sun makes it steep: 1.4e-3 relative on sky-spheres). The debugger adds
+    // it to the tolerance of the lookup and of the values made from it.
+    glm::dvec3 prefilteredSpread{0.0};
     glm::dvec2 scaleBias{0.0};    // the split-sum table at (clamped n.v, roughness), bilinear
     double visibility = 1.0;      // the share of the environment the hit sees: 1 (no occlusion term yet)
     glm::dvec3 light{0.0};        // environmentShading(irradiance, prefiltered, scaleBias, m) * visibility
 };
+constexpr double kLookupAngle = 1e-4;  // radians: the shader's float atan and acos (a GPU's approximations), with room
 EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, glm::dvec3 n,
                                   glm::dvec3 v, const Material& m);
 

@@ -160,7 +160,7 @@ bool within(PixelValue& v) {
             if (g != r) return false;  // another sphere
             continue;
         }
-        v.toleranceUsed = std::max(v.toleranceUsed, std::abs(g - r) / (abs + rel * std::abs(r)));
+        v.toleranceUsed = std::max(v.toleranceUsed, std::abs(g - r) / (abs + v.extraTolerance + rel * std::abs(r)));
     }
     return v.toleranceUsed <= 1.0;
 }
@@ -168,6 +168,27 @@ bool within(PixelValue& v) {
 using Key = std::tuple<int, int, int>;  // kind, bounce, light
 
 // The CPU reference's value of every key its path has.
+// The extra absolute tolerance of the values made from a steep environment
+// lookup: its spread, carried through the split sum (times F0 scale + bias),
+// into the hit's shaded light and, by the throughput, into the radiance.
+std::map<Key, double> lookupSpreads(const ref::PixelTerms& t) {
+    std::map<Key, double> out;
+    double radiance = 0;
+    for (const ref::BounceTerms& b : t.chain) {
+        if (!b.environment) continue;
+        const ref::EnvironmentTerms& e = *b.environment;
+        const double spread = std::max({e.prefilteredSpread.x, e.prefilteredSpread.y, e.prefilteredSpread.z});
+        const dvec3 F0 = ref::baseReflectance(b.material);
+        const double factor = std::max({F0.x, F0.y, F0.z}) * e.scaleBias.x + e.scaleBias.y;
+        out[{int(K::EnvPrefiltered), b.depth, -1}] = spread;
+        out[{int(K::EnvLight), b.depth, -1}] = spread * factor;
+        out[{int(K::Shaded), b.depth, -1}] = spread * factor;
+        radiance += spread * factor * std::max({b.throughput.x, b.throughput.y, b.throughput.z});
+    }
+    out[{int(K::Radiance), 0, -1}] = radiance;
+    return out;
+}
+
 std::map<Key, dvec3> referenceValues(const Scene& scene, const ref::PixelTerms& t, int maxWeights) {
     std::map<Key, dvec3> out;
     const int n = std::max(1, int(std::sqrt(double(scene.render.spp)) + 0.5));
@@ -331,6 +352,7 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
     const dvec3 anchor = sceneAnchor(seen);
     const double unit = shaderUnits(seen, framePosition(frame)).unit;
     const std::map<Key, dvec3> expected = referenceValues(seen, terms, seen.render.maxBounces + 1);
+    const std::map<Key, double> spreads = lookupSpreads(terms);
     for (const auto& texel : raw) {
         if (texel[3] < 0) {
             out.loopRanAway = true;
@@ -347,6 +369,7 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
         if (v.kind == K::Hit) v.gl.x *= unit;
         v.components = componentsOf(v.kind);
         if (auto it = expected.find({int(v.kind), v.bounce, v.light}); it != expected.end()) v.reference = it->second;
+        if (auto it = spreads.find({int(v.kind), v.bounce, v.light}); it != spreads.end()) v.extraTolerance = it->second;
         Source source = sourceOf(v.kind, v.bounce);
         if (!v.reference) {
             // A value the model's path does not have: past the path's last

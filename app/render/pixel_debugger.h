@@ -48,6 +48,7 @@ struct PixelValue {
     int exercise = 0;       // the course exercise whose function gives it; 0: the framework
     std::string function;   // "D_GGX(n, h, alpha)"
     bool differs = false;   // beyond the tolerance (pixel_debugger.cpp, tolerance())
+    double extraTolerance = 0;  // absolute, added to the kind's: a lookup's spread (pixel_breakdown.h, prefilteredSpread)
     double toleranceUsed = 0;  // max over components of |gl - reference| / tolerance (differs: > 1)
     std::string name() const;  // "bounce 1, lights[0]: D"
 };
