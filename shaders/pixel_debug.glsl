@@ -31,7 +31,15 @@ const int DBG_F0 = 28;             // 08 baseReflectance(m)
 const int DBG_DIFFUSE = 29;        // 08 diffuseBRDF * E (0 in shadow)
 const int DBG_SPECULAR = 30;       // 08 specularBRDF * E (0 in shadow)
 const int DBG_BRDF = 31;           // 08 cookTorranceBRDF * E (0 in shadow): what the picture adds
-const int DBG_SHADED = 32;         // shadeHit: every light + ambient
+const int DBG_SHADED = 32;         // shadeHit: every light + ambient (+ the environment's light)
+// With an environment (RL_ENVIRONMENT), once per hit: exercise 11's functions
+// on the inputs environmentHitLight() gives them (environment.glsl).
+const int DBG_ENV_IRRADIANCE = 33;   // 11 shIrradiance(local n), times the intensity
+const int DBG_ENV_LEVEL = 34;        // 11 prefilteredLevel(roughness, levels)
+const int DBG_ENV_PREFILTERED = 35;  // the prefiltered chain at local reflect(-v, n), that level, times the intensity
+const int DBG_ENV_SCALE_BIAS = 36;   // the split-sum table at (n.v, roughness): scale, bias
+const int DBG_ENV_VISIBILITY = 37;   // the share of the environment the hit sees (1: no occlusion term)
+const int DBG_ENV_LIGHT = 38;        // 11 environmentShading(irradiance, prefiltered, scaleBias, m) * visibility
 const int DBG_WEIGHT = 40;         // 09 traceRay's weight of bounce k (its throughput there)
 const int DBG_RADIANCE = 41;       // 09 traceRay: the centre ray's radiance
 const int DBG_DISPLAY = 50;        // 10 displayEncode, clamped: the display colour of that radiance
@@ -69,16 +77,35 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
         float visibility = -1.0;
         if (E != vec3(0.0)) visibility = lightShadow(hit, i);  // as lightTerm(): no shadow ray where the light adds nothing
         debugRecord(DBG_VISIBILITY, bounce, i, vec3(visibility, 0.0, 0.0));
+        // The material's inputs of D and F (08) before D, G, F themselves:
+        // a wrong alpha is named as alpha, not as the D it feeds.
+        debugRecord(DBG_ALPHA, bounce, i, vec3(ggxAlpha(m.roughness), 0.0, 0.0));
+        debugRecord(DBG_F0, bounce, i, baseReflectance(m));
         debugRecord(DBG_D, bounce, i, vec3(D_GGX(hit.n, h, ggxAlpha(m.roughness)), 0.0, 0.0));
         debugRecord(DBG_G, bounce, i, vec3(G_SchlickGGX(NoV, NoL, m.roughness), 0.0, 0.0));
         debugRecord(DBG_F, bounce, i, F_Schlick(baseReflectance(m), dot(h, v)));
-        debugRecord(DBG_ALPHA, bounce, i, vec3(ggxAlpha(m.roughness), 0.0, 0.0));
-        debugRecord(DBG_F0, bounce, i, baseReflectance(m));
         vec3 lit = visibility > 0.0 ? E : vec3(0.0);
         debugRecord(DBG_DIFFUSE, bounce, i, diffuseBRDF(hit.n, v, l, m) * lit);
         debugRecord(DBG_SPECULAR, bounce, i, specularBRDF(hit.n, v, l, m) * lit);
         debugRecord(DBG_BRDF, bounce, i, cookTorranceBRDF(hit.n, v, l, m) * lit);
     }
+#ifdef RL_ENVIRONMENT
+    // The environment's terms, step by step as environmentHitLight() takes
+    // them (read only: that function stays the picture's). An occlusion term
+    // records its factor as the visibility, and multiplies the light by it.
+    float envNoV = clamp(dot(hit.n, v), 1e-4, 1.0);
+    vec3 envE = u_envIntensity * shIrradiance(environmentLocal(hit.n));
+    float envLevel = prefilteredLevel(m.roughness, u_envLevels);
+    vec3 envPrefiltered = u_envIntensity * prefilteredRadiance(environmentLocal(reflect(-v, hit.n)), envLevel);
+    vec2 envScaleBias = splitSumLookup(envNoV, m.roughness);
+    float envVisibility = 1.0;
+    debugRecord(DBG_ENV_IRRADIANCE, bounce, -1, envE);
+    debugRecord(DBG_ENV_LEVEL, bounce, -1, vec3(envLevel, 0.0, 0.0));
+    debugRecord(DBG_ENV_PREFILTERED, bounce, -1, envPrefiltered);
+    debugRecord(DBG_ENV_SCALE_BIAS, bounce, -1, vec3(envScaleBias, 0.0));
+    debugRecord(DBG_ENV_VISIBILITY, bounce, -1, vec3(envVisibility, 0.0, 0.0));
+    debugRecord(DBG_ENV_LIGHT, bounce, -1, environmentShading(envE, envPrefiltered, envScaleBias, m) * envVisibility);
+#endif
 }
 
 // shadeHit() of the debugger's program: this bounce's weight (1), or its

@@ -1,7 +1,8 @@
 // raylab render [SCENE] -o out.png [--hdr out.pfm] [--size WxH] [--spp N]
 //               [--backend auto|egl|osmesa|glfw] [--impl DIR] [--cpu [--samples N] [--seed S]] [--view NAME]
-// raylab render [SCENE] --ask X,Y [--impl DIR] [--size WxH]: the pixel debugger's
-//               table for pixel (X, Y) from the top left, no picture written
+// raylab render [SCENE] --ask X,Y [--impl DIR] [--size WxH] [--spp N]: the pixel
+//               debugger's table for pixel (X, Y) from the top left, no picture
+//               written (-o, --hdr and a --view other than final are refused)
 #include "commands/commands.h"
 
 #include "core/error.h"
@@ -18,6 +19,7 @@
 #include "render/pixel_debugger.h"
 #include "shader/shader_library.h"
 
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -43,29 +45,51 @@ struct RenderOptions {
     std::uint64_t seed = 0;  // --cpu: the environment integral's seed (0: the reference's default)
     bool generic = false;
     std::string ask;  // "X,Y": the pixel debugger instead of a picture
+    bool pngGiven = false;  // -o on the command line (--ask refuses it)
 };
+
+// One coordinate of --ask, whole: optional minus, digits; a value beyond
+// the range of long long reads as that bound (outside any picture either way).
+long long askCoordinate(const std::string& text, bool& ok) {
+    std::size_t k = text.size() > 1 && text[0] == '-' ? 1 : 0;
+    ok = k < text.size();
+    long long value = 0;
+    for (; k < text.size() && ok; ++k) {
+        if (text[k] < '0' || text[k] > '9') ok = false;
+        else if (value < (LLONG_MAX - 9) / 10) value = value * 10 + (text[k] - '0');
+        else value = LLONG_MAX;
+    }
+    return text[0] == '-' ? -value : value;
+}
 
 // --ask X,Y: the pixel debugger's table (render/pixel_debugger.h) for the
 // implementation of --impl, with the checker's hint for the first exercise
 // whose value differs from the CPU reference's. Exit 0 either way: the
 // table is the answer (a test reads its verdict line).
 void runAsk(const RenderOptions& o) {
-    int x = -1, y = -1;
-    char rest = 0;
-    if (std::sscanf(o.ask.c_str(), "%d,%d%c", &x, &y, &rest) != 2)
+    const std::size_t comma = o.ask.find(',');
+    bool okX = false, okY = false;
+    const long long x = comma == std::string::npos ? 0 : askCoordinate(o.ask.substr(0, comma), okX);
+    const long long y = comma == std::string::npos ? 0 : askCoordinate(o.ask.substr(comma + 1), okY);
+    if (!okX || !okY)
         throw Error("--ask: expected X,Y (a pixel from the top left, e.g. 120,80), got '" + o.ask + "'");
+    // Options that make a picture have nothing to do with the table: refused, not dropped.
+    if (!o.pfm.empty()) throw Error("--ask: the pixel debugger writes no picture; --hdr does not apply");
+    if (o.pngGiven) throw Error("--ask: the pixel debugger writes no picture; -o does not apply");
+    if (o.view != "final")
+        throw Error("--ask: the pixel debugger asks the final picture's values; --view " + o.view + " does not apply");
     Scene scene = sceneForCommand(o.scene, o.size);
     if (o.spp != 0) scene.render.spp = o.spp;
     const int w = scene.render.width, h = scene.render.height;
     if (x < 0 || y < 0 || x >= w || y >= h)
-        throw Error("--ask: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+        throw Error("--ask: pixel (" + o.ask.substr(0, comma) + ", " + o.ask.substr(comma + 1) + ") is outside the " +
                     std::to_string(w) + "x" + std::to_string(h) + " picture");
     Implementation impl{o.impl.empty() ? defaultImplementationDir() : std::filesystem::path(o.impl), {}};
     std::error_code ec;
     if (!std::filesystem::is_directory(impl.dir, ec)) throw Error("--impl: " + impl.dir.string() + " is not a directory");
     auto context = createHeadlessContext(parseBackend(o.backend));
     const ShaderProgram program = buildPixelDebugProgram(impl, scene);
-    PixelDebug debug = debugPixel(program, scene, scene.camera, w, h, x, h - 1 - y, impl.dir.string());
+    PixelDebug debug = debugPixel(program, scene, scene.camera, w, h, int(x), h - 1 - int(y), impl.dir.string());
     addProbeHint(debug, impl);
     std::cout << formatPixelDebug(debug) << std::flush;
 }
@@ -166,7 +190,7 @@ void addRenderCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene headless to PNG (and PFM)");
     cmd->add_option("scene", options->scene, "Scene file (.json); the embedded default scene when omitted")
         ->check(notEmpty());
-    cmd->add_option("-o,--output", options->png, "PNG to write (8-bit, display-encoded)")
+    CLI::Option* output = cmd->add_option("-o,--output", options->png, "PNG to write (8-bit, display-encoded)")
         ->capture_default_str()
         ->check(notEmpty());
     cmd->add_option("--hdr", options->pfm, "Also write linear radiance as PFM")->check(notEmpty());
@@ -190,7 +214,10 @@ void addRenderCommand(CLI::App& app) {
                     "Pixel debugger: X,Y from the top left; prints the program's values beside the CPU reference's (no picture)")
         ->check(notEmpty());
     cmd->add_flag("--generic", options->generic, "Use the generic shader, not one specialised to the scene");
-    cmd->callback([options] { runRender(*options); });
+    cmd->callback([options, output] {
+        options->pngGiven = output->count() > 0;
+        runRender(*options);
+    });
 }
 
 }  // namespace rl

@@ -4,6 +4,7 @@
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -60,6 +61,19 @@ LightTerms lightTerms(const Scene& scene, const Hit& hit, dvec3 v, int index) {
     return t;
 }
 
+// shaders/environment.glsl's splitSumLookup(), in double.
+glm::dvec2 splitSumAt(const EnvironmentTables& t, double NoV, double roughness) {
+    const int size = t.tableSize;
+    const double r = std::clamp(roughness, kMinRoughness, 1.0);
+    const double px = std::clamp(NoV * size - 0.5, 0.0, double(size - 1)),
+                 py = std::clamp(r * size - 0.5, 0.0, double(size - 1));
+    const int x0 = int(std::floor(px)), y0 = int(std::floor(py));
+    const int x1 = std::min(x0 + 1, size - 1), y1 = std::min(y0 + 1, size - 1);
+    const double ax = px - x0, ay = py - y0;
+    auto at = [&t, size](int x, int y) { return (*t.table)[std::size_t(y * size + x)]; };
+    return glm::mix(glm::mix(at(x0, y0), at(x1, y0), ax), glm::mix(at(x0, y1), at(x1, y1), ax), ay);
+}
+
 std::string num(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", v);
@@ -69,7 +83,39 @@ std::string vec(dvec3 v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(
 
 }  // namespace
 
-PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int height, int i, int j) {
+EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, dvec3 n, dvec3 v,
+                                  const Material& m) {
+    EnvironmentTerms e;
+    const double NoV = std::clamp(glm::dot(n, v), kMinNoV, 1.0);
+    e.irradiance = environmentIrradianceSh9(environment, *tables.sh, n);
+    const int levels = int(tables.levels->size());
+    e.level = std::clamp(m.roughness, 0.0, 1.0) * double(levels - 1);
+    const dvec3 r = environmentLocalDirection(environment, glm::reflect(-v, n));
+    const double l = std::clamp(e.level, 0.0, double(levels - 1));
+    const int k0 = int(std::floor(l)), k1 = std::min(k0 + 1, levels - 1);
+    auto lookup = [&](dvec3 d) {
+        const glm::dvec2 uv = equirectUv(d);
+        return environment.intensity * glm::mix(bilinearRadiance((*tables.levels)[std::size_t(k0)], uv.x, uv.y),
+                                                bilinearRadiance((*tables.levels)[std::size_t(k1)], uv.x, uv.y),
+                                                l - double(k0));
+    };
+    e.prefiltered = lookup(r);
+    // Turned by kLookupAngle four ways, across r.
+    const dvec3 a = glm::normalize(glm::cross(r, std::abs(r.y) < 0.9 ? dvec3(0, 1, 0) : dvec3(1, 0, 0)));
+    const dvec3 b = glm::cross(r, a);
+    for (const dvec3& t : {a, -a, b, -b})
+        e.prefilteredSpread = glm::max(e.prefilteredSpread, glm::abs(lookup(glm::normalize(r + kLookupAngle * t)) - e.prefiltered));
+    e.scaleBias = splitSumAt(tables, NoV, m.roughness);
+    const dvec3 F0 = baseReflectance(m);
+    const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * e.irradiance;
+    const dvec3 specular = e.prefiltered * (F0 * e.scaleBias.x + e.scaleBias.y);
+    e.light = (diffuse + specular) * e.visibility;
+    return e;
+}
+
+PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int height, int i, int j,
+                        const EnvironmentTables* environment) {
+    const bool withEnvironment = environment && scene.environment;
     if (i < 0 || j < 0 || i >= width || j >= height)
         throw Error("pixel (" + std::to_string(i) + ", " + std::to_string(j) + ") is outside the " +
                     std::to_string(width) + "x" + std::to_string(height) + " picture");
@@ -92,7 +138,11 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
         b.dir = dir;
         b.throughput = throughput;
         if (!found) {
-            b.contribution = throughput * scene.render.background;
+            // With the environment: the camera ray sees it, an escaping bounce
+            // adds nothing (its direction is in the hit's environment light).
+            b.contribution = !withEnvironment ? throughput * scene.render.background
+                             : depth == 0     ? rl::environmentRadiance(*scene.environment, dir)
+                                              : dvec3(0.0);
             out.radiance += b.contribution;
             out.chain.push_back(b);
             break;
@@ -108,6 +158,10 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
         for (int l = 0; l < int(scene.lights.size()); ++l) b.lights.push_back(lightTerms(scene, hit, b.v, l));
         b.ambient = scene.render.ambient * m.albedo * m.ao;
         b.shaded = shadeHit(scene, hit, b.v);
+        if (withEnvironment) {
+            b.environment = environmentTerms(*scene.environment, *environment, hit.n, b.v, m);
+            b.shaded += b.environment->light;
+        }
         b.contribution = throughput * b.shaded;
         out.radiance += b.contribution;
         b.NoV = std::clamp(glm::dot(hit.n, b.v), kMinNoV, 1.0);
@@ -150,6 +204,12 @@ std::string formatPixelTerms(const Scene& scene, const PixelTerms& t) {
               << "  G " << num(l.G) << "  F " << vec(l.F) << "\n";
             s << "    E " << vec(l.E) << (l.facesAway ? "  faces away (no light)" : l.shadowed ? "  SHADOWED" : "  lit")
               << "  diffuse " << vec(l.diffuse) << "  specular " << vec(l.specular) << "\n";
+        }
+        if (b.environment) {
+            const EnvironmentTerms& e = *b.environment;
+            s << "  environment: irradiance " << vec(e.irradiance) << "  level " << num(e.level) << "  prefiltered "
+              << vec(e.prefiltered) << "\n    scale " << num(e.scaleBias.x) << "  bias " << num(e.scaleBias.y)
+              << "  visibility " << num(e.visibility) << "  light " << vec(e.light) << "\n";
         }
         s << "  ambient " << vec(b.ambient) << "  shaded " << vec(b.shaded) << "  contribution " << vec(b.contribution)
           << "\n";

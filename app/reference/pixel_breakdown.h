@@ -9,9 +9,12 @@
 #pragma once
 
 #include "core/scene.h"
+#include "reference/sh9.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,40 @@ struct LightTerms {
     glm::dvec3 diffuse{0.0}, specular{0.0};  // f_d E and f_s E (0 when shadowed or facing away)
 };
 
+// The GL picture's approximation of environment light (shaders/environment.glsl,
+// exercise 11) needs the host's tables (render/environment_resources.h builds
+// them; this layer only reads them): the nine SH coefficients, the
+// prefiltered chain and the split-sum table, all in the image's frame and
+// without intensity.
+struct EnvironmentTables {
+    const Sh9* sh = nullptr;
+    const std::vector<RadianceImage>* levels = nullptr;  // level k for roughness k / (levels - 1)
+    const std::vector<glm::dvec2>* table = nullptr;      // [j * tableSize + i]: (scale, bias)
+    int tableSize = 0;
+};
+
+// The approximation's terms at one hit, in double, as environmentHitLight()
+// computes them in float32 on the same tables: what exercise 11's functions
+// should give there. Not the Monte Carlo truth (environment_reference.h):
+// the debugger asks whether the code computes the model's approximation.
+struct EnvironmentTerms {
+    glm::dvec3 irradiance{0.0};   // intensity * sh9Irradiance(sh, local n): shIrradiance
+    double level = 0;             // clamp(roughness, 0, 1) * (levels - 1): prefilteredLevel
+    glm::dvec3 prefiltered{0.0};  // intensity * the chain at local reflect(-v, n), that level, bilinear
+    // How much `prefiltered` moves per channel when reflect(-v, n) turns by
+    // kLookupAngle: the float direction and the shader's atan and acos miss
+    // the double one by up to ~1e-5 rad, times the map's gradient there (a
+    // small bright sun makes it steep: 1.4e-3 relative on sky-spheres). The debugger adds
+    // it to the tolerance of the lookup and of the values made from it.
+    glm::dvec3 prefilteredSpread{0.0};
+    glm::dvec2 scaleBias{0.0};    // the split-sum table at (clamped n.v, roughness), bilinear
+    double visibility = 1.0;      // the share of the environment the hit sees: 1 (no occlusion term yet)
+    glm::dvec3 light{0.0};        // environmentShading(irradiance, prefiltered, scaleBias, m) * visibility
+};
+constexpr double kLookupAngle = 1e-4;  // radians: the shader's float atan and acos (a GPU's approximations), with room
+EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, glm::dvec3 n,
+                                  glm::dvec3 v, const Material& m);
+
 struct BounceTerms {
     int depth = 0;  // 0 = the primary hit
     glm::dvec3 origin{0.0}, dir{0.0};
@@ -40,7 +77,8 @@ struct BounceTerms {
     Material material;
     std::vector<LightTerms> lights;
     glm::dvec3 ambient{0.0};          // ambient * albedo * ao
-    glm::dvec3 shaded{0.0};           // direct light of every light + ambient: shadeHit()
+    std::optional<EnvironmentTerms> environment;  // with an environment and its tables (explainPixel)
+    glm::dvec3 shaded{0.0};           // direct light of every light + ambient: shadeHit() (+ environment->light)
     glm::dvec3 throughput{1.0};       // before this hit
     glm::dvec3 contribution{0.0};     // throughput * shaded (or * background on a miss)
     glm::dvec3 Fr{0.0};               // F_SchlickRoughness(F0, NoV, r): the next throughput factor
@@ -56,8 +94,14 @@ struct PixelTerms {
 
 // The ray through the centre of pixel (i, j) of a width x height picture
 // seen by `camera` (the live view's; its fov is used). Throws rl::Error for
-// a pixel outside the picture.
-PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int height, int i, int j);
+// a pixel outside the picture. With `environment` (tables of the scene's
+// environment), each hit adds the approximation's environment light
+// (BounceTerms::environment) and a camera ray that misses sees the
+// environment, a bounce that escapes nothing, as the GL picture: the chain's
+// radiance is then the GL picture's model, not traceRadiance's Monte Carlo
+// integral (pixelRadiance stays the reference's).
+PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int height, int i, int j,
+                        const EnvironmentTables* environment = nullptr);
 
 // The terminal's (and the panel's) text, one fact a line, 6 significant digits.
 std::string formatPixelTerms(const Scene& scene, const PixelTerms& terms);

@@ -8,6 +8,7 @@
 #include "reference/cpu_reference.h"
 #include "reference/pixel_breakdown.h"
 #include "render/define_table.h"
+#include "render/environment_resources.h"
 #include "render/implementation_facts.h"
 
 #include <glm/common.hpp>
@@ -60,7 +61,13 @@ Source sourceOf(K kind, int bounce) {
         case K::Diffuse: return {"diffuseBRDF * E", "diffuseBRDF"};
         case K::Specular: return {"specularBRDF * E", "specularBRDF"};
         case K::Brdf: return {"cookTorranceBRDF * E", "cookTorranceBRDF"};
-        case K::Shaded: return {"framework: shadeHit (lights + ambient)", ""};
+        case K::Shaded: return {"framework: shadeHit (lights + ambient + environment)", ""};
+        case K::EnvIrradiance: return {"shIrradiance(n in the environment's frame) * intensity", "shIrradiance"};
+        case K::EnvLevel: return {"prefilteredLevel(roughness, levels)", "prefilteredLevel"};
+        case K::EnvPrefiltered: return {"framework: prefilteredRadiance(r, level) * intensity", ""};
+        case K::EnvScaleBias: return {"framework: splitSumLookup(n.v, roughness)", ""};
+        case K::EnvVisibility: return {"framework: the environment's visibility", ""};
+        case K::EnvLight: return {"environmentShading(irradiance, prefiltered, scaleBias, m)", "environmentShading"};
         case K::Weight: return {"traceRay: the bounce's weight", "traceRay"};
         case K::Radiance: return {"traceRay: radiance", "traceRay"};
         case K::Display: return {"displayEncode(radiance), clamped", "displayEncode"};
@@ -71,7 +78,8 @@ Source sourceOf(K kind, int bounce) {
 int componentsOf(K kind) {
     switch (kind) {
         case K::SampleOffset: case K::Hit: return 2;
-        case K::Visibility: case K::D: case K::G: case K::Alpha: return 1;
+        case K::Visibility: case K::D: case K::G: case K::Alpha: case K::EnvLevel: case K::EnvVisibility: return 1;
+        case K::EnvScaleBias: return 2;
         default: return 3;
     }
 }
@@ -100,6 +108,12 @@ const char* shortName(K kind) {
         case K::Specular: return "specular";
         case K::Brdf: return "BRDF * E";
         case K::Shaded: return "shaded";
+        case K::EnvIrradiance: return "environment irradiance";
+        case K::EnvLevel: return "prefiltered level";
+        case K::EnvPrefiltered: return "prefiltered radiance";
+        case K::EnvScaleBias: return "split-sum scale, bias";
+        case K::EnvVisibility: return "environment visibility";
+        case K::EnvLight: return "environment light";
         case K::Weight: return "weight";
         case K::Radiance: return "radiance";
         case K::Display: return "display";
@@ -124,7 +138,8 @@ const char* shortName(K kind) {
 // - Visibility and the sphere index: exact.
 std::pair<double, double> tolerance(K kind) {
     switch (kind) {
-        case K::SampleOffset: case K::Lambert: case K::Alpha: case K::F0: case K::Miss: return {1e-6, 1e-5};
+        case K::SampleOffset: case K::Lambert: case K::Alpha: case K::F0: case K::Miss: case K::EnvLevel:
+            return {1e-6, 1e-5};
         case K::Visibility: return {0.5, 0.0};
         case K::CameraRay: case K::Ray: case K::Normal: case K::LightDir: case K::Half: case K::Angles:
             return {1e-4, 1e-3};
@@ -145,7 +160,7 @@ bool within(PixelValue& v) {
             if (g != r) return false;  // another sphere
             continue;
         }
-        v.toleranceUsed = std::max(v.toleranceUsed, std::abs(g - r) / (abs + rel * std::abs(r)));
+        v.toleranceUsed = std::max(v.toleranceUsed, std::abs(g - r) / (abs + v.extraTolerance + rel * std::abs(r)));
     }
     return v.toleranceUsed <= 1.0;
 }
@@ -153,6 +168,27 @@ bool within(PixelValue& v) {
 using Key = std::tuple<int, int, int>;  // kind, bounce, light
 
 // The CPU reference's value of every key its path has.
+// The extra absolute tolerance of the values made from a steep environment
+// lookup: its spread, carried through the split sum (times F0 scale + bias),
+// into the hit's shaded light and, by the throughput, into the radiance.
+std::map<Key, double> lookupSpreads(const ref::PixelTerms& t) {
+    std::map<Key, double> out;
+    double radiance = 0;
+    for (const ref::BounceTerms& b : t.chain) {
+        if (!b.environment) continue;
+        const ref::EnvironmentTerms& e = *b.environment;
+        const double spread = std::max({e.prefilteredSpread.x, e.prefilteredSpread.y, e.prefilteredSpread.z});
+        const dvec3 F0 = ref::baseReflectance(b.material);
+        const double factor = std::max({F0.x, F0.y, F0.z}) * e.scaleBias.x + e.scaleBias.y;
+        out[{int(K::EnvPrefiltered), b.depth, -1}] = spread;
+        out[{int(K::EnvLight), b.depth, -1}] = spread * factor;
+        out[{int(K::Shaded), b.depth, -1}] = spread * factor;
+        radiance += spread * factor * std::max({b.throughput.x, b.throughput.y, b.throughput.z});
+    }
+    out[{int(K::Radiance), 0, -1}] = radiance;
+    return out;
+}
+
 std::map<Key, dvec3> referenceValues(const Scene& scene, const ref::PixelTerms& t, int maxWeights) {
     std::map<Key, dvec3> out;
     const int n = std::max(1, int(std::sqrt(double(scene.render.spp)) + 0.5));
@@ -161,12 +197,12 @@ std::map<Key, dvec3> referenceValues(const Scene& scene, const ref::PixelTerms& 
     if (!t.chain.empty()) out[{int(K::CameraRay), 0, -1}] = t.chain.front().dir;
     for (const ref::BounceTerms& b : t.chain) {
         const int d = b.depth;
+        out[{int(K::Ray), d, -1}] = b.dir;  // a miss too: a program that hits there is compared on its ray first
         if (!b.hit) {
             out[{int(K::Miss), d, -1}] = scene.render.background;
             continue;
         }
         const Material& m = b.material;
-        out[{int(K::Ray), d, -1}] = b.dir;
         out[{int(K::Hit), d, -1}] = dvec3(b.t, b.sphere, 0);
         out[{int(K::Point), d, -1}] = b.p;
         out[{int(K::Normal), d, -1}] = b.n;
@@ -189,6 +225,15 @@ std::map<Key, dvec3> referenceValues(const Scene& scene, const ref::PixelTerms& 
             out[{int(K::Diffuse), d, i}] = ref::diffuseBRDF(b.n, b.v, l.l, m) * lit;
             out[{int(K::Specular), d, i}] = ref::specularBRDF(b.n, b.v, l.l, m) * lit;
             out[{int(K::Brdf), d, i}] = ref::cookTorranceBRDF(b.n, b.v, l.l, m) * lit;
+        }
+        if (b.environment) {
+            const ref::EnvironmentTerms& e = *b.environment;
+            out[{int(K::EnvIrradiance), d, -1}] = e.irradiance;
+            out[{int(K::EnvLevel), d, -1}] = dvec3(e.level, 0, 0);
+            out[{int(K::EnvPrefiltered), d, -1}] = e.prefiltered;
+            out[{int(K::EnvScaleBias), d, -1}] = dvec3(e.scaleBias, 0);
+            out[{int(K::EnvVisibility), d, -1}] = dvec3(e.visibility, 0, 0);
+            out[{int(K::EnvLight), d, -1}] = e.light;
         }
         out[{int(K::Shaded), d, -1}] = b.shaded;
     }
@@ -246,6 +291,15 @@ std::vector<std::array<float, 4>> recordPixelValues(const ShaderProgram& program
     const GLenum buffers[1] = {GL_COLOR_ATTACHMENT0};
     gl::DrawBuffers(1, buffers);
 
+    // The environment's tables, as GlRenderer binds them for the picture
+    // (units 1-4; unit 0 is the target's here): without them the program
+    // would see an environment of intensity 0.
+    std::optional<EnvironmentTextures> environment;
+    if (scene.environment) {
+        environment.emplace(environmentResources(*scene.environment));
+        environment->bind(program, *scene.environment);
+        gl::ActiveTexture(GL_TEXTURE0);
+    }
     setFrameUniforms(program, scene, frame);  // the picture's uniforms, at the picture's size
     gl::Uniform2f(program.uniform("u_debugPixel"), float(i), float(j));
     SceneUniformBlock block;
@@ -274,7 +328,14 @@ std::vector<std::array<float, 4>> recordPixelValues(const ShaderProgram& program
 
 PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Camera& camera, int width, int height,
                       int i, int j, const std::string& implementation) {
-    const ref::PixelTerms terms = ref::explainPixel(scene, camera, width, height, i, j);  // throws outside
+    std::shared_ptr<const EnvironmentResources> resources;
+    ref::EnvironmentTables tables;
+    if (scene.environment) {
+        resources = environmentResources(*scene.environment);  // the picture's tables (cached)
+        tables = {&resources->sh, &resources->levels, &resources->table, resources->settings.tableSize};
+    }
+    const ref::PixelTerms terms =
+        ref::explainPixel(scene, camera, width, height, i, j, resources ? &tables : nullptr);  // throws outside
     Scene seen = scene;
     seen.camera = camera;
     FrameSettings frame = frameFromScene(seen);
@@ -291,6 +352,7 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
     const dvec3 anchor = sceneAnchor(seen);
     const double unit = shaderUnits(seen, framePosition(frame)).unit;
     const std::map<Key, dvec3> expected = referenceValues(seen, terms, seen.render.maxBounces + 1);
+    const std::map<Key, double> spreads = lookupSpreads(terms);
     for (const auto& texel : raw) {
         if (texel[3] < 0) {
             out.loopRanAway = true;
@@ -307,7 +369,20 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
         if (v.kind == K::Hit) v.gl.x *= unit;
         v.components = componentsOf(v.kind);
         if (auto it = expected.find({int(v.kind), v.bounce, v.light}); it != expected.end()) v.reference = it->second;
-        const Source source = sourceOf(v.kind, v.bounce);
+        if (auto it = spreads.find({int(v.kind), v.bounce, v.light}); it != spreads.end()) v.extraTolerance = it->second;
+        Source source = sourceOf(v.kind, v.bounce);
+        if (!v.reference) {
+            // A value the model's path does not have: past the path's last
+            // bounce, traceRay went on; where the model's ray leaves the
+            // scene (or, at the camera ray, hits something else), the hit is
+            // the intersection's.
+            const bool modelBounce =
+                expected.count({int(K::Miss), v.bounce, -1}) > 0 || expected.count({int(K::Hit), v.bounce, -1}) > 0;
+            if (!modelBounce && v.bounce > 0)
+                source = {"traceRay: a bounce the model's path does not have", "traceRay"};
+            else if (v.kind == K::Hit || v.kind == K::Point || v.kind == K::Normal || v.kind == K::Miss)
+                source = sourceOf(K::Hit, v.bounce);
+        }
         v.function = source.function;
         if (*source.implementer)
             if (const ExerciseInfo* unit = exerciseOfFunction(source.implementer); unit && unit->inCourse)
@@ -315,6 +390,14 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
         v.differs = !within(v);
         if (v.differs && out.firstDifference < 0) out.firstDifference = int(out.values.size());
         out.values.push_back(std::move(v));
+    }
+    // The picture's pixel is the centre ray's display colour only where the
+    // samples sit where the model puts them: a wrong sample offset moves the
+    // picture's rays off the centre this table traces.
+    bool samplesAgree = true;
+    for (const PixelValue& v : out.values) {
+        if (v.kind == K::SampleOffset) samplesAgree = !v.differs;
+        if (v.kind == K::Display) out.pixelAgrees = !v.differs && samplesAgree && !out.loopRanAway;
     }
     // A value the reference's path has and the program's does not (a path
     // that stops early): missing on screen, the program's side empty.
@@ -326,6 +409,9 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
                 return std::tuple(int(v.kind), v.bounce, v.light) == key;
             });
             if (present) continue;
+            // The program records a ray's direction at its hits only: a
+            // ray the model sees leave the scene has its miss compared instead.
+            if (std::get<0>(key) == int(K::Ray) && expected.count({int(K::Miss), std::get<1>(key), -1})) continue;
             PixelValue v;
             v.kind = K(std::get<0>(key));
             v.bounce = std::get<1>(key);
@@ -348,34 +434,86 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
     return out;
 }
 
+namespace {
+
+std::string exerciseName(const PixelValue& f) {
+    return f.exercise > 0 ? findExercise(std::to_string(f.exercise)).id : std::string("the framework");
+}
+std::string programValue(const PixelValue& f) {
+    return std::isnan(f.gl.x) ? std::string("not computed") : valueText(f.gl, f.components);
+}
+std::string modelValue(const PixelValue& f) {
+    return f.reference ? valueText(*f.reference, f.components) : std::string("nothing");
+}
+
+}  // namespace
+
+std::vector<std::string> askedFunctions() {
+    std::vector<std::string> out;
+    for (int k = 1; k < 100; ++k)
+        for (int bounce : {0, 1}) {
+            const Source s = sourceOf(K(k), bounce);
+            if (*s.implementer && std::find(out.begin(), out.end(), s.implementer) == out.end())
+                out.push_back(s.implementer);
+        }
+    return out;
+}
+
 std::string pixelDebugVerdict(const PixelDebug& d) {
     if (d.loopRanAway) return "a loop of an exercise file ran past its bound at this pixel: the values stop there";
     const PixelValue* f = d.first();
-    if (!f) return "every value within float32 tolerance of the CPU reference";
-    std::string where = f->exercise > 0 ? findExercise(std::to_string(f->exercise)).id : std::string("the framework");
-    std::string line = "first difference: " + f->name() + " = " + f->function + " in " + where;
+    if (!f) return "this pixel agrees with the model: every value within float32 tolerance of the CPU reference";
+    std::string line = f->name() + " = " + f->function + " in " + exerciseName(*f);
     if (f->exercise > 0) line += " (" + findExercise(std::to_string(f->exercise)).handout() + ")";
-    line += ": " + (std::isnan(f->gl.x) ? std::string("not computed") : valueText(f->gl, f->components)) +
-            " here, " + (f->reference ? valueText(*f->reference, f->components) : std::string("nothing")) +
-            " in the reference";
-    return line;
+    line += ": " + programValue(*f) + " here, " + modelValue(*f) + " in the reference";
+    if (d.pixelAgrees)
+        return "this pixel agrees with the model (its display colour within tolerance); an intermediate value "
+               "differs, not affecting this pixel: " + line;
+    return "first difference: " + line;
+}
+
+std::vector<std::string> pixelDebugLabel(const PixelDebug& d) {
+    if (d.loopRanAway) return {"a loop ran past its bound here"};
+    const PixelValue* f = d.first();
+    if (!f) return {"agrees with the model"};
+    if (d.pixelAgrees) return {"agrees with the model", "(" + f->name() + " differs, not affecting this pixel)"};
+    // Short: the quantity (the primary hit unsaid), the function, 5 digits.
+    std::string where = f->function.substr(0, f->function.find('('));
+    if (where.rfind("framework: ", 0) == 0) where = where.substr(11);
+    std::string name = f->name();
+    for (const char* primary : {"primary hit: ", "primary hit, "})
+        if (name.rfind(primary, 0) == 0) name = name.substr(std::string(primary).size());
+    auto brief = [f](const dvec3& v) {
+        char text[96];
+        if (f->components == 1) std::snprintf(text, sizeof text, "%.5g", v.x);
+        else if (f->components == 2) std::snprintf(text, sizeof text, "(%.5g, %.5g)", v.x, v.y);
+        else std::snprintf(text, sizeof text, "(%.5g, %.5g, %.5g)", v.x, v.y, v.z);
+        return std::string(text);
+    };
+    return {name + ": " + where + " in " + exerciseName(*f),
+            "here  " + (std::isnan(f->gl.x) ? std::string("not computed") : brief(f->gl)),
+            "model " + (f->reference ? brief(*f->reference) : std::string("nothing"))};
 }
 
 std::string formatPixelDebug(const PixelDebug& d) {
     std::ostringstream s;
+    // The answer first: a pixel whose final value agrees says so before any
+    // difference in between is listed.
+    s << pixelDebugVerdict(d) << "\n";
     s << "pixel (" << d.i << ", " << d.height - 1 - d.j << ") from the top left of " << d.width << "x" << d.height
       << ", its centre ray: " << (d.implementation.empty() ? "this program" : d.implementation)
       << " (float32, on the GPU) | CPU reference (double)\n";
+    if (d.pixelAgrees && d.first())
+        s << "(\"~\": differs from the model but does not reach this pixel's display colour)\n";
     for (std::size_t k = 0; k < d.values.size(); ++k) {
         const PixelValue& v = d.values[k];
-        const char* mark = int(k) == d.firstDifference ? ">>" : v.differs ? " !" : "  ";
+        const char* mark = !v.differs ? "  " : d.pixelAgrees ? " ~" : int(k) == d.firstDifference ? ">>" : " !";
         char ex[16] = "  ";
         if (v.exercise > 0) std::snprintf(ex, sizeof ex, "%02d", v.exercise);
         s << mark << " " << ex << " " << v.name() << ": "
           << (std::isnan(v.gl.x) ? std::string("-") : valueText(v.gl, v.components)) << " | "
           << (v.reference ? valueText(*v.reference, v.components) : std::string("-")) << "\n";
     }
-    s << pixelDebugVerdict(d) << "\n";
     if (!d.hint.empty()) s << d.hint << "\n";
     return s.str();
 }

@@ -196,7 +196,9 @@ void modelSection(Scene& scene, ViewRequests& out) {
 void pickedSection(ViewState& state, PanelRects* rects) {
     if (state.pickedText.empty()) return;
     if (state.revealPicked) ImGui::SetNextItemOpen(true);
-    if (!ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)")) return;
+    const bool open = ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)");
+    if (state.revealPicked) ImGui::SetScrollHereY(0.0f);  // the panel opens at the answer
+    if (!open) return;
     // The answer first, wrapped to the panel: the first difference (or that
     // there is none) and the checker's hint; the table below scrolls.
     const std::string& all = state.pickedText;
@@ -207,7 +209,7 @@ void pickedSection(ViewState& state, PanelRects* rects) {
         at = end + 1;
         const bool bad = line.rfind("first difference", 0) == 0 || line.rfind("a loop of", 0) == 0 ||
                          line.rfind("the pixel debugger cannot", 0) == 0;
-        if (!bad && line.rfind("every value", 0) != 0 && line.rfind("checker,", 0) != 0) continue;
+        if (!bad && line.rfind("this pixel agrees", 0) != 0 && line.rfind("checker,", 0) != 0) continue;
         ImGui::PushStyleColor(ImGuiCol_Text, bad ? ImVec4(1.0f, 0.35f, 0.35f, 1.0f) : ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
         if (line.rfind("checker,", 0) == 0) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.5f, 1.0f));
         ImGui::TextWrapped("%s", line.c_str());
@@ -227,8 +229,16 @@ void pickedSection(ViewState& state, PanelRects* rects) {
         const std::string line = text.substr(start, end - start);
         if (line.rfind(">>", 0) == 0 || line.rfind("first difference", 0) == 0) {
             ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", line.c_str());
-            if (state.revealPicked && line.rfind(">>", 0) == 0) ImGui::SetScrollHereY(0.25f);  // in view at once
+            if (state.revealPicked && line.rfind(">>", 0) == 0) {
+                // In view at once, scrolled right far enough that the
+                // model's column (after " | ") shows beside the program's.
+                ImGui::SetScrollHereY(0.25f);
+                const float right = ImGui::CalcTextSize(line.c_str()).x, room = ImGui::GetContentRegionAvail().x;
+                ImGui::SetScrollX(std::max(0.0f, right - room));
+            }
         }
+        else if (line.rfind(" ~", 0) == 0)  // differs, but not at this pixel
+            ImGui::TextColored(ImVec4(0.75f, 0.75f, 0.55f, 1.0f), "%s", line.c_str());
         else if (line.rfind(" !", 0) == 0)
             ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1.0f), "%s", line.c_str());
         else
@@ -249,10 +259,7 @@ void materialsSection(Scene& scene, ViewState& state, ViewRequests& out) {
         ImGui::ColorButton("##swatch", swatch, ImGuiColorEditFlags_NoTooltip);
         ImGui::SameLine();
         const bool picked = int(i) == state.pickedSphere;
-        if (picked && state.revealPicked) {
-            ImGui::SetNextItemOpen(true);
-            ImGui::SetScrollHereY();
-        }
+        if (picked && state.revealPicked) ImGui::SetNextItemOpen(true);  // opened; the panel scrolls to the answer
         // The asked pixel's sphere is selected: highlighted, and marked.
         // Named as the scene file's errors name them (spheres[0] is the first).
         if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "spheres[%zu]  rough %.2f  metal %.2f%s",

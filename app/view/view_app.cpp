@@ -494,8 +494,19 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         toastBox = drawToast(toast_, scale, top, float(fbWidth_ / perUnit.x) - left - 20 * scale);
         if (!toastBox.empty()) layout_.add("toast", LayoutBox::Kind::Tool, toPixels(toastBox));
     }
+    // The asked pixel's answer beside it, clear of the widgets; the divider
+    // goes around it (view/asked_pixel_label.h).
+    LayoutRect labelBox;
+    if (!askedLabel_.lines.empty() && sameCamera(askedCamera_, trackball_->camera())) {
+        std::vector<LayoutRect> avoid = {errorBox, panelRects_.panel, toastBox};
+        if (wipeActive()) avoid.insert(avoid.end(), {wipeLabels.left, wipeLabels.right});
+        if (!captionPlaced_.box.empty()) avoid.push_back(toUnits(captionPlaced_.box));
+        for (const LayoutRect& l : captionPlaced_.labels) avoid.push_back(toUnits(l));
+        labelBox = drawAskedPixelLabel(askedLabel_, scale, avoid);
+        layout_.add("asked pixel label", LayoutBox::Kind::Tool, toPixels(labelBox));
+    }
     if (wipeActive()) {
-        std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel, toastBox};
+        std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel, toastBox, labelBox};
         if (!captionPlaced_.box.empty()) clear.push_back(toUnits(captionPlaced_.box));
         const std::vector<LayoutRect> divider =
             dividerPieces(float(dividerPixel() / perUnit.x), windowHeight, scale, clear);
@@ -690,6 +701,7 @@ void ViewApp::openPreset(int index) {
     state_.savePath = defaultSavePath(path);
     cameras_ = std::make_unique<NamedCameras>(namedCamerasFile(path));
     picked_.reset();  // another scene: the asked pixel's spheres are gone
+    askedLabel_.lines.clear();
     state_.pickedText.clear();
     state_.pickedSphere = -1;
     glfwSetWindowTitle(window_->window(), windowTitle().c_str());  // the title names the scene on screen

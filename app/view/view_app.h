@@ -11,6 +11,7 @@
 #include "gl/context_glfw.h"
 #include "render/implementation_facts.h"
 #include "view/adaptive_resolution.h"
+#include "view/asked_pixel_label.h"
 #include "view/file_watcher.h"
 #include "view/frame_stats.h"
 #include "view/gpu_timer.h"
@@ -213,6 +214,10 @@ private:
         std::unique_ptr<ShaderProgram> program;
     };
     DebugProgram debugPrograms_[2];
+    // The asked pixel's answer on the picture (view/asked_pixel_label.h),
+    // while the camera is the one it was asked with; lines empty: none.
+    AskedPixelLabel askedLabel_;
+    Camera askedCamera_;
     std::optional<ref::PixelTerms> picked_;  // the last asked pixel, its rays drawn over the picture  // the implementations' part of the window title
     std::string toast_;
     Clock::time_point toastUntil_{};

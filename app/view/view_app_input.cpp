@@ -227,10 +227,17 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         if (wipeActive()) where = std::string(" (") + sides_[std::size_t(side)].program->label() + ", " +
                                   (side == 0 ? "left" : "right") + " of the divider)";
         state_.pickedText = debugPickedPixel(side, scene, camera, width, height, i - x0, height - 1 - (row - y0));
+        const glm::dvec2 units = toWindowUnits();  // the label at the pixel's centre, in window units
+        askedLabel_.x = float((i + 0.5) * units.x);
+        askedLabel_.y = float((row + 0.5) * units.y);
+        askedCamera_ = camera;
         state_.pickedSphere = picked_->chain.empty() ? -1 : picked_->chain.front().sphere;
         state_.revealPicked = true;
         std::cout << "raylab: ask a pixel at (" << i - x0 << ", " << row - y0 << ") from the top left" << where << "\n"
-                  << state_.pickedText << std::flush;
+                  << state_.pickedText;
+        std::cout << "raylab: on the picture:";  // the label's lines, as the window draws them
+        for (const std::string& line : askedLabel_.lines) std::cout << " [" << line << "]";
+        std::cout << "\n" << std::flush;
     } catch (const Error& e) {
         std::cerr << "raylab: error: " << e.what() << std::endl;
     }
@@ -250,12 +257,16 @@ std::string ViewApp::debugPickedPixel(int side, const Scene& scene, const Camera
             debug.defines = defines;
         }
         PixelDebug answer = debugPixel(*debug.program, scene, camera, width, height, i, j, s.program->label());
+        askedLabel_.lines = pixelDebugLabel(answer);
+        askedLabel_.agrees = answer.pixelAgrees || !answer.first();
         if (options_.probeHint) options_.probeHint(answer, impl);
         // Then the reference's whole breakdown (material, l, h, E per light):
         // what the right-hand column was computed from.
         return formatPixelDebug(answer) + "\n" + ref::formatPixelTerms(scene, *picked_);
     } catch (const Error& e) {  // the debugger's program did not build: the reference's terms, and why
         const std::string text = e.what();
+        askedLabel_.lines = {"the pixel debugger cannot run this code"};
+        askedLabel_.agrees = false;
         return "the pixel debugger cannot run this code (" + text.substr(0, text.find('\n')) +
                "); the CPU reference alone:\n" + ref::formatPixelTerms(scene, *picked_);
     }

@@ -64,7 +64,7 @@ struct MutantCase {
 
 // One mutant of each exercise, at a pixel its mistake changes (found with
 // `raylab render --ask`): the camera ray (01), the hit (02), Lambert (03),
-// the visibility (04), D (05), G (06), F of the bounce's hit (07), the
+// the visibility (04), D (05), G (06), F (07), the
 // specular term (08), the bounce's weight (09), the display colour (10).
 const MutantCase kMutants[] = {
     {"01-camera", "upside-down", "32,22"},
@@ -73,16 +73,17 @@ const MutantCase kMutants[] = {
     {"04-shadows", "occluders-beyond-light", "16,12", true},
     {"05-ggx", "missing-pi", "32,22"},
     {"06-geometry", "ibl-k", "32,22"},
-    {"07-fresnel", "one-plus-f0", "12,24"},
+    {"07-fresnel", "power-on-voh", "32,22"},
     {"08-cook-torrance", "missing-four", "32,22"},
     {"09-reflections", "full-strength-bounces", "32,22"},
     {"10-display", "gamma-before-tonemap", "32,22"},
 };
 
 std::string lineStarting(const std::string& out, const std::string& start) {
-    const std::size_t at = out.find("\n" + start);
+    const std::string text = "\n" + out;  // the answer is the first line
+    const std::size_t at = text.find("\n" + start);
     if (at == std::string::npos) return "";
-    return out.substr(at + 1, out.find('\n', at + 1) - at - 1);
+    return text.substr(at + 1, text.find('\n', at + 1) - at - 1);
 }
 
 }  // namespace
@@ -124,12 +125,14 @@ TEST(PixelDebugger, FindsEachMutantInItsOwnExercise) {
 // The solutions: no value differs beyond the tolerance at any pixel of a
 // small picture of the default scene (the lecture scene: spheres, ground,
 // sky, the bounces between them), nor of the metal and dielectric rows with
-// reflections (roughness 0 to 1, mirror bounces between spheres).
+// reflections (roughness 0 to 1, mirror bounces between spheres), nor of an
+// environment scene (exercise 11's terms beside the approximation's).
 TEST(PixelDebugger, SolutionsAgreeWithTheReferenceEverywhere) {
     auto context = createHeadlessContext(Backend::Auto);
     const Implementation impl{sourceRoot() / "solutions", {}};
     for (const std::string& file : {std::string(""), (sourceRoot() / "scenes" / "metal-row-reflections.json").string(),
-                                    (sourceRoot() / "scenes" / "dielectric-row-reflections.json").string()}) {
+                                    (sourceRoot() / "scenes" / "dielectric-row-reflections.json").string(),
+                                    (sourceRoot() / "scenes" / "environments" / "sky-spheres.json").string()}) {
         const Scene scene = file.empty() ? defaultScene() : loadSceneFile(file).scene;
         const ShaderProgram program = buildPixelDebugProgram(impl, scene);
         const int w = 32, h = 18;
@@ -343,13 +346,22 @@ TEST(PixelDebuggerWindow, APickAfterAReloadAsksTheNewCode) {
     EXPECT_EQ(r.out.find("first difference", reloaded), std::string::npos) << r.out.substr(reloaded);
 }
 
-// A pixel outside the picture, a malformed --ask and --ask with --cpu: one
-// line naming the option, exit 1, no table.
+// A pixel outside the picture (however large its number), a malformed
+// --ask, and --ask with --cpu, --hdr, -o or a --view: one line naming the
+// option, exit 1, no table.
 TEST(PixelDebugger, RefusesAPixelItCannotAsk) {
     TempDir dir;
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"render", "--ask", "64,10", "--size", "64x48"},
-          std::vector<std::string>{"render", "--ask", "ten,ten"}, std::vector<std::string>{"render", "--ask", "1,1", "--cpu"}}) {
+          std::vector<std::string>{"render", "--ask", "ten,ten"}, std::vector<std::string>{"render", "--ask", "1,1", "--cpu"},
+          // Numbers read whole: no wrap-around to (0, 0), no sign or tail dropped.
+          std::vector<std::string>{"render", "--ask", "4294967296,0"},
+          std::vector<std::string>{"render", "--ask", "0,18446744073709551616000"},
+          std::vector<std::string>{"render", "--ask", "1,1x"}, std::vector<std::string>{"render", "--ask", "+1,1"},
+          // Options of a picture are refused, not dropped.
+          std::vector<std::string>{"render", "--ask", "1,1", "--hdr", "x.pfm"},
+          std::vector<std::string>{"render", "--ask", "1,1", "--view", "d"},
+          std::vector<std::string>{"render", "--ask", "1,1", "-o", "x.png"}}) {
         const RunResult r = runRaylab(args, {}, dir.path());
         EXPECT_EQ(r.status, 1) << args[2];
         EXPECT_EQ(r.err.rfind("raylab: error: --ask: ", 0), 0u) << r.err;
