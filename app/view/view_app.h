@@ -12,6 +12,7 @@
 #include "render/implementation_facts.h"
 #include "view/adaptive_resolution.h"
 #include "view/file_watcher.h"
+#include "view/frame_parts.h"
 #include "view/frame_stats.h"
 #include "view/gpu_timer.h"
 #include "view/imgui_layer.h"
@@ -64,7 +65,10 @@ private:
 
     // -- the loop (view_app.cpp)
     void frame();
-    void waitOrPoll();
+    bool waitOrPoll();  // true: it waited for events (idle)
+    // --stats: the GL queue finished at the end of part `p`, so each part is
+    // charged with its own pixels (frame_parts.h); without --stats, a mark only.
+    void endPart(FrameParts::Part p);
     void applyReloads();
     void rebuild(Side& side, bool initial);
     ShaderDefines liveDefines(const Side& side) const;  // the live program's defines (render/define_table.h)
@@ -171,6 +175,7 @@ private:
     ViewState state_;
     AdaptiveResolution adaptive_;
     FrameStats stats_;
+    FrameParts parts_;  // where each frame's time goes (--stats)
     int fbWidth_ = 0, fbHeight_ = 0;  // framebuffer size this frame
     bool dirty_ = true;               // the picture must be rendered again
     double renderedScale_ = 0;        // scale of the picture on screen; 0 = none yet
@@ -198,6 +203,8 @@ private:
     bool scriptedShot_ = false;
     LayoutReport layout_;        // this frame's rectangles, framebuffer pixels
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
+    LayoutRect steadyPanel_;     // the panel, framebuffer pixels, where the last two frames drew it; empty: it moved
+    float steadyScale_ = 0;      // the UI scale of the last frame
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
