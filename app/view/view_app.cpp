@@ -82,6 +82,8 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
         throw Error("--compare-model: unknown model " + quotedValue(options_.compareModel) + " (expected blinn-phong or pbr)");
     }
     if (compareModel && impls.size() == 1) impls.push_back(impls[0]);  // the same code, another model
+    if (options_.sideBySide && impls.size() < 2)  // an option that does not apply: refused, not ignored
+        throw Error("--side-by-side: needs a second picture (--compare DIR or --compare-model MODEL)");
 
     WindowSettings settings;
     settings.width = options_.width > 0 ? options_.width : scene_.scene().render.width;

@@ -113,6 +113,7 @@ private:
     // A press from the window system: the panel's, an asked pixel, or the camera's.
     void onPress(int button, int mods, glm::dvec2 pixel);
     void onKey(int key, int action, int mods);
+    void onCharacter(unsigned codepoint);  // keys by character (key_bindings.h, byCharacter)
     void onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript);
     void onCursor(glm::dvec2 pixel);
     void onScroll(double steps);
@@ -190,6 +191,7 @@ private:
     int reloads_ = 0;                 // hot reloads applied (for wait-reload)
     bool quit_ = false;
     bool draggingDivider_ = false;
+    bool keyRepeats_ = false;    // the last key event was a repeat: its character is one too
     int dragButton_ = -1;        // the mouse button of the trackball drag, -1 = none
     static constexpr int kMouseButtons = 3;  // left, right, middle (GLFW's numbering)
     bool panelOwnsButton_[kMouseButtons] = {};  // pressed on the panel: everything until the release is the panel's
