@@ -200,7 +200,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--impl", options->impl, "Folder of exercise implementations (default: solutions/; exercises/ where there is none)")
         ->check(notEmpty());
-    cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK; "
+    cmd->add_option("--view", options->view, "Teaching view: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounce0, bounce1, ...; "
                     "with an environment: irradiance, prefiltered, env-scale, env-bias")
         ->capture_default_str();
     cmd->add_flag("--cpu", options->cpu, "Render with the double-precision CPU reference instead of OpenGL");

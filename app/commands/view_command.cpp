@@ -28,7 +28,7 @@ void addViewCommand(CLI::App& app) {
         ->check(CLI::IsMember({"blinn-phong", "pbr"}));
     cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT (default: the scene's size)")->check(sizeValue());
     cmd->add_option("--view", options->view,
-                    "Teaching view at start: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounceK; "
+                    "Teaching view at start: final, d, g, f, fnv, diffuse, specular, ndotl, shadow, normals, bounce0, bounce1, ...; "
                     "with an environment: irradiance, prefiltered, env-scale, env-bias")
         ->capture_default_str();
     CLI::Option* frames = cmd->add_option("--frames", options->frames,

@@ -122,6 +122,7 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
     PixelTerms out;
     out.i = i;
     out.j = j;
+    out.height = height;
     const CameraBasis basis = cameraBasis(camera);
     dvec3 dir = cameraRayDirection(glm::dvec2(i + 0.5, j + 0.5), glm::dvec2(width, height), basis.fovYRadians,
                                    basis.right, basis.up, basis.forward);
@@ -185,7 +186,8 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
 
 std::string formatPixelTerms(const Scene& scene, const PixelTerms& t) {
     std::ostringstream s;
-    s << "pixel (" << t.i << ", " << t.j << ") from the bottom left, CPU reference (double), the centre ray:\n";
+    s << "pixel (" << t.i << ", " << (t.height > 0 ? t.height - 1 - t.j : t.j) << ") from the "
+      << (t.height > 0 ? "top" : "bottom") << " left, CPU reference (double), the centre ray:\n";
     for (const BounceTerms& b : t.chain) {
         const std::string at = b.depth == 0 ? "primary hit" : "bounce " + std::to_string(b.depth);
         s << at << ": throughput " << vec(b.throughput) << "\n";

@@ -86,6 +86,7 @@ struct BounceTerms {
 
 struct PixelTerms {
     int i = 0, j = 0;  // column from the left, row from the BOTTOM (the reference's convention)
+    int height = 0;    // of the picture: the text names the row from the top (height - 1 - j), as every command does
     std::vector<BounceTerms> chain;  // the primary hit, then the bounces, up to the first miss
     glm::dvec3 radiance{0.0};        // sum of the contributions: traceRadiance of the centre ray
     glm::dvec3 pixelRadiance{0.0};   // the reference's pixel (all spp samples)

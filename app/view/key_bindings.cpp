@@ -56,8 +56,8 @@ const std::vector<KeyBinding>& keyBindings() {
         {GLFW_KEY_G, false, Action::CycleGamma, 0, "G", "gamma: off (1.0) -> 2.2 -> sRGB"},
         {GLFW_KEY_B, false, Action::ToggleReflections, 0, "B", "reflections off / on (max bounces 0 / the scene's)"},
         {GLFW_KEY_PAGE_UP, false, Action::PreviousPreset, 0, "PageUp", "previous preset scene"},
-        {GLFW_KEY_PAGE_DOWN, false, Action::NextPreset, 0, "PageDown", "next preset scene"},
-        {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (--compare, --compare-model)"},
+        {GLFW_KEY_PAGE_DOWN, false, Action::NextPreset, 0, "PageDown", "next preset scene (the course figures, scenes/presets/, in order)"},
+        {GLFW_KEY_C, false, Action::ToggleCompare, 0, "C", "split-screen wipe on / off (--compare, --compare-model); in side by side: the wipe"},
         {GLFW_KEY_X, false, Action::ToggleSideBySide, 0, "X", "side by side on / off: two full pictures (--compare, --compare-model)"},
         {GLFW_KEY_LEFT, false, Action::DividerLeft, 0, "Left", "move the wipe divider left"},
         {GLFW_KEY_RIGHT, false, Action::DividerRight, 0, "Right", "move the wipe divider right"},
@@ -99,6 +99,21 @@ std::optional<KeyBinding> bindingFor(int glfwKey, bool ctrl) {
     const int key = canonicalKey(glfwKey);
     for (const KeyBinding& b : keyBindings())
         if (b.key == key && b.ctrl == ctrl) return b;
+    return std::nullopt;
+}
+
+bool byCharacter(const KeyBinding& b) {
+    const std::string keys = b.keys;
+    return !b.ctrl && keys.size() == 1 && std::isprint(static_cast<unsigned char>(keys[0]));
+}
+
+std::optional<KeyBinding> bindingForCharacter(unsigned codepoint) {
+    if (codepoint > 127) return std::nullopt;
+    char c = char(std::toupper(int(codepoint)));
+    if (c == '=') c = '+';
+    if (c == '_') c = '-';
+    for (const KeyBinding& b : keyBindings())
+        if (byCharacter(b) && b.keys[0] == c) return b;
     return std::nullopt;
 }
 

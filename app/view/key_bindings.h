@@ -61,6 +61,17 @@ const std::vector<MouseBinding>& mouseBindings();
 // The binding for a pressed key (keypad digits count as digits).
 std::optional<KeyBinding> bindingFor(int glfwKey, bool ctrl);
 
+// Keys the help names by a character ("+", "]", "Y", "9") are bound to the
+// character typed, not to the key's place on a US keyboard: on a German
+// layout "+" has a key of its own (where a US "]" is) and "]" is AltGr+9,
+// and Y and Z trade places. The window takes them from GLFW's character
+// callback; byCharacter() says which bindings those are, and the key
+// callback leaves them alone (unless Ctrl is held: no character then).
+bool byCharacter(const KeyBinding& binding);
+// The binding for a typed character (Unicode code point): a letter in
+// either case, "=" for "+" (it shares the key on US layouts) and "_" for "-".
+std::optional<KeyBinding> bindingForCharacter(unsigned codepoint);
+
 // For scripts: "R", "6", "F11", "Ctrl+S", "Up", "PageDown", "Escape", ...
 // Throws rl::Error naming the valid names when unknown.
 KeyBinding bindingByName(const std::string& name);

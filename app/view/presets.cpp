@@ -45,6 +45,12 @@ std::vector<fs::path> presetScenes() {
     return out;
 }
 
+int presetFigureCount(const std::vector<fs::path>& presets) {
+    int n = 0;
+    while (n < int(presets.size()) && presets[std::size_t(n)].parent_path().filename() == "presets") ++n;
+    return n;
+}
+
 std::string presetTitle(const fs::path& file) {
     std::string stem = file.stem().string();
     // "01-roughness-0-to-1": drop the ordering number, dashes to spaces.

@@ -2,7 +2,8 @@
 //  * scene presets: files in scenes/presets/ (numbered in teaching order:
 //    roughness 0..1, metallic 0..1, gamma off/on, exposure low/high,
 //    reflections off/on), then the scenes in scenes/ (lecture, dielectric
-//    and metal rows). PageUp/PageDown and the panel open them; `raylab
+//    and metal rows). The panel opens them all, PageUp/PageDown the
+//    figures of scenes/presets/ in their order; `raylab
 //    render scenes/presets/...` renders the same figure headless.
 //  * setting presets: one-click changes to the scene on screen (gamma off,
 //    2.2, sRGB; exposure low, normal, high; reflections off, on).
@@ -18,6 +19,10 @@ namespace rl {
 
 // Sorted, presets/ first; empty when the folders are missing.
 std::vector<std::filesystem::path> presetScenes();
+// How many of `presets` (presetScenes()) are course figures, the files of
+// scenes/presets/ (they come first): PageDown and PageUp step through these,
+// in their numbered order; the scenes after them are opened from the panel.
+int presetFigureCount(const std::vector<std::filesystem::path>& presets);
 // "roughness 0 to 1" for "scenes/presets/01-roughness-0-to-1.json".
 std::string presetTitle(const std::filesystem::path& file);
 

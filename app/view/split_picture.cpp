@@ -1,6 +1,8 @@
 #include "view/split_picture.h"
 
 #include <algorithm>
+#include <array>
+#include <vector>
 #include <cmath>
 
 namespace rl {
@@ -84,7 +86,34 @@ void SplitPicture::render(PictureProgram& picture, const FrameSettings& frame, b
     sides_[0].drawChecked(picture, frame, look);  // a marked pixel: its exact program, built once
 }
 
-void SplitPicture::present(int windowWidth, int windowHeight) const {
+void SplitPicture::present(int windowWidth, int windowHeight, const int covered[4]) const {
+    // The window less the covered rectangle, as up to four scissor boxes (GL
+    // rows, bottom-up): right of it, left of it, above and below it. A blit
+    // is cut by the scissor test, so each box copies its own pixels only.
+    std::vector<std::array<int, 4>> boxes;  // x, y, width, height
+    if (covered && covered[2] > covered[0] && covered[3] > covered[1]) {
+        const int x0 = std::clamp(covered[0], 0, windowWidth), x1 = std::clamp(covered[2], 0, windowWidth);
+        const int y0 = windowHeight - std::clamp(covered[3], 0, windowHeight),
+                  y1 = windowHeight - std::clamp(covered[1], 0, windowHeight);
+        boxes = {{x1, 0, windowWidth - x1, windowHeight}, {0, 0, x0, windowHeight}, {x0, y1, x1 - x0, windowHeight - y1},
+                 {x0, 0, x1 - x0, y0}};
+        boxes.erase(std::remove_if(boxes.begin(), boxes.end(), [](const auto& b) { return b[2] <= 0 || b[3] <= 0; }),
+                    boxes.end());
+    } else {
+        boxes = {{0, 0, windowWidth, windowHeight}};
+    }
+    for (const auto& b : boxes) presentAll(windowWidth, windowHeight, boxes.size() > 1 ? b.data() : nullptr);
+}
+
+void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box) const {
+    // The scissor box on the window's draws only (not on the 8-bit copy's).
+    auto toWindow = [&] {
+        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        if (!box) return;
+        gl::Enable(GL_SCISSOR_TEST);
+        gl::Scissor(box[0], box[1], box[2], box[3]);
+    };
+    auto offWindow = [] { gl::Disable(GL_SCISSOR_TEST); };
     gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     gl::Viewport(0, 0, windowWidth, windowHeight);
     const int windowSplit = width_ > 0 ? int(std::lround(double(split_) * windowWidth / width_)) : 0;
@@ -94,8 +123,10 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
     const bool covered = !sideBySide_ && width_ > 0 && height_ > 0 && (drawn_[0] || windowSplit == 0) &&
                          (drawn_[1] || windowSplit == windowWidth);
     if (!covered) {
+        toWindow();
         gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         gl::Clear(GL_COLOR_BUFFER_BIT);
+        offWindow();
     }
     if (width_ == 0 || height_ == 0) return;
     const bool sameSize = width_ == windowWidth && height_ == windowHeight;
@@ -117,8 +148,10 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
         if (sameSize) {
             // Nearest at 1:1 keeps the pixels exactly as rendered (screenshots
             // match `raylab render`).
+            toWindow();
             gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, dst0[i], dstY0, dst1[i], dstY1, GL_COLOR_BUFFER_BIT,
                                 GL_NEAREST);
+            offWindow();
             continue;
         }
         // Reduced: the columns to the 8-bit copy at the same size (cheap:
@@ -127,9 +160,10 @@ void SplitPicture::present(int windowWidth, int windowHeight) const {
         gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, src0[i], 0, src1[i], srcRows, GL_COLOR_BUFFER_BIT,
                             GL_NEAREST);
         gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
-        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        toWindow();
         gl::BlitFramebuffer(src0[i], 0, src1[i], srcRows, dst0[i], dstY0, dst1[i], dstY1, GL_COLOR_BUFFER_BIT,
                             GL_LINEAR);
+        offWindow();
     }
     gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }

@@ -33,7 +33,9 @@ public:
 
     // Copies the last render to the default framebuffer's back buffer,
     // stretched to windowWidth x windowHeight (bilinear when upscaling).
-    void present(int windowWidth, int windowHeight) const;
+    // `covered` (window pixels, origin top-left): an opaque rectangle drawn
+    // over the picture afterwards (the panel), whose pixels are not copied.
+    void present(int windowWidth, int windowHeight, const int covered[4] = nullptr) const;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -52,6 +54,7 @@ private:
     // targets directly took 30 to 75 ms at 1920x1080 on two cores (more than
     // the whole frame budget), against a render of 2 ms at the lowest scale.
     void ensureUpscaleSource(int width, int height) const;
+    void presentAll(int windowWidth, int windowHeight, const int* box) const;  // present() within `box` (GL scissor), or all
     GLuint upscaleFramebuffer_ = 0, upscaleTexture_ = 0;
     mutable int upscaleWidth_ = 0, upscaleHeight_ = 0;  // allocated by present()
     GlRenderer sides_[2];

@@ -82,6 +82,8 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
         throw Error("--compare-model: unknown model " + quotedValue(options_.compareModel) + " (expected blinn-phong or pbr)");
     }
     if (compareModel && impls.size() == 1) impls.push_back(impls[0]);  // the same code, another model
+    if (options_.sideBySide && impls.size() < 2)  // an option that does not apply: refused, not ignored
+        throw Error("--side-by-side: needs a second picture (--compare DIR or --compare-model MODEL)");
 
     WindowSettings settings;
     settings.width = options_.width > 0 ? options_.width : scene_.scene().render.width;
@@ -159,13 +161,21 @@ int ViewApp::run() {
     return 0;
 }
 
+void ViewApp::endPart(FrameParts::Part p) {
+    if (options_.stats && p != FrameParts::Events && p != FrameParts::Programs && p != FrameParts::UiBuild) gl::Finish();
+    parts_.mark(p);
+}
+
 void ViewApp::frame() {
-    waitOrPoll();
+    parts_.begin();
+    if (waitOrPoll()) parts_.begin();  // idle time is no frame time
     const auto frameStart = Clock::now();  // after the wait: idle time is no frame time
     const bool scriptDone = !script_ || script_->finished();
     if (!scriptDone) script_->step(*this);
+    endPart(FrameParts::Events);
     applyReloads();
     for (Side& side : sides_) selectProgram(side);  // the view may have changed: its program
+    endPart(FrameParts::Programs);
 
     int width = 0, height = 0;
     window_->framebufferSize(width, height);
@@ -192,7 +202,20 @@ void ViewApp::frame() {
         renderPicture(screenshot);
         rendered = true;
     }
-    picture_->present(fbWidth_, fbHeight_);
+    endPart(FrameParts::Render);
+    // The opaque panel's pixels are not presented (on llvmpipe every window
+    // pixel drawn costs; issue 37) where it stays where it was drawn the
+    // last two frames and no hand moves it; the picture's own screenshot
+    // needs them all.
+    const LayoutRect panelNow = panelPixels();
+    const bool panelSteady = !panelNow.empty() && panelNow.x0 == steadyPanel_.x0 && panelNow.y0 == steadyPanel_.y0 &&
+                             panelNow.x1 == steadyPanel_.x1 && panelNow.y1 == steadyPanel_.y1 &&
+                             !panelOwnsButton_[0] && !panelOwnsButton_[1] && !panelOwnsButton_[2] &&
+                             pendingShot_.empty() && steadyScale_ == ui_->scale() && !panelRects_.panel.empty();
+    const int covered[4] = {int(std::ceil(panelNow.x0)), int(std::ceil(panelNow.y0)), int(std::floor(panelNow.x1)),
+                            int(std::floor(panelNow.y1))};
+    picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr);
+    endPart(FrameParts::Present);
     const std::vector<OverlaySegment> rays = pickedRays();
     const std::vector<OverlayLabel> labels = sideBySideLabels();
     // What the caption keeps clear of: the spheres, the panel, the wipe's names.
@@ -255,6 +278,7 @@ void ViewApp::frame() {
     if (state_.showCaptions || !rays.empty() || !labels.empty())
         captionPlaced_ = captions_->draw(currentCaption(), state_.showCaptions, rays, labels, fbWidth_, fbHeight_,
                                          ui_->scale(), avoid, topReserved, showErrors);
+    endPart(FrameParts::Overlays);
     if (!pendingShot_.empty()) writeScreenshot(pendingShot_, false);
     pendingShot_.clear();
 
@@ -264,7 +288,15 @@ void ViewApp::frame() {
     pendingUiShot_.clear();
     if (!pendingLayout_.empty()) writeLayout(pendingLayout_);
     pendingLayout_.clear();
+    endPart(FrameParts::UiDraw);
+    steadyPanel_ = panelNow.x0 == panelPixels().x0 && panelNow.y0 == panelPixels().y0 &&
+                           panelNow.x1 == panelPixels().x1 && panelNow.y1 == panelPixels().y1
+                       ? panelNow
+                       : LayoutRect{};
+    steadyScale_ = ui_->scale();
     glfwSwapBuffers(window_->window());
+    endPart(FrameParts::Swap);
+    if (rendered) parts_.end(renderedScale_ < 1.0 || moving());
     if (rendered) {
         const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         stats_.addWall(frameMs);
@@ -279,20 +311,21 @@ void ViewApp::frame() {
     if (scriptDone && framesLeft_ > 0 && --framesLeft_ == 0) quit_ = true;
 }
 
-void ViewApp::waitOrPoll() {
+bool ViewApp::waitOrPoll() {
     if (fbWidth_ <= 0 || fbHeight_ <= 0) {  // minimised: nothing to draw until the window comes back
         glfwWaitEventsTimeout(kIdleWaitSeconds);
-        return;
+        return true;
     }
     const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || framesBeforeIdle_ > 0 ||
                       (script_ && !script_->finished()) || framesLeft_ > 0 || Clock::now() < toastUntil_;
     if (busy) {
         glfwPollEvents();
         if (framesBeforeIdle_ > 0) --framesBeforeIdle_;
-    } else {
-        glfwWaitEventsTimeout(kIdleWaitSeconds);
-        framesBeforeIdle_ = kFramesAfterWake;
+        return false;
     }
+    glfwWaitEventsTimeout(kIdleWaitSeconds);
+    framesBeforeIdle_ = kFramesAfterWake;
+    return true;
 }
 
 void ViewApp::applyReloads() {
@@ -515,6 +548,7 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         layout_.add("wipe left name", LayoutBox::Kind::Widget, toPixels(wipeLabels.left));
         layout_.add("wipe right name", LayoutBox::Kind::Widget, toPixels(wipeLabels.right));
     }
+    endPart(FrameParts::UiBuild);
     ui_->endFrame();
 
     if (!captionPlaced_.box.empty()) {
@@ -838,6 +872,12 @@ void ViewApp::printStats() const {
         if (!fullRenderMs_.empty())
             std::printf("raylab view: still: %zu renders at full resolution, median %.1f ms\n", fullRenderMs_.size(),
                         FrameStats::median(fullRenderMs_));
+    }
+    if (options_.stats && parts_.movingFrames() > 0) {
+        const double interval = parts_.movingIntervalMs();
+        std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,
+                    interval > 0 ? 1000.0 / interval : 0.0);
+        std::printf("raylab view: parts: %s\n", parts_.summary().c_str());
     }
     std::fflush(stdout);
 }

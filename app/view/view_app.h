@@ -13,6 +13,7 @@
 #include "view/adaptive_resolution.h"
 #include "view/asked_pixel_label.h"
 #include "view/file_watcher.h"
+#include "view/frame_parts.h"
 #include "view/frame_stats.h"
 #include "view/gpu_timer.h"
 #include "view/imgui_layer.h"
@@ -65,7 +66,10 @@ private:
 
     // -- the loop (view_app.cpp)
     void frame();
-    void waitOrPoll();
+    bool waitOrPoll();  // true: it waited for events (idle)
+    // --stats: the GL queue finished at the end of part `p`, so each part is
+    // charged with its own pixels (frame_parts.h); without --stats, a mark only.
+    void endPart(FrameParts::Part p);
     void applyReloads();
     void rebuild(Side& side, bool initial);
     ShaderDefines liveDefines(const Side& side) const;  // the live program's defines (render/define_table.h)
@@ -110,6 +114,7 @@ private:
     // A press from the window system: the panel's, an asked pixel, or the camera's.
     void onPress(int button, int mods, glm::dvec2 pixel);
     void onKey(int key, int action, int mods);
+    void onCharacter(unsigned codepoint);  // keys by character (key_bindings.h, byCharacter)
     void onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fromScript);
     void onCursor(glm::dvec2 pixel);
     void onScroll(double steps);
@@ -172,6 +177,7 @@ private:
     ViewState state_;
     AdaptiveResolution adaptive_;
     FrameStats stats_;
+    FrameParts parts_;  // where each frame's time goes (--stats)
     int fbWidth_ = 0, fbHeight_ = 0;  // framebuffer size this frame
     bool dirty_ = true;               // the picture must be rendered again
     double renderedScale_ = 0;        // scale of the picture on screen; 0 = none yet
@@ -186,6 +192,7 @@ private:
     int reloads_ = 0;                 // hot reloads applied (for wait-reload)
     bool quit_ = false;
     bool draggingDivider_ = false;
+    bool keyRepeats_ = false;    // the last key event was a repeat: its character is one too
     int dragButton_ = -1;        // the mouse button of the trackball drag, -1 = none
     static constexpr int kMouseButtons = 3;  // left, right, middle (GLFW's numbering)
     bool panelOwnsButton_[kMouseButtons] = {};  // pressed on the panel: everything until the release is the panel's
@@ -199,6 +206,8 @@ private:
     bool scriptedShot_ = false;
     LayoutReport layout_;        // this frame's rectangles, framebuffer pixels
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
+    LayoutRect steadyPanel_;     // the panel, framebuffer pixels, where the last two frames drew it; empty: it moved
+    float steadyScale_ = 0;      // the UI scale of the last frame
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels

@@ -6,6 +6,7 @@
 #include "render/pixel_debugger.h"
 
 #include "core/error.h"
+#include "view/presets.h"
 #include "view/screenshot.h"
 
 #define GLFW_INCLUDE_NONE
@@ -61,6 +62,7 @@ bool repeats(Action a) {  // actions that a held key repeats; toggles do not
 // (ImGui's GLFW backend keeps its own state and chains to these.)
 struct ViewAppCallbacks {
     static void key(GLFWwindow* w, int key, int, int action, int mods) { appOf(w)->onKey(key, action, mods); }
+    static void character(GLFWwindow* w, unsigned codepoint) { appOf(w)->onCharacter(codepoint); }
     // The press happens where the last motion event put the cursor: asking
     // the window system now (glfwGetCursorPos) would give where the mouse is
     // by the time a slow frame lets the events through. It belongs to the
@@ -86,9 +88,13 @@ struct ViewAppCallbacks {
         app->cursor_ = app->toPixels({x, y});
         app->onCursor(app->cursor_);
     }
+    // The wheel over the panel scrolls the panel, never the camera: ImGui's
+    // own flag, or the pointer on a window of the last frame drawn (the
+    // flag is polled at NewFrame and is stale when the pointer just arrived).
     static void scroll(GLFWwindow* w, double, double y) {
         ViewApp* app = appOf(w);
-        if (!app->ui_->wantsMouse()) app->onScroll(y);
+        const glm::dvec2 at = app->cursor_ * app->toWindowUnits();
+        if (!app->ui_->wantsMouse() && !app->ui_->isOverUi(at.x, at.y)) app->onScroll(y);
     }
 };
 
@@ -108,6 +114,7 @@ void ViewApp::installCallbacks() {
     GLFWwindow* w = window_->window();
     glfwSetWindowUserPointer(w, this);
     glfwSetKeyCallback(w, &ViewAppCallbacks::key);
+    glfwSetCharCallback(w, &ViewAppCallbacks::character);
     glfwSetMouseButtonCallback(w, &ViewAppCallbacks::button);
     glfwSetCursorPosCallback(w, &ViewAppCallbacks::cursor);
     glfwSetScrollCallback(w, &ViewAppCallbacks::scroll);
@@ -147,7 +154,16 @@ void ViewApp::valueChanged() {
 void ViewApp::onKey(int key, int action, int mods) {
     if (action == GLFW_RELEASE || ui_->wantsKeyboard()) return;  // typing in a panel field
     auto binding = bindingFor(key, (mods & GLFW_MOD_CONTROL) != 0);
+    keyRepeats_ = action == GLFW_REPEAT;  // for the character this key types next (onCharacter)
+    if (binding && byCharacter(*binding)) return;  // by the character typed: onCharacter
     if (!binding || (action == GLFW_REPEAT && !repeats(binding->action))) return;
+    perform(binding->action, binding->argument);
+}
+
+void ViewApp::onCharacter(unsigned codepoint) {
+    if (ui_->wantsKeyboard()) return;  // typing in a panel field
+    const auto binding = bindingForCharacter(codepoint);
+    if (!binding || (keyRepeats_ && !repeats(binding->action))) return;
     perform(binding->action, binding->argument);
 }
 
@@ -384,9 +400,11 @@ void ViewApp::perform(Action action, int argument) {
         }
         case Action::PreviousPreset:
         case Action::NextPreset: {
-            if (presets_.empty()) break;
-            const int n = int(presets_.size());
-            const int current = currentPreset();
+            // The course figures (scenes/presets/, the table of docs/lecture.md)
+            // in their order; from any other scene the first (or the last).
+            const int n = presetFigureCount(presets_);
+            if (n == 0) break;
+            const int current = currentPreset() < n ? currentPreset() : -1;
             const int step = action == Action::NextPreset ? 1 : -1;
             openPreset(current < 0 ? (step > 0 ? 0 : n - 1) : (current + step + n) % n);
             break;
@@ -396,7 +414,13 @@ void ViewApp::perform(Action action, int argument) {
                 toast("no wipe: start with --compare DIR or --compare-model MODEL");
                 break;
             }
-            state_.wipe = !state_.wipe;
+            if (state_.sideBySide) {  // C in side by side: back to the wipe, which C then toggles
+                state_.sideBySide = false;
+                state_.wipe = true;
+                toast("wipe (C: off, X: side by side)");
+            } else {
+                state_.wipe = !state_.wipe;
+            }
             dirty_ = true;
             break;
         case Action::ToggleSideBySide:
