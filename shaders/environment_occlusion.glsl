@@ -51,24 +51,8 @@ vec3 capMeanRadiance(vec3 w, float b) {
 }
 
 // The share of the cosine-weighted hemisphere of n that a sphere covers
-// (its form factor), seen at distance d in radii h = d / R along w, with
-// cos(beta) = n.w; clipped by the horizon where the cap crosses it
-// (Snyder 1996; Lagarde and de Rousiers 2014, "Moving Frostbite to PBR"):
-//     h cos(beta) >= 1  (above):  cos(beta) / h^2
-//     h cos(beta) <= -1 (below):  0
-//     otherwise, with x = sqrt(h^2 - 1), k = sqrt(1 - h^2 cos(beta)^2):
-//       (cos(beta) acos(-x cos(beta) / sin(beta)) - x k) / (pi h^2) + atan(k / x) / pi
-// (h > 1: the point is outside the sphere.)
-float capFormFactor(float h, float cosBeta) {
-    float h2 = h * h;
-    float k2 = 1.0 - h2 * cosBeta * cosBeta;
-    if (k2 <= 0.0) return max(cosBeta, 0.0) / h2;
-    float x = sqrt(h2 - 1.0);
-    float sinBeta = sqrt(max(1.0 - cosBeta * cosBeta, 1e-12));
-    float k = sqrt(k2);
-    float clipped = (cosBeta * acos(clamp(-x * cosBeta / sinBeta, -1.0, 1.0)) - x * k) / h2 + atan(k, x);
-    return clamp(clipped / PI, 0.0, 1.0);
-}
+// (its form factor, clipped by the horizon) is exercise 12's
+// sphereFormFactor(p, n, centre, radius) (course/12-sky-shadows).
 
 // The share of a cone of half-angle a that a cap of half-angle b covers, their
 // axes theta apart (Oat and Sander 2007, "Ambient aperture lighting": the
@@ -116,7 +100,7 @@ OccludedLight occludeEnvironment(Hit hit, vec3 r, float roughness, vec3 E, vec3 
             lost = E;
             continue;
         }
-        float F = capFormFactor(h, dot(hit.n, w));
+        float F = sphereFormFactor(hit.p, hit.n, s.xyz, s.w);  // exercise 12
         float capAngle = asin(1.0 / h);
         float S = coneCapCoverage(coneAngle, capAngle, acos(clamp(dot(r, w), -1.0, 1.0)));
         specularVisible *= 1.0 - clamp(S, 0.0, 1.0);

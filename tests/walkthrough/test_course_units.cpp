@@ -138,7 +138,7 @@ TEST(Course, AddingAnExercise) {
     fs::path repo = repositoryCopy("adding");
     for (const DocFile& f : files) {
         EXPECT_TRUE(f.path.rfind("course/", 0) == 0) << f.path << ": the section edits a file outside course/";
-        EXPECT_TRUE(f.path.rfind("course/12-hemisphere/", 0) == 0 || f.path == "course/manifest.txt") << f.path;
+        EXPECT_TRUE(f.path.rfind("course/13-hemisphere/", 0) == 0 || f.path == "course/manifest.txt") << f.path;
         fs::create_directories((repo / f.path).parent_path());
         std::ofstream out(repo / f.path, f.append ? std::ios::app : std::ios::trunc);
         out << f.text;
@@ -152,16 +152,16 @@ TEST(Course, AddingAnExercise) {
     ASSERT_EQ(commands[0], "scripts/build.sh");
     ASSERT_EQ(results[0].status, 0) << results[0].output;
 
-    EXPECT_EQ(commands[1], "./raylab check --exercise 12");
+    EXPECT_EQ(commands[1], "./raylab check --exercise 13");
     EXPECT_EQ(results[1].status, 1) << results[1].output;
-    EXPECT_TRUE(std::regex_search(results[1].output, std::regex("12-hemisphere +NOT STARTED"))) << results[1].output;
-    EXPECT_NE(results[1].output.find("course/12-hemisphere/stub.glsl"), std::string::npos) << results[1].output;
+    EXPECT_TRUE(std::regex_search(results[1].output, std::regex("13-hemisphere +NOT STARTED"))) << results[1].output;
+    EXPECT_NE(results[1].output.find("course/13-hemisphere/stub.glsl"), std::string::npos) << results[1].output;
 
     EXPECT_EQ(results[2].status, 0) << results[2].output;
-    EXPECT_TRUE(std::regex_search(results[2].output, std::regex("12-hemisphere +PASS"))) << results[2].output;
+    EXPECT_TRUE(std::regex_search(results[2].output, std::regex("13-hemisphere +PASS"))) << results[2].output;
 
     EXPECT_EQ(results[3].status, 1) << results[3].output;
-    EXPECT_TRUE(std::regex_search(results[3].output, std::regex("12-hemisphere +FAIL"))) << results[3].output;
+    EXPECT_TRUE(std::regex_search(results[3].output, std::regex("13-hemisphere +FAIL"))) << results[3].output;
     EXPECT_NE(results[3].output.find("the blend weight is (1 + n.y) / 2, not n.y"), std::string::npos) << results[3].output;
 
     // The stripes: the frame of the picture with the stub differs from the
@@ -187,15 +187,15 @@ TEST(Course, AddingAnExercise) {
 
     // A column of its own in the default rubric.
     std::string header = gradeColumns(repo, repo / "solutions");
-    EXPECT_NE(header.find("12-hemisphere"), std::string::npos) << header;
+    EXPECT_NE(header.find("13-hemisphere"), std::string::npos) << header;
     // The browser page's build takes the unit (scripts/build-web.sh compiles
     // what cmake/course.cmake lists; the page's tabs are the registry's).
     test::CommandResult listed = runIn(repo, "cmake -DRAYLAB_ROOT_DIR=. -DRAYLAB_GENERATED_DIR=web-generated "
                                               "-P cmake/course.cmake && cat web-generated/course_sources.txt");
     EXPECT_EQ(listed.status, 0) << listed.output;
-    EXPECT_NE(listed.output.find("course/12-hemisphere/probes.cpp"), std::string::npos) << listed.output;
+    EXPECT_NE(listed.output.find("course/13-hemisphere/probes.cpp"), std::string::npos) << listed.output;
     // The page's tabs are allExercises() of the units compiled in (web/raylab_web.cpp).
-    EXPECT_NE(test::readText(repo / "web-generated" / "course_units.cpp").find("{\"12-hemisphere\", 11,"),
+    EXPECT_NE(test::readText(repo / "web-generated" / "course_units.cpp").find("{\"13-hemisphere\", 12,"),
               std::string::npos);
 }
 
