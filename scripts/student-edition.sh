@@ -126,7 +126,7 @@ leave_out=(
 if [ "$with_reference" -eq 0 ]; then
     leave_out+=(
         app/reference/brdf_reference.cpp app/reference/cpu_reference.cpp app/reference/environment_reference.cpp
-        app/reference/pixel_breakdown.cpp app/reference/split_sum.cpp
+        app/reference/pixel_breakdown.cpp app/reference/split_sum.cpp app/reference/sphere_form_factor.cpp
         app/checks/probe_toolkit.h  # what the probes.cpp are written with
         tests/unit/test_cpu_reference.cpp tests/unit/test_environment.cpp tests/unit/test_sky_tiles.cpp
         tests/unit/test_probe_cases.cpp

@@ -38,8 +38,8 @@ const int DBG_ENV_IRRADIANCE = 33;   // 11 shIrradiance(local n), times the inte
 const int DBG_ENV_LEVEL = 34;        // 11 prefilteredLevel(roughness, levels)
 const int DBG_ENV_PREFILTERED = 35;  // the prefiltered chain at local reflect(-v, n), that level, times the intensity
 const int DBG_ENV_SCALE_BIAS = 36;   // the split-sum table at (n.v, roughness): scale, bias
-const int DBG_ENV_VISIBILITY = 37;   // the share of the environment the hit sees (1: no occlusion term)
-const int DBG_ENV_LIGHT = 38;        // 11 environmentShading(irradiance, prefiltered, scaleBias, m) * visibility
+const int DBG_ENV_VISIBILITY = 37;   // 12 sphereFormFactor of the other spheres, summed
+const int DBG_ENV_LIGHT = 38;        // 11 environmentShading(irradiance, prefiltered, scaleBias, m)
 const int DBG_WEIGHT = 40;         // 09 traceRay's weight of bounce k (its throughput there)
 const int DBG_RADIANCE = 41;       // 09 traceRay: the centre ray's radiance
 const int DBG_DISPLAY = 50;        // 10 displayEncode, clamped: the display colour of that radiance
@@ -91,20 +91,27 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
     }
 #ifdef RL_ENVIRONMENT
     // The environment's terms, step by step as environmentHitLight() takes
-    // them (read only: that function stays the picture's). An occlusion term
-    // records its factor as the visibility, and multiplies the light by it.
+    // them (read only: that function stays the picture's), before the
+    // spheres' occlusion, which the debugger's program leaves out
+    // (render/pixel_debugger.cpp); exercise 12's form factors of the other
+    // spheres, summed, on a row of their own.
     float envNoV = clamp(dot(hit.n, v), 1e-4, 1.0);
     vec3 envE = u_envIntensity * shIrradiance(environmentLocal(hit.n));
     float envLevel = prefilteredLevel(m.roughness, u_envLevels);
     vec3 envPrefiltered = u_envIntensity * prefilteredRadiance(environmentLocal(reflect(-v, hit.n)), envLevel);
     vec2 envScaleBias = splitSumLookup(envNoV, m.roughness);
-    float envVisibility = 1.0;
+    float formFactors = 0.0;
+    for (int k = 0; k < sphereCount(); ++k) {
+        vec4 s = sphereGeometry(k);
+        if (k == hit.sphere) continue;
+        formFactors += length(s.xyz - hit.p) <= s.w ? 1.0 : sphereFormFactor(hit.p, hit.n, s.xyz, s.w);
+    }
     debugRecord(DBG_ENV_IRRADIANCE, bounce, -1, envE);
     debugRecord(DBG_ENV_LEVEL, bounce, -1, vec3(envLevel, 0.0, 0.0));
     debugRecord(DBG_ENV_PREFILTERED, bounce, -1, envPrefiltered);
     debugRecord(DBG_ENV_SCALE_BIAS, bounce, -1, vec3(envScaleBias, 0.0));
-    debugRecord(DBG_ENV_VISIBILITY, bounce, -1, vec3(envVisibility, 0.0, 0.0));
-    debugRecord(DBG_ENV_LIGHT, bounce, -1, environmentShading(envE, envPrefiltered, envScaleBias, m) * envVisibility);
+    debugRecord(DBG_ENV_VISIBILITY, bounce, -1, vec3(formFactors, 0.0, 0.0));
+    debugRecord(DBG_ENV_LIGHT, bounce, -1, environmentShading(envE, envPrefiltered, envScaleBias, m));
 #endif
 }
 

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "reference/brdf_reference.h"
 #include "reference/cpu_reference.h"
+#include "reference/sphere_form_factor.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -109,7 +110,7 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
     const dvec3 F0 = baseReflectance(m);
     const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * e.irradiance;
     const dvec3 specular = e.prefiltered * (F0 * e.scaleBias.x + e.scaleBias.y);
-    e.light = (diffuse + specular) * e.visibility;
+    e.light = diffuse + specular;
     return e;
 }
 
@@ -161,6 +162,7 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
         b.shaded = shadeHit(scene, hit, b.v);
         if (withEnvironment) {
             b.environment = environmentTerms(*scene.environment, *environment, hit.n, b.v, m);
+            b.environment->formFactors = summedFormFactors(scene.spheres, hit.sphere, hit.p, hit.n);
             b.shaded += b.environment->light;
         }
         b.contribution = throughput * b.shaded;
@@ -211,7 +213,7 @@ std::string formatPixelTerms(const Scene& scene, const PixelTerms& t) {
             const EnvironmentTerms& e = *b.environment;
             s << "  environment: irradiance " << vec(e.irradiance) << "  level " << num(e.level) << "  prefiltered "
               << vec(e.prefiltered) << "\n    scale " << num(e.scaleBias.x) << "  bias " << num(e.scaleBias.y)
-              << "  visibility " << num(e.visibility) << "  light " << vec(e.light) << "\n";
+              << "  form factors " << num(e.formFactors) << "  light " << vec(e.light) << "\n";
         }
         s << "  ambient " << vec(b.ambient) << "  shaded " << vec(b.shaded) << "  contribution " << vec(b.contribution)
           << "\n";

@@ -60,8 +60,11 @@ struct EnvironmentTerms {
     // it to the tolerance of the lookup and of the values made from it.
     glm::dvec3 prefilteredSpread{0.0};
     glm::dvec2 scaleBias{0.0};    // the split-sum table at (clamped n.v, roughness), bilinear
-    double visibility = 1.0;      // the share of the environment the hit sees: 1 (no occlusion term yet)
-    glm::dvec3 light{0.0};        // environmentShading(irradiance, prefiltered, scaleBias, m) * visibility
+    // Exercise 12: the form factors of the other spheres at the hit, summed
+    // (reference/sphere_form_factor.h): the share of the sky's diffuse light
+    // they hide, before the occlusion's framework parts (docs/model.md).
+    double formFactors = 0.0;
+    glm::dvec3 light{0.0};        // environmentShading(irradiance, prefiltered, scaleBias, m), before occlusion
 };
 constexpr double kLookupAngle = 1e-4;  // radians: the shader's float atan and acos (a GPU's approximations), with room
 EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, glm::dvec3 n,

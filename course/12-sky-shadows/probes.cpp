@@ -2,7 +2,7 @@
 // across and below the horizon, touching and far, against reference.cpp,
 // with the float32 tolerance and the mistakes the checker names.
 #include "checks/probe_toolkit.h"
-#include "reference.h"
+#include "reference/sphere_form_factor.h"
 
 namespace rl {
 namespace {

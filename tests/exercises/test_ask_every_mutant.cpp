@@ -63,6 +63,12 @@ std::vector<Scene> scenesFor(const ExerciseInfo& unit, const fs::path& tmp) {
         s.render.spp = 1;
         return s;
     };
+    if (unit.showsWith == "RL_ENV_OCCLUSION") {  // 12-sky-shadows: spheres near each other under a sky
+        for (const char* file : {"scenes/environments/contact.json", "scenes/presets/11-environment-contact.json",
+                                 "scenes/environments/sky-spheres.json"})
+            out.push_back(sized(loadSceneFile((sourceRoot() / file).string()).scene));
+        return out;
+    }
     if (unit.showsWith == "RL_ENVIRONMENT") {
         for (const char* file : {"scenes/environments/sky-spheres.json", "scenes/environments/studio-spheres.json",
                                  "scenes/presets/11-environment-contact.json"})

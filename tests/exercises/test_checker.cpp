@@ -32,7 +32,14 @@ int countOf(const std::string& text, const std::string& what) {
     return n;
 }
 
-// The manifest's optional exercises (11-environment): checked, but not in "10 of 10".
+// A verdict as the check prints it: in an exercise's line (" PASS ") and in
+// the summary of the optional ones ("optional 11-environment: PASS; optional
+// 12-sky-shadows: PASS (2 s)").
+int verdictCount(const std::string& text, const std::string& verdict) {
+    return countOf(text, " " + verdict + " ") + countOf(text, " " + verdict + ";");
+}
+
+// The manifest's optional exercises (11-environment, 12-sky-shadows): checked, but not in "10 of 10".
 int optionalCount() {
     int n = 0;
     for (const ExerciseInfo& e : allExercises()) n += e.optional ? 1 : 0;
@@ -46,14 +53,14 @@ TEST(Checker, SolutionsPassEveryCheck) {
                              test::freshTempDir("sol").string());
     EXPECT_EQ(r.status, 0) << r.output;
     // Each exercise's line, and an optional one's verdict again in the summary.
-    EXPECT_EQ(countOf(r.output, " PASS "), 10 + 2 * optionalCount()) << r.output;
+    EXPECT_EQ(verdictCount(r.output, "PASS"), 10 + 2 * optionalCount()) << r.output;
     EXPECT_NE(r.output.find("10 of 10 exercises pass"), std::string::npos);
 }
 
 TEST(Checker, StubsAreNotStartedEverywhere) {
     auto r = test::runRaylab("check --impl " + exercisesDir().string());
     EXPECT_EQ(r.status, 1) << r.output;
-    EXPECT_EQ(countOf(r.output, " NOT STARTED "), 10 + 2 * optionalCount()) << r.output;  // and in the summary
+    EXPECT_EQ(verdictCount(r.output, "NOT STARTED"), 10 + 2 * optionalCount()) << r.output;  // and in the summary
 }
 
 TEST(Checker, EditedStubsThatStillReturnTheSentinelAreNotStarted) {
@@ -138,7 +145,7 @@ TEST(Checker, CompileErrorNamesTheStudentFileAndTheOthersAreStillChecked) {
     bool named = r.output.find("05-ggx.glsl:" + std::to_string(line) + ": error") != std::string::npos ||
                  r.output.find("05-ggx.glsl:" + std::to_string(line + 1) + ": error") != std::string::npos;
     EXPECT_TRUE(named) << r.output;
-    EXPECT_EQ(countOf(r.output, " PASS "), 9 + 2 * optionalCount()) << r.output;  // the optional's line and summary
+    EXPECT_EQ(verdictCount(r.output, "PASS"), 9 + 2 * optionalCount()) << r.output;  // the optional's line and summary
 }
 
 TEST(Checker, FilesThatPassAloneButClashTogetherFailTheCheck) {
@@ -208,9 +215,9 @@ TEST(Checker, AShaderThatNeverEndsCostsItsExerciseOnly) {
 }
 
 TEST(Checker, BadCommandLine) {
-    auto e = test::runRaylab("check --exercise 12");  // 11 is the optional 11-environment
+    auto e = test::runRaylab("check --exercise 13");  // 11 and 12 are the optional 11-environment and 12-sky-shadows
     EXPECT_EQ(e.status, 1);
-    EXPECT_NE(e.output.find("--exercise: no exercise '12'"), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find("--exercise: no exercise '13'"), std::string::npos) << e.output;
     auto d = test::runRaylab("check --impl /nonexistent");
     EXPECT_EQ(d.status, 1);
     EXPECT_EQ(d.output, "raylab: error: --impl: /nonexistent is not a directory\n");

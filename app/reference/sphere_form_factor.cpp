@@ -1,7 +1,7 @@
-// Exercise 12 in double: the form factor of a sphere (Snyder 1996; Lagarde
+// The form factor of a sphere (Snyder 1996; Lagarde
 // and de Rousiers 2014, "Moving Frostbite to PBR", the sphere light's
 // illuminance), as docs/model.md writes it.
-#include "reference.h"
+#include "reference/sphere_form_factor.h"
 
 #include <glm/geometric.hpp>
 
@@ -26,6 +26,16 @@ double sphereFormFactor(glm::dvec3 p, glm::dvec3 n, glm::dvec3 centre, double ra
     const glm::dvec3 toCentre = centre - p;
     const double d = glm::length(toCentre);
     return sphereFormFactor(d / radius, glm::dot(n, toCentre / d));
+}
+
+double summedFormFactors(const std::vector<Sphere>& spheres, int own, glm::dvec3 p, glm::dvec3 n) {
+    double sum = 0;
+    for (int k = 0; k < int(spheres.size()); ++k) {
+        if (k == own) continue;
+        const double d = glm::length(spheres[std::size_t(k)].center - p);
+        sum += d <= spheres[std::size_t(k)].radius ? 1.0 : sphereFormFactor(p, n, spheres[std::size_t(k)].center, spheres[std::size_t(k)].radius);
+    }
+    return sum;
 }
 
 }  // namespace rl::ref
