@@ -94,13 +94,15 @@ TEST(EnvironmentPicture, BuildsAsGlslEs) {
     EXPECT_NO_THROW(ShaderProgram(vertex, fragment));
 }
 
-// A uniform white environment on two spheres, the reference without
-// visibility (the shader's model: environment light is not shadowed): SH9 of a constant is exact and
+// A uniform white environment on two spheres 0.1 apart, the reference with
+// visibility (each sphere's cap taken out of the other's light in closed
+// form, environment_occlusion.glsl, exact for a uniform map but for the
+// specular cone's shape): SH9 of a constant is exact and
 // the prefiltered map is the constant, so only the split-sum table's
 // quadrature and interpolation and the diffuse weight (1 - F0) for
 // (1 - F(v.h)) separate the picture from the exact integral, and the
-// reference's own noise. Measured: relative L1 difference 0.26%, 8-bit mean
-// 0.35 LSB (80x60, 256 reference samples). The bound 1% leaves room for the
+// reference's own noise. Measured: relative L1 difference 0.35%, 8-bit mean
+// 0.75 LSB (80x60, 256 reference samples; 0.26% and 0.35 LSB unshadowed against V = 1). The bound 1% leaves room for the
 // reference's noise; without the diffuse 1/pi it is 18% off (seen failing),
 // and with the level taken as the roughness itself (a mutant of exercise
 // 11) the metal sphere is visibly sharper but, in a uniform map, no
@@ -113,9 +115,7 @@ TEST(EnvironmentPicture, UniformEnvironmentMatchesTheReference) {
                     {"center": [0.55, 0, 0], "radius": 0.5, "material": {"albedo": [0.9, 0.6, 0.3], "roughness": 0.35, "metallic": 1}}]})",
                          (sourceRoot() / "scenes/environments/uniform.json").string()).scene;
     Rendering gl = test::renderGl(s);
-    ref::EnvironmentOptions open;
-    open.visibility = false;
-    Rendering cpu = ref::renderCpu(s, 0, open);
+    Rendering cpu = ref::renderCpu(s, 0, ref::EnvironmentOptions{});
     ImageDiff d = compareRenderings(gl, cpu);
     double rel = meanRelative(gl.radiance, cpu.radiance);
     std::printf("uniform environment, GL vs reference: mean relative %.4f, %s\n", rel, test::describe(d).c_str());
@@ -123,10 +123,12 @@ TEST(EnvironmentPicture, UniformEnvironmentMatchesTheReference) {
     EXPECT_EQ(d.nonFinite, 0);
 }
 
-// The shipped scenes: what the approximations leave out (contact occlusion,
-// inter-reflection of the environment, the split sum's n = v = r) shows as
-// a bias against the exact reference. Reported, bounded only against a
-// picture gone wrong (no environment light at the hits is 40% off).
+// The shipped scenes: the picture is shadowed by the spheres (issue 34,
+// environment_occlusion.glsl), so it is near the exact reference WITH
+// visibility and far from the one without (measured at 80x45, 256 samples:
+// relative L1 0.029 and 0.17 on the sky, 0.072 and 0.22 on the studio; the
+// unshadowed picture was 0.18 and 0.27 from the truth). Bounded against a
+// shadow gone missing or wrong.
 TEST(EnvironmentPicture, ShippedScenesAgainstTheReference) {
     for (const char* file : {"scenes/environments/sky-spheres.json", "scenes/environments/studio-spheres.json"}) {
         Scene s = loaded(file, 80, 45);
@@ -139,7 +141,8 @@ TEST(EnvironmentPicture, ShippedScenesAgainstTheReference) {
         double relA = meanRelative(gl.radiance, withV.radiance), relB = meanRelative(gl.radiance, withoutV.radiance);
         std::printf("%s 80x45, GL vs reference with V: mean relative %.4f, %s\n", file, relA, test::describe(a).c_str());
         std::printf("%s 80x45, GL vs reference without V: mean relative %.4f, %s\n", file, relB, test::describe(b).c_str());
-        EXPECT_LT(relB, 0.25) << file;
+        EXPECT_LT(relA, 0.12) << file;
+        EXPECT_LT(relA, 0.5 * relB) << file;
         EXPECT_EQ(a.nonFinite, 0);
     }
 }
