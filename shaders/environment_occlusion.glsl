@@ -73,13 +73,11 @@ float capFormFactor(float h, float cosBeta) {
 // The share of a cone of half-angle a that a cap of half-angle b covers, their
 // axes theta apart (Oat and Sander 2007, "Ambient aperture lighting": the
 // smaller cap's area, faded by a smoothstep between the two tangencies).
-float coneCapCoverage(float a, float b, float theta) {
-    float small = min(a, b);
-    float overlap;
-    if (theta <= abs(a - b)) overlap = 1.0;
-    else if (theta >= a + b) overlap = 0.0;
-    else overlap = smoothstep(0.0, 1.0, 1.0 - (theta - abs(a - b)) / (a + b - abs(a - b)));
-    return overlap * (1.0 - cos(small)) / max(1.0 - cos(a), 1e-7);
+// (1 - cos a and 1 - cos b given, as the callers have them.)
+float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, float theta) {
+    if (theta >= a + b) return 0.0;
+    float overlap = theta <= abs(a - b) ? 1.0 : smoothstep(0.0, 1.0, 1.0 - (theta - abs(a - b)) / (a + b - abs(a - b)));
+    return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
 // The specular cone's half-angle for perceptual roughness.
@@ -100,6 +98,8 @@ struct OccludedLight {
 
 OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 E, vec3 P) {
     float coneAngle = specularConeAngle(roughness);
+    float coneOneMinusCos = 1.0 - cos(coneAngle);
+    float sunOneMinusCos = 1.0 - cos(u_envSun.w);
     vec3 r = reflected;
     float diffuseVisible = 1.0, specularVisible = 1.0;
     vec3 lost = vec3(0.0);
@@ -119,24 +119,24 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
         }
         float F = capFormFactor(h, dot(hit.n, w));
         float capAngle = asin(1.0 / h);
-        float S = coneCapCoverage(coneAngle, capAngle, acos(clamp(dot(r, w), -1.0, 1.0)));
+        float cb = sqrt(1.0 - 1.0 / (h * h));  // cos(capAngle)
+        float S = coneCapCoverage(coneAngle, coneOneMinusCos, capAngle, 1.0 - cb, acos(clamp(dot(r, w), -1.0, 1.0)));
         specularVisible *= 1.0 - clamp(S, 0.0, 1.0);
 #if RL_ENV_OCCLUSION == 2
         if (F > 0.0) {
             // The cosine weights the cap towards n: its mean is read over the
             // cap inside it nearest n, its centre moved towards the
             // cosine-weighted centroid (by at most half the cap).
-            float cb = cos(capAngle);
             float along = 2.0 * (1.0 - cb * cb * cb) / 3.0 * max(dot(hit.n, w), 0.0);
             vec3 side = hit.n - dot(hit.n, w) * w;
             float across = (1.0 - cb) - (1.0 - cb * cb * cb) / 3.0;
             float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
-            vec3 t = length(side) > 1e-6 ? normalize(side) : w;
-            vec3 centre = normalize(w * cos(shift) + t * sin(shift));
+            vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
             lost += PI * F * u_envIntensity * capMeanRadiance(environmentLocal(centre), capAngle - shift);
         }
-        if (u_envSun.w > 0.0)
-            sunVisible *= 1.0 - clamp(coneCapCoverage(u_envSun.w, capAngle, acos(clamp(dot(u_envSun.xyz, w), -1.0, 1.0))), 0.0, 1.0);
+        float sunCos = dot(u_envSun.xyz, w);
+        if (u_envSun.w > 0.0 && sunCos > cos(capAngle + u_envSun.w))  // the sun's disc reaches into the cap
+            sunVisible *= 1.0 - clamp(coneCapCoverage(u_envSun.w, sunOneMinusCos, capAngle, 1.0 - cb, acos(clamp(sunCos, -1.0, 1.0))), 0.0, 1.0);
 #else
         diffuseVisible *= 1.0 - F;
 #endif

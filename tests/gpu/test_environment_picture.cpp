@@ -87,11 +87,14 @@ TEST(EnvironmentPicture, OnlyAnEnvironmentSceneCompilesItIn) {
 TEST(EnvironmentPicture, BuildsAsGlslEs) {
     test::renderGl(loaded("scenes/environments/sky-spheres.json", 8, 6));  // the process's context, current
     Implementation solutions{solutionsDir(), {}};
-    ShaderDefines env{{"RL_ENVIRONMENT", "1"}};
     AssembledSource vertex = assembleShader("fullscreen.vert", solutions, {}, GlslDialect::Es300);
-    AssembledSource fragment = assembleShader("main.frag", solutions, env, GlslDialect::Es300);
-    EXPECT_EQ(portabilityErrors(fragment), "");
-    EXPECT_NO_THROW(ShaderProgram(vertex, fragment));
+    for (const char* occlusion : {"", "1", "2"}) {  // and with the spheres' shadows (environment_occlusion.glsl)
+        ShaderDefines env{{"RL_ENVIRONMENT", "1"}};
+        if (*occlusion) env["RL_ENV_OCCLUSION"] = occlusion;
+        AssembledSource fragment = assembleShader("main.frag", solutions, env, GlslDialect::Es300);
+        EXPECT_EQ(portabilityErrors(fragment), "") << occlusion;
+        EXPECT_NO_THROW(ShaderProgram(vertex, fragment)) << occlusion;
+    }
 }
 
 // A uniform white environment on two spheres 0.1 apart, the reference with
