@@ -126,6 +126,26 @@ vec2 splitSumLookup(float NoV, float roughness) {
     return mix(mix(s00, s10, a.x), mix(s01, s11, a.x), a.y);
 }
 
+// The map's sun (app/render/environment_caps.h, findSun): its world direction
+// (xyz) and the angular radius of a disc of its solid angle (w; 0: the map
+// has none), and its power (the sum of L dOmega over its pixels, no
+// intensity).
+uniform vec4 u_envSun;
+uniform vec3 u_envSunPower;
+
+// What SH9 makes of the sun, taken out, and the sun's own irradiance put in:
+// nine coefficients of a small source of power Phi at s give it the
+// irradiance Phi (1/4 + x/2 + 5/16 (3x^2 - 1)/2), x = n.s (the clamped
+// cosine's first three bands, docs/model.md), which is 7% short of
+// Phi max(x, 0) at 55 degrees and below zero opposite the sun; the sun as a
+// point source gives Phi max(x, 0) exactly (world n, with intensity).
+vec3 sunIrradianceCorrection(vec3 n) {
+    if (u_envSun.w <= 0.0) return vec3(0.0);
+    float x = dot(n, u_envSun.xyz);
+    float sh = 0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5);
+    return u_envIntensity * u_envSunPower * (max(x, 0.0) - sh);
+}
+
 #if defined(RL_ENV_OCCLUSION) && RL_ENV_OCCLUSION != 0
 #include "environment_occlusion.glsl"  // the spheres' caps taken out of both parts
 #endif
@@ -144,6 +164,9 @@ vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
              environmentBilinear(u_envIrradiance, vec4(0.0, 0.0, irradianceSize), equirectUv(environmentLocal(hit.n)));
 #else
     vec3 E = u_envIntensity * shIrradiance(environmentLocal(hit.n));
+#endif
+#ifndef RL_ENV_IRRADIANCE_MAP
+    E += sunIrradianceCorrection(hit.n);
 #endif
     E = max(E, vec3(0.0));
     vec3 reflected = reflect(-v, hit.n);

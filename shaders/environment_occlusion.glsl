@@ -18,6 +18,10 @@
 // all but ENV_CONE_ENERGY of a Phong lobe of the same width (exponent
 // 2 / alpha^2 - 2, alpha = roughness^2): cos(a) = ENV_CONE_ENERGY^(1 / (exponent + 1)).
 const float ENV_CONE_ENERGY = 0.244;
+// A cap's mean radiance is read over the part of it nearest n (the cosine's
+// weight): a cap inside it, moved towards n by at most this share of its half-angle.
+const float ENV_CAP_SHIFT = 0.5;
+
 // The caps' half-angles of the host's cap chain (app/render/environment_caps.h,
 // whose constants they are): level k averages the map over caps of
 // u_envSmallestCap * 2^(k/2), k < u_envCapLevels, stacked in u_envPrefiltered's atlas.
@@ -25,13 +29,9 @@ const int ENV_MAX_CAP_LEVELS = 16;
 uniform vec4 u_envCapRect[ENV_MAX_CAP_LEVELS];
 uniform int u_envCapLevels;
 uniform float u_envSmallestCap;
-// The map's sun (app/render/environment_caps.h, findSun): its world direction
-// (xyz) and the angular radius of a disc of its solid angle (w; 0: no sun),
-// and its power (the sum of L dOmega over its pixels, no intensity). The cap
-// chain leaves it out: it is shadowed as a disc, every cap that covers part
-// of it taking that part (coneCapCoverage), so its shadow has its own penumbra.
-uniform vec4 u_envSun;
-uniform vec3 u_envSunPower;
+// The map's sun (u_envSun, environment.glsl) is left out of the cap chain:
+// it is shadowed as a disc, every cap that covers part of it taking that
+// part (coneCapCoverage), so its shadow has its own penumbra.
 
 // The map's mean radiance (no intensity) over the cap of half-angle b around
 // the image-frame direction w, from the two cap levels around b: their
@@ -57,13 +57,11 @@ vec3 capMeanRadiance(vec3 w, float b) {
 // The share of a cone of half-angle a that a cap of half-angle b covers, their
 // axes theta apart (Oat and Sander 2007, "Ambient aperture lighting": the
 // smaller cap's area, faded by a smoothstep between the two tangencies).
-float coneCapCoverage(float a, float b, float theta) {
-    float small = min(a, b);
-    float overlap;
-    if (theta <= abs(a - b)) overlap = 1.0;
-    else if (theta >= a + b) overlap = 0.0;
-    else overlap = smoothstep(0.0, 1.0, 1.0 - (theta - abs(a - b)) / (a + b - abs(a - b)));
-    return overlap * (1.0 - cos(small)) / max(1.0 - cos(a), 1e-7);
+// (1 - cos a and 1 - cos b given, as the callers have them.)
+float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, float theta) {
+    if (theta >= a + b) return 0.0;
+    float overlap = theta <= abs(a - b) ? 1.0 : smoothstep(0.0, 1.0, 1.0 - (theta - abs(a - b)) / (a + b - abs(a - b)));
+    return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
 // The specular cone's half-angle for perceptual roughness.
@@ -82,8 +80,11 @@ struct OccludedLight {
     vec3 prefiltered;
 };
 
-OccludedLight occludeEnvironment(Hit hit, vec3 r, float roughness, vec3 E, vec3 P) {
+OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 E, vec3 P) {
     float coneAngle = specularConeAngle(roughness);
+    float coneOneMinusCos = 1.0 - cos(coneAngle);
+    float sunOneMinusCos = 1.0 - cos(u_envSun.w);
+    vec3 r = reflected;
     float diffuseVisible = 1.0, specularVisible = 1.0;
     vec3 lost = vec3(0.0);
     float sunVisible = 1.0;
@@ -102,12 +103,24 @@ OccludedLight occludeEnvironment(Hit hit, vec3 r, float roughness, vec3 E, vec3 
         }
         float F = sphereFormFactor(hit.p, hit.n, s.xyz, s.w);  // exercise 12
         float capAngle = asin(1.0 / h);
-        float S = coneCapCoverage(coneAngle, capAngle, acos(clamp(dot(r, w), -1.0, 1.0)));
+        float cb = sqrt(1.0 - 1.0 / (h * h));  // cos(capAngle)
+        float S = coneCapCoverage(coneAngle, coneOneMinusCos, capAngle, 1.0 - cb, acos(clamp(dot(r, w), -1.0, 1.0)));
         specularVisible *= 1.0 - clamp(S, 0.0, 1.0);
 #if RL_ENV_OCCLUSION == 2
-        if (F > 0.0) lost += PI * F * u_envIntensity * capMeanRadiance(environmentLocal(w), capAngle);
-        if (u_envSun.w > 0.0)
-            sunVisible *= 1.0 - clamp(coneCapCoverage(u_envSun.w, capAngle, acos(clamp(dot(u_envSun.xyz, w), -1.0, 1.0))), 0.0, 1.0);
+        if (F != 0.0) {  // a negative F (a mistake of exercise 12) shows as light added, as it would compute
+            // The cosine weights the cap towards n: its mean is read over the
+            // cap inside it nearest n, its centre moved towards the
+            // cosine-weighted centroid (by at most half the cap).
+            float along = 2.0 * (1.0 - cb * cb * cb) / 3.0 * max(dot(hit.n, w), 0.0);
+            vec3 side = hit.n - dot(hit.n, w) * w;
+            float across = (1.0 - cb) - (1.0 - cb * cb * cb) / 3.0;
+            float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
+            vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
+            lost += PI * F * u_envIntensity * capMeanRadiance(environmentLocal(centre), capAngle - shift);
+        }
+        float sunCos = dot(u_envSun.xyz, w);
+        if (u_envSun.w > 0.0 && sunCos > cos(capAngle + u_envSun.w))  // the sun's disc reaches into the cap
+            sunVisible *= 1.0 - clamp(coneCapCoverage(u_envSun.w, sunOneMinusCos, capAngle, 1.0 - cb, acos(clamp(sunCos, -1.0, 1.0))), 0.0, 1.0);
 #else
         diffuseVisible *= 1.0 - F;
 #endif

@@ -78,15 +78,15 @@ ShaderDefines environmentDefines(const EnvironmentApproximation& a) {
 }
 
 const EnvironmentBudget& environmentBudget() {
-    // docs/performance.md, "Environment light: speed against error": the
-    // default measured 1.8 and 2.4 LSB without V at 48x36 and 256 samples
-    // (reference noise 1.2-1.3 LSB included), 1.6 and 1.9 LSB at 160x120 and
-    // 1024; 40% of the pixels off at most (the noise's share: 22-39%);
-    // -0.3 to +1.8 LSB over exact:no-V with V. The budget leaves about 1 LSB
-    // for the reference's noise at other sizes and seeds, and no more: two
-    // prefiltered levels (3.4 LSB at 48x36) or a 32 x 16 chain (3.5-3.9 LSB)
-    // must not pass.
-    static const EnvironmentBudget budget{3.0, 0.45, 2.5};
+    // docs/performance.md, "Occlusion by the spheres (issue 34)": the
+    // shadowed default measured 1.40 and 2.30 LSB net, 6.7% of pixels off net
+    // (sky, studio, 48x36, 256 samples), and 1.58, 2.79, 0.14, 1.60 LSB net,
+    // 35%, 27%, 3.5%, 14% off net on the four scenes at 96x72 and 4096
+    // samples; the budget leaves about 1 LSB
+    // for the reference's noise at other sizes and seeds, and no more: the
+    // unshadowed picture (env:occlusion=none, 12-16 LSB) and the plain
+    // ambient-occlusion form (env:occlusion=caps, 7-10 LSB) must not pass.
+    static const EnvironmentBudget budget{2.5, 0.40, 0.35};
     return budget;
 }
 
@@ -167,9 +167,9 @@ ExactReferences exactReferences(const Scene& scene, int samples, std::ostream& l
 EnvironmentBudgetCheck checkEnvironmentBudget(const Measurement& m, const Measurement& exact) {
     const EnvironmentBudget& b = environmentBudget();
     EnvironmentBudgetCheck c;
-    c.meanWithoutVisibility = m.errorWithoutVisibility.meanLsb <= b.meanLsbWithoutVisibility;
-    c.offWithoutVisibility = m.errorWithoutVisibility.offFraction <= b.offFractionWithoutVisibility;
-    c.meanWithVisibility = m.error.meanLsb <= exact.error.meanLsb + b.overNoVisibilityLsb;
+    c.mean = m.error.meanLsb - m.referenceNoiseLsb <= b.meanLsb;
+    c.off = m.error.offFraction - m.referenceNoiseOffFraction <= b.offFraction;
+    c.belowNoVisibility = m.error.meanLsb <= b.noVisibilityShare * exact.error.meanLsb;
     return c;
 }
 
@@ -182,8 +182,9 @@ std::string formatEnvironmentTable(const std::vector<Measurement>& measurements)
     for (const Measurement& m : measurements) {
         if (m.sweep != "environment") continue;
         if (!any) {
-            std::snprintf(line, sizeof line, "%-15s %-28s %9s %9s %9s | %8s %7s | %8s %7s %5s\n", "scene", "variant",
-                          "size", "ms median", "tables ms", "mean V", "off % V", "mean noV", "off %", "front");
+            std::snprintf(line, sizeof line, "%-15s %-28s %9s %9s %9s | %8s %7s | %8s %7s | %8s %7s %5s\n", "scene",
+                          "variant", "size", "ms median", "tables ms", "mean V", "off % V", "net V", "net off",
+                          "mean noV", "off %", "front");
             s << line;
             any = true;
         }
@@ -195,9 +196,12 @@ std::string formatEnvironmentTable(const std::vector<Measurement>& measurements)
             std::snprintf(line, sizeof line, "%-15s %-28s %9s   skipped: %s\n", m.scene.c_str(), m.variant.c_str(),
                           size.c_str(), m.note.c_str());
         } else {
-            std::snprintf(line, sizeof line, "%-15s %-28s %9s %9.2f %9.0f | %8.3f %7.2f | %8.3f %7.2f %5s%s\n",
+            // The reference's own noise taken out (its error bar): what is left is the picture's.
+            const double netMean = std::max(0.0, m.error.meanLsb - m.referenceNoiseLsb);
+            const double netOff = std::max(0.0, m.error.offFraction - m.referenceNoiseOffFraction);
+            std::snprintf(line, sizeof line, "%-15s %-28s %9s %9.2f %9.0f | %8.3f %7.2f | %8.3f %7.2f | %8.3f %7.2f %5s%s\n",
                           m.scene.c_str(), m.variant.c_str(), size.c_str(), m.msMedian, m.tablesMs, m.error.meanLsb,
-                          100 * m.error.offFraction, m.errorWithoutVisibility.meanLsb,
+                          100 * m.error.offFraction, netMean, 100 * netOff, m.errorWithoutVisibility.meanLsb,
                           100 * m.errorWithoutVisibility.offFraction, m.onFront ? "*" : "",
                           m.mode == "reference" ? "  (CPU, not a GL frame)" : "");
         }
@@ -224,17 +228,18 @@ std::string formatEnvironmentTable(const std::vector<Measurement>& measurements)
         if (!exact) continue;
         const EnvironmentBudgetCheck c = checkEnvironmentBudget(m, *exact);
         std::snprintf(line, sizeof line,
-                      "%s: the default %s the budget: without V mean %.3f <= %.2f LSB, off %.2f%% <= %.0f%%; "
-                      "with V mean %.3f <= exact:no-V %.3f + %.2f LSB\n",
-                      m.scene.c_str(), c.meets() ? "meets" : "DOES NOT MEET", m.errorWithoutVisibility.meanLsb,
-                      budget.meanLsbWithoutVisibility, 100 * m.errorWithoutVisibility.offFraction,
-                      100 * budget.offFractionWithoutVisibility, m.error.meanLsb,
-                      exact->error.meanLsb, budget.overNoVisibilityLsb);
+                      "%s: the default %s the budget: with V, less the reference's noise, mean %.3f <= %.2f LSB, "
+                      "off %.2f%% <= %.0f%%; mean %.3f <= %.0f%% of exact:no-V's %.3f LSB\n",
+                      m.scene.c_str(), c.meets() ? "meets" : "DOES NOT MEET", m.error.meanLsb - m.referenceNoiseLsb,
+                      budget.meanLsb, 100 * (m.error.offFraction - m.referenceNoiseOffFraction), 100 * budget.offFraction,
+                      m.error.meanLsb, 100 * budget.noVisibilityShare, exact->error.meanLsb);
         s << line;
     }
     s << "(ms median: per GL frame, the bench's clock; tables ms: computing the approximation's tables on the host,\n"
          " wall clock, 0 where an earlier row's were reused;\n"
-         " mean V, off % V: against the exact reference WITH visibility, the truth; mean noV, off %: against the\n"
+         " mean V, off % V: against the exact reference WITH visibility, the truth; net V, net off: the same less\n"
+         " the reference's own noise (its mean and its share of pixels over 1/255, below): the error bar taken out;\n"
+         " mean noV, off %: against the\n"
          " exact reference WITHOUT visibility, what the unshadowed approximations aim at; in 8-bit steps and pixels\n"
          " off by more than 1/255; front *: on the Pareto front of time and mean error with V)\n";
     return s.str();

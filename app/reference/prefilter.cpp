@@ -30,6 +30,46 @@ double radicalInverse(unsigned bits) {
     return double(bits) * (1.0 / 4294967296.0);
 }
 
+// The radiance map's pyramid for filtered importance sampling: level 0 the
+// map, each next level its 2 x 2 blocks averaged by their pixels' solid
+// angles (an odd side keeps its last column or row alone), down to one row.
+std::vector<RadianceImage> pyramidOf(const RadianceImage& image) {
+    std::vector<RadianceImage> levels{image};
+    while (levels.back().width > 1 && levels.back().height > 1) {
+        const RadianceImage& a = levels.back();
+        RadianceImage b;
+        b.width = (a.width + 1) / 2;
+        b.height = (a.height + 1) / 2;
+        b.rgb.assign(size_t(b.width) * size_t(b.height) * 3, 0.0f);
+        std::vector<double> sum(b.rgb.size(), 0.0), weight(size_t(b.width) * size_t(b.height), 0.0);
+        for (int y = 0; y < a.height; ++y) {
+            const double omega = std::cos(kPiPrefilter * y / a.height) - std::cos(kPiPrefilter * (y + 1) / a.height);
+            for (int x = 0; x < a.width; ++x) {
+                const size_t k = size_t(y / 2) * size_t(b.width) + size_t(x / 2);
+                for (int c = 0; c < 3; ++c) sum[3 * k + size_t(c)] += omega * a.at(x, y)[c];
+                weight[k] += omega;
+            }
+        }
+        for (size_t k = 0; k < weight.size(); ++k)
+            for (int c = 0; c < 3; ++c) b.rgb[3 * k + size_t(c)] = weight[k] > 0.0 ? float(sum[3 * k + size_t(c)] / weight[k]) : 0.0f;
+        levels.push_back(std::move(b));
+    }
+    return levels;
+}
+
+// The pyramid's radiance towards uv at a fractional level (bilinear in each,
+// linear between the two).
+dvec3 pyramidRadiance(const std::vector<RadianceImage>& pyramid, glm::dvec2 uv, double level) {
+    const double l = std::clamp(level, 0.0, double(pyramid.size() - 1));
+    const int k0 = int(std::floor(l));
+    const int k1 = std::min(k0 + 1, int(pyramid.size()) - 1);
+    const dvec3 a = bilinearRadiance(pyramid[size_t(k0)], uv.x, uv.y);
+    if (k1 == k0) return a;
+    return a + (bilinearRadiance(pyramid[size_t(k1)], uv.x, uv.y) - a) * (l - k0);
+}
+
+RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, double roughness, int width, int height,
+                                   int samples);
 
 }  // namespace
 
@@ -44,13 +84,34 @@ dvec3 ggxHalfVector(double u1, double u2, double alpha) {
 }
 
 RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples) {
+    return prefilterFromPyramid(pyramidOf(image), roughness, width, height, samples);
+}
+
+namespace {
+
+RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, double roughness, int width, int height,
+                                   int samples) {
+    const RadianceImage& image = pyramid.front();
     // alpha = r^2, r = clamp(roughness, kMinRoughness, 1): the framework's
     // roughness convention (docs/model.md), stated in exercise 08's stub.
     const double r = std::clamp(roughness, kMinRoughness, 1.0), alpha = r * r;
     const int N = std::max(samples, 1);
     // The Hammersley half vectors around +z, the same for every pixel.
     std::vector<dvec3> halfVectors(size_t(N), dvec3(0.0));
-    for (int i = 0; i < N; ++i) halfVectors[size_t(i)] = ggxHalfVector((i + 0.5) / N, radicalInverse(unsigned(i)), alpha);
+    std::vector<double> sampleSolidAngle(size_t(N), 0.0);
+    for (int i = 0; i < N; ++i) {
+        halfVectors[size_t(i)] = ggxHalfVector((i + 0.5) / N, radicalInverse(unsigned(i)), alpha);
+        // Filtered importance sampling (Krivanek and Colbert 2008): each draw
+        // stands for the solid angle 1 / (N pdf(l)), pdf(l) = D(h) / 4 with
+        // n = v = r, and reads the pyramid level whose pixel is that large,
+        // so a small bright source is spread over the draws' footprints
+        // instead of caught by a few of them.
+        const double NoH = halfVectors[size_t(i)].z, a2 = alpha * alpha;
+        const double d = NoH * NoH * (a2 - 1.0) + 1.0;
+        const double D = a2 / (kPiPrefilter * d * d);
+        sampleSolidAngle[size_t(i)] = 4.0 / (N * D);
+    }
+    const double pixelSolidAngle = 2.0 * kPiPrefilter * kPiPrefilter / (double(image.width) * double(image.height));
     RadianceImage out;
     out.width = width;
     out.height = height;
@@ -72,8 +133,12 @@ RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness,
                 dvec3 l = 2.0 * VoH * h - r;
                 double NoL = glm::dot(r, l);
                 if (NoL <= 0.0) continue;
-                glm::dvec2 uv = equirectUv(glm::normalize(l));
-                sum += bilinearRadiance(image, uv.x, uv.y) * NoL;
+                l = glm::normalize(l);
+                glm::dvec2 uv = equirectUv(l);
+                const double sinTheta = std::sqrt(std::max(1e-6, 1.0 - l.y * l.y));
+                const double level = 0.5 * std::log2(sampleSolidAngle[size_t(&hl - halfVectors.data())] /
+                                                     (pixelSolidAngle * sinTheta)) + 1.0;
+                sum += pyramidRadiance(pyramid, uv, level) * NoL;
                 weight += NoL;
             }
             dvec3 value = weight > 0.0 ? sum / weight : dvec3(0.0);
@@ -83,13 +148,16 @@ RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness,
     return out;
 }
 
+}  // namespace
+
 double prefilterLevelRoughness(int level, int levels) { return levels > 1 ? double(level) / (levels - 1) : 0.0; }
 
 std::vector<RadianceImage> prefilterChain(const RadianceImage& image, int width, int height, int levels, int samples) {
     std::vector<RadianceImage> chain;
+    const std::vector<RadianceImage> pyramid = pyramidOf(image);
     for (int k = 0; k < levels; ++k) {
         int w = std::max(width >> k, 8), h = std::max(height >> k, 4);
-        chain.push_back(prefilterEnvironment(image, prefilterLevelRoughness(k, levels), w, h, samples));
+        chain.push_back(prefilterFromPyramid(pyramid, prefilterLevelRoughness(k, levels), w, h, samples));
     }
     return chain;
 }

@@ -46,7 +46,11 @@ glm::dvec3 ggxHalfVector(double u1, double u2, double alpha);
 // equirectangular image holds, for its centre direction r,
 //     sum L(l_i) n.l_i / sum n.l_i,   h_i GGX-distributed around r (Hammersley points), l_i = reflect(-r, h_i), n.l_i > 0
 // (Karis 2013, PrefilterEnvMap), L the bilinear radiance map of `image`,
-// in the image's own frame and without intensity.
+// in the image's own frame and without intensity, each draw read from the
+// map's pyramid (2 x 2 blocks averaged by solid angle) at the level whose
+// pixel covers the draw's share of the lobe, 1 / (N pdf(l)), one level
+// coarser (filtered importance sampling, Krivanek and Colbert 2008): a small
+// sun reflects as one smooth highlight, not as the few draws that met it.
 RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples);
 
 // The prefiltered chain: level k of `levels` (>= 2) for roughness

@@ -92,7 +92,10 @@ std::vector<DefineRow> makeTable() {
                  "the environment map, its SH9 irradiance and prefiltered specular (environment.glsl), only "
                  "for a scene with an environment",
                  [](const DefineInput& in) { return when(in.scene.environment.has_value()); }});
-    t.push_back({"RL_ENV_OCCLUSION", kStructure, kEveryScene, {"RL_ENVIRONMENT"}, {}, "the spheres' caps taken out of the environment light: 2 directional, 1 plain (environment_occlusion.glsl)", [](const DefineInput& in) { return in.scene.spheres.size() > 1 ? Value("2") : kNone; }});
+    t.push_back({"RL_ENV_OCCLUSION", kStructure, kEveryScene, {"RL_ENVIRONMENT"}, {},
+                 "the spheres' caps taken out of the environment light (environment_occlusion.glsl): the strategy, 2 "
+                 "(the caps' own light and the sun), for two spheres or more",
+                 [](const DefineInput& in) { return in.scene.spheres.size() > 1 ? Value("2") : kNone; }});
 
     // ---- the scene's structure (scene.glsl): loops unrolled, every index a constant.
     t.push_back({"RL_SPHERE_COUNT", kStructure, kSpecialised, {}, {},

@@ -144,14 +144,19 @@ EnvironmentSun findSun(const RadianceImage& image) {
     const double peak = luminance(&image.rgb[3 * std::size_t(brightest)]);
     if (!(peak > 0.0)) return sun;
     const glm::dvec3 centre = equirectDirection((brightest % W + 0.5) / W, (brightest / W + 0.5) / H);
-    const double cosReach = std::cos(kSunReach);
+    const double cosReach = std::cos(kSunReach), cosAround = std::cos(2.0 * kSunReach);
+    bool isolated = true;
     glm::dvec3 weighted(0.0);
     double solidAngle = 0.0, lumPower = 0.0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const glm::dvec3 d = equirectDirection((x + 0.5) / W, (y + 0.5) / H);
             const float* p = image.at(x, y);
-            if (glm::dot(d, centre) < cosReach || luminance(p) < kSunFloor * peak) continue;
+            if (luminance(p) < kSunFloor * peak) continue;
+            if (glm::dot(d, centre) < cosReach) {
+                isolated = isolated && glm::dot(d, centre) < cosAround;  // a bright pixel just beyond: a wide source
+                continue;
+            }
             const double omega = rowSolidAngle(y, W, H);
             sun.pixels.push_back(y * W + x);
             sun.power += omega * glm::dvec3(p[0], p[1], p[2]);
@@ -159,7 +164,7 @@ EnvironmentSun findSun(const RadianceImage& image) {
             lumPower += omega * luminance(p);
             solidAngle += omega;
         }
-    if (solidAngle > kSunSolidAngle || lumPower / solidAngle < kSunContrast * mean || glm::length(weighted) == 0.0) {
+    if (!isolated || solidAngle > kSunSolidAngle || lumPower / solidAngle < kSunContrast * mean || glm::length(weighted) == 0.0) {
         sun = EnvironmentSun{};
         return sun;
     }

@@ -26,7 +26,9 @@ double capLevelAngle(int level);
 // The map's sun, where it has one: the pixels within kSunReach of its
 // brightest pixel that are at least kSunFloor times as bright, kept only when
 // they are compact (at most kSunSolidAngle steradians) and at least
-// kSunContrast times the map's mean luminance. The GL picture shadows it as a
+// kSunContrast times the map's mean luminance, and alone: no pixel that
+// bright between kSunReach and twice it (a wide source such as a soft box is
+// no sun, the cap chain keeps it). The GL picture shadows it as a
 // disc of its solid angle (environment_occlusion.glsl), sharp where a cap
 // level could only blur it; the cap chain leaves its pixels out.
 inline constexpr double kSunReach = 3.14159265358979323846 / 180.0 * 8.0;

@@ -86,10 +86,17 @@ TEST(EnvironmentSweep, RowsReferencesAndTheirOwnMarkdownSection) {
         EXPECT_TRUE(std::isfinite(std::stod(row.at("err_mean_lsb")))) << name;
         EXPECT_TRUE(std::isfinite(std::stod(row.at("err_mean_lsb_no_v")))) << name;
     }
-    const double sh9 = std::stod(byVariant.at("env:default").at("err_mean_lsb_no_v"));
-    const double map128 = std::stod(byVariant.at("env:irradiance-map=128x64").at("err_mean_lsb_no_v"));
-    std::printf("without V: SH9 %.3f LSB, irradiance map 128x64 %.3f LSB\n", sh9, map128);
-    EXPECT_LE(map128, sh9);
+    // Every row but env:occlusion=none is shadowed alike (issue 34), so their
+    // errors WITH visibility compare the irradiance: the finest map is at
+    // least as close to the truth as the coarsest.
+    const double map16 = std::stod(byVariant.at("env:irradiance-map=16x8").at("err_mean_lsb"));
+    const double map128 = std::stod(byVariant.at("env:irradiance-map=128x64").at("err_mean_lsb"));
+    const double sh9 = std::stod(byVariant.at("env:default").at("err_mean_lsb"));
+    const double none = std::stod(byVariant.at("env:occlusion=none").at("err_mean_lsb"));
+    std::printf("with V: SH9 and the sun %.3f LSB, irradiance map 16x8 %.3f, 128x64 %.3f LSB; unshadowed %.3f\n", sh9,
+                map16, map128, none);
+    EXPECT_LE(map128, map16);
+    EXPECT_LT(2 * sh9, none);  // the shadows: the unshadowed picture is the one far from the truth
 
     const std::string text = test::readText(doc);
     EXPECT_NE(text.find("other table"), std::string::npos) << text;  // the other section is kept
@@ -100,8 +107,9 @@ TEST(EnvironmentSweep, RowsReferencesAndTheirOwnMarkdownSection) {
     EXPECT_NE(text.find("<!-- bench-environment:end -->\n\nAfter.\n"), std::string::npos) << text;
 }
 
-// The default approximation on both shipped environment scenes, small (48x36)
-// and against references of 256 samples per strategy, within the budget that
+// The default approximation (shadowed by the spheres, issue 34) on both
+// shipped environment scenes, small (48x36) and against references of 256
+// samples per strategy, within the budget that
 // docs/performance.md writes beside the table (environmentBudget()): the
 // picture `raylab render` draws (Purpose::Picture) and the bench's exact
 // references, without the sweep's other rows (each its own program: the
@@ -122,17 +130,18 @@ TEST(EnvironmentBudget, TheDefaultStaysWithinTheBudget) {
             buildPictureProgram(impl, definesFor(scene, implementationFacts(impl), Purpose::Picture)), scene,
             frameFromScene(scene));
         Measurement row, noVisibility;
+        row.referenceNoiseLsb = exact.noiseMeanLsb;
+        row.referenceNoiseOffFraction = exact.noiseOffFraction;
         row.error = compareRenderings(got, exact.withVisibility);
         row.errorWithoutVisibility = compareRenderings(got, exact.withoutVisibility);
         noVisibility.error = compareRenderings(exact.withoutVisibility, exact.withVisibility);
-        std::printf("%s: without V mean %.3f LSB, %.1f%% off; with V mean %.3f LSB (exact:no-V %.3f); reference "
-                    "noise %.3f LSB\n",
-                    name, row.errorWithoutVisibility.meanLsb, 100 * row.errorWithoutVisibility.offFraction,
-                    row.error.meanLsb, noVisibility.error.meanLsb, exact.noiseMeanLsb);
+        std::printf("%s: with V mean %.3f LSB, %.1f%% off (exact:no-V %.3f); reference noise %.3f LSB, %.1f%% off\n",
+                    name, row.error.meanLsb, 100 * row.error.offFraction, noVisibility.error.meanLsb,
+                    exact.noiseMeanLsb, 100 * exact.noiseOffFraction);
         EXPECT_EQ(row.error.nonFinite, 0);
         const EnvironmentBudgetCheck check = checkEnvironmentBudget(row, noVisibility);
-        EXPECT_TRUE(check.meanWithoutVisibility) << row.errorWithoutVisibility.meanLsb;
-        EXPECT_TRUE(check.offWithoutVisibility) << row.errorWithoutVisibility.offFraction;
-        EXPECT_TRUE(check.meanWithVisibility) << row.error.meanLsb << " against " << noVisibility.error.meanLsb;
+        EXPECT_TRUE(check.mean) << row.error.meanLsb;
+        EXPECT_TRUE(check.off) << row.error.offFraction;
+        EXPECT_TRUE(check.belowNoVisibility) << row.error.meanLsb << " against " << noVisibility.error.meanLsb;
     }
 }

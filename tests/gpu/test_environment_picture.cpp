@@ -87,20 +87,25 @@ TEST(EnvironmentPicture, OnlyAnEnvironmentSceneCompilesItIn) {
 TEST(EnvironmentPicture, BuildsAsGlslEs) {
     test::renderGl(loaded("scenes/environments/sky-spheres.json", 8, 6));  // the process's context, current
     Implementation solutions{solutionsDir(), {}};
-    ShaderDefines env{{"RL_ENVIRONMENT", "1"}};
     AssembledSource vertex = assembleShader("fullscreen.vert", solutions, {}, GlslDialect::Es300);
-    AssembledSource fragment = assembleShader("main.frag", solutions, env, GlslDialect::Es300);
-    EXPECT_EQ(portabilityErrors(fragment), "");
-    EXPECT_NO_THROW(ShaderProgram(vertex, fragment));
+    for (const char* occlusion : {"", "1", "2"}) {  // and with the spheres' shadows (environment_occlusion.glsl)
+        ShaderDefines env{{"RL_ENVIRONMENT", "1"}};
+        if (*occlusion) env["RL_ENV_OCCLUSION"] = occlusion;
+        AssembledSource fragment = assembleShader("main.frag", solutions, env, GlslDialect::Es300);
+        EXPECT_EQ(portabilityErrors(fragment), "") << occlusion;
+        EXPECT_NO_THROW(ShaderProgram(vertex, fragment)) << occlusion;
+    }
 }
 
-// A uniform white environment on two spheres, the reference without
-// visibility (the shader's model: environment light is not shadowed): SH9 of a constant is exact and
+// A uniform white environment on two spheres 0.1 apart, the reference with
+// visibility (each sphere's cap taken out of the other's light in closed
+// form, environment_occlusion.glsl, exact for a uniform map but for the
+// specular cone's shape): SH9 of a constant is exact and
 // the prefiltered map is the constant, so only the split-sum table's
 // quadrature and interpolation and the diffuse weight (1 - F0) for
 // (1 - F(v.h)) separate the picture from the exact integral, and the
-// reference's own noise. Measured: relative L1 difference 0.26%, 8-bit mean
-// 0.35 LSB (80x60, 256 reference samples). The bound 1% leaves room for the
+// reference's own noise. Measured: relative L1 difference 0.35%, 8-bit mean
+// 0.75 LSB (80x60, 256 reference samples; 0.26% and 0.35 LSB unshadowed against V = 1). The bound 1% leaves room for the
 // reference's noise; without the diffuse 1/pi it is 18% off (seen failing),
 // and with the level taken as the roughness itself (a mutant of exercise
 // 11) the metal sphere is visibly sharper but, in a uniform map, no
@@ -113,9 +118,7 @@ TEST(EnvironmentPicture, UniformEnvironmentMatchesTheReference) {
                     {"center": [0.55, 0, 0], "radius": 0.5, "material": {"albedo": [0.9, 0.6, 0.3], "roughness": 0.35, "metallic": 1}}]})",
                          (sourceRoot() / "scenes/environments/uniform.json").string()).scene;
     Rendering gl = test::renderGl(s);
-    ref::EnvironmentOptions open;
-    open.visibility = false;
-    Rendering cpu = ref::renderCpu(s, 0, open);
+    Rendering cpu = ref::renderCpu(s, 0, ref::EnvironmentOptions{});
     ImageDiff d = compareRenderings(gl, cpu);
     double rel = meanRelative(gl.radiance, cpu.radiance);
     std::printf("uniform environment, GL vs reference: mean relative %.4f, %s\n", rel, test::describe(d).c_str());
@@ -123,10 +126,12 @@ TEST(EnvironmentPicture, UniformEnvironmentMatchesTheReference) {
     EXPECT_EQ(d.nonFinite, 0);
 }
 
-// The shipped scenes: what the approximations leave out (contact occlusion,
-// inter-reflection of the environment, the split sum's n = v = r) shows as
-// a bias against the exact reference. Reported, bounded only against a
-// picture gone wrong (no environment light at the hits is 40% off).
+// The shipped scenes: the picture is shadowed by the spheres (issue 34,
+// environment_occlusion.glsl), so it is near the exact reference WITH
+// visibility and far from the one without (measured at 80x45, 256 samples:
+// relative L1 0.029 and 0.17 on the sky, 0.072 and 0.22 on the studio; the
+// unshadowed picture was 0.18 and 0.27 from the truth). Bounded against a
+// shadow gone missing or wrong.
 TEST(EnvironmentPicture, ShippedScenesAgainstTheReference) {
     for (const char* file : {"scenes/environments/sky-spheres.json", "scenes/environments/studio-spheres.json"}) {
         Scene s = loaded(file, 80, 45);
@@ -139,7 +144,8 @@ TEST(EnvironmentPicture, ShippedScenesAgainstTheReference) {
         double relA = meanRelative(gl.radiance, withV.radiance), relB = meanRelative(gl.radiance, withoutV.radiance);
         std::printf("%s 80x45, GL vs reference with V: mean relative %.4f, %s\n", file, relA, test::describe(a).c_str());
         std::printf("%s 80x45, GL vs reference without V: mean relative %.4f, %s\n", file, relB, test::describe(b).c_str());
-        EXPECT_LT(relB, 0.25) << file;
+        EXPECT_LT(relA, 0.12) << file;
+        EXPECT_LT(relA, 0.5 * relB) << file;
         EXPECT_EQ(a.nonFinite, 0);
     }
 }
@@ -194,4 +200,54 @@ TEST(EnvironmentPicture, AnUnstartedOptionalExerciseShowsOnlyWhereItShows) {
             striped += most > 8;
         }
     EXPECT_GT(striped, frame / 2) << "no stripes in the frame of the environment picture with 11's stub";
+}
+
+// Never negative light (issue 34): a dim sky with one sun pixel, its value
+// swept up to the documented maximum of a map's value (1e15, docs/scene-format.md)
+// at the largest intensity (1e6). SH9 irradiance rings below zero opposite
+// such a sun (with 1e4: 54 pixels below 0 before the clamp; seen failing
+// without it); the GL picture and the CPU reference must both give finite,
+// non-negative radiance everywhere, with the spheres' occlusion compiled in
+// (three spheres) and without it (one).
+TEST(EnvironmentPicture, NoNegativeOrNonFiniteLightAtAnySunIntensity) {
+    const fs::path dir = test::freshTempDir("environment-sun-sweep");
+    for (double sun : {1e2, 1e4, 1e6, 1e10, 1e15}) {
+        RadianceImage map;
+        map.width = 16;
+        map.height = 8;
+        map.rgb.assign(16 * 8 * 3, 0.05f);
+        for (int c = 0; c < 3; ++c) map.at(5, 2)[c] = float(sun);
+        writePfm((dir / "sun.pfm").string(), map);
+        for (const char* spheres :
+             {R"([{"center": [0, 0, 0], "radius": 0.5, "material": {"albedo": [0.8, 0.8, 0.8], "roughness": 0.6, "metallic": 0}}])",
+              R"([{"center": [-0.5, 0, 0], "radius": 0.45, "material": {"albedo": [0.8, 0.8, 0.8], "roughness": 0.9, "metallic": 0}},
+                  {"center": [0.5, 0, 0], "radius": 0.45, "material": {"albedo": [0.9, 0.6, 0.3], "roughness": 0.3, "metallic": 1}},
+                  {"center": [0, -100.5, 0], "radius": 100, "material": {"albedo": [0.5, 0.5, 0.5], "roughness": 0.8, "metallic": 0}}])"}) {
+            for (double intensity : {1.0, 1e6}) {
+                const std::string json =
+                    std::string(R"({"camera": {"position": [0, 0.4, 3], "target": [0, 0, 0], "fov_y": 50},
+                    "render": {"width": 32, "height": 24, "max_bounces": 1, "ambient": 0},
+                    "environment": {"file": "sun.pfm", "intensity": )") +
+                    std::to_string(intensity) + R"(, "rotation": 40}, "lights": [], "spheres": )" + spheres + "}";
+                Scene s = parseScene(json, (dir / "scene.json").string()).scene;
+                ref::EnvironmentOptions few;
+                few.samples = 16;
+                const Rendering pictures[2] = {test::renderGl(s), ref::renderCpu(s, 0, few)};
+                for (int k = 0; k < 2; ++k) {
+                    const Rendering& r = pictures[k];
+                    const char* which = k == 0 ? "GL" : "CPU";
+                    int negative = 0, nonFinite = 0;
+                    float lowest = 0.0f;
+                    for (float v : r.radiance.rgb) {
+                        nonFinite += !std::isfinite(v);
+                        negative += v < 0.0f;
+                        lowest = std::min(lowest, v);
+                    }
+                    EXPECT_EQ(negative, 0) << which << ": sun " << sun << " intensity " << intensity << ", lowest "
+                                           << lowest << "\n" << json;
+                    EXPECT_EQ(nonFinite, 0) << which << ": sun " << sun << " intensity " << intensity << "\n" << json;
+                }
+            }
+        }
+    }
 }

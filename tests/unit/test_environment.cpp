@@ -10,6 +10,7 @@
 #include "reference/environment_reference.h"
 #include "reference/sh9.h"
 #include "reference/split_sum.h"
+#include "render/environment_caps.h"
 #include "core/paths.h"
 #include "support/test_support.h"
 
@@ -452,4 +453,106 @@ TEST(EnvironmentFigures, DISABLED_VisibilityAndNoiseOnTheShippedScenes) {
         std::printf("%s: 80x45 256 samples %.2f s; no-visibility vs visibility: off %.1f%% mean %.2f LSB p99 %.1f, radiance +%.1f%%; 256 vs 4096: off %.1f%% mean %.2f LSB p99 %.1f PSNR %.1f\n",
             name, sec, 100 * d.offFraction, d.meanLsb, d.p99Lsb, 100 * sum / sumRef, 100 * noise.offFraction, noise.meanLsb, noise.p99Lsb, noise.psnr);
     }
+}
+
+// ---- sampling by the bilinear lookup's distribution, and the occlusion's cap tables (issue 34) ----
+
+namespace {
+
+RadianceImage filledImage(int w, int h, float value) {
+    RadianceImage image;
+    image.width = w;
+    image.height = h;
+    image.rgb.assign(std::size_t(w) * h * 3, value);
+    return image;
+}
+
+// The map's radiance towards the image-frame direction d, as the reference reads it.
+double radianceTowards(const RadianceImage& image, dvec3 d) {
+    glm::dvec2 uv = equirectUv(d);
+    return bilinearRadiance(image, uv.x, uv.y).y;
+}
+
+}  // namespace
+
+// Every draw's pdf is pdf() of its direction, and the draws cover the
+// sphere: the mean of 1/pdf is 4 pi (its expectation, for a density that is
+// positive everywhere) within 1%.
+TEST(EnvironmentSampler, DrawsAndDensityAgreeAndCoverTheSphere) {
+    RadianceImage image = filledImage(24, 12, 0.2f);
+    for (int k = 0; k < 24 * 12; ++k) image.rgb[3 * std::size_t(k) + 1] = float(0.1 + (k * 37 % 11));
+    EnvironmentSampler sampler(image);
+    Random random(11);
+    double inverse = 0.0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        double u1 = random.uniform(), u2 = random.uniform(), u3 = random.uniform();
+        EnvironmentSampler::Sample s = sampler.sample(u1, u2, u3);
+        ASSERT_NEAR(glm::length(s.direction), 1.0, 1e-12);
+        ASSERT_NEAR(s.pdf, sampler.pdf(s.direction), 1e-9 * s.pdf) << i;
+        inverse += 1.0 / s.pdf;
+    }
+    std::printf("mean of 1/pdf: %.4f (4 pi = %.4f)\n", inverse / n, 4 * kPi);
+    EXPECT_NEAR(inverse / n, 4 * kPi, 0.01 * 4 * kPi);
+}
+
+// A one-pixel sun of 1e4 on a sky of 0.05: the map strategy's weights
+// L(d) / pdf(d) stay within a small factor of their mean, the integral of
+// L (drawn by the old rule, a pixel then uniformly inside it, the half pixel
+// around the sun that the bilinear lookup lights was drawn only at the
+// floor's rate: weights up to 72 times the mean, seen failing). The mean
+// estimates the lookup's integral, computed here by a fine quadrature.
+TEST(EnvironmentSampler, AOnePixelSunGivesBoundedWeights) {
+    RadianceImage image = filledImage(32, 16, 0.05f);
+    for (int c = 0; c < 3; ++c) image.at(9, 7)[c] = 1e4f;
+    EnvironmentSampler sampler(image);
+    Random random(5);
+    double sum = 0.0, largest = 0.0;
+    const int n = 100000;
+    for (int i = 0; i < n; ++i) {
+        double u1 = random.uniform(), u2 = random.uniform(), u3 = random.uniform();
+        EnvironmentSampler::Sample s = sampler.sample(u1, u2, u3);
+        const double w = radianceTowards(image, s.direction) / s.pdf;
+        sum += w;
+        largest = std::max(largest, w);
+    }
+    double exact = 0.0;  // midpoint rule on a 2048 x 1024 grid of (u, v)
+    for (int y = 0; y < 1024; ++y)
+        for (int x = 0; x < 2048; ++x) {
+            const double u = (x + 0.5) / 2048, v = (y + 0.5) / 1024;
+            exact += bilinearRadiance(image, u, v).y * std::sin(kPi * v) * (2 * kPi / 2048) * (kPi / 1024);
+        }
+    const double mean = sum / n;
+    std::printf("one-pixel sun: mean weight %.4f, exact %.4f, largest %.4f (%.2f x the mean)\n", mean, exact, largest,
+                largest / mean);
+    EXPECT_NEAR(mean, exact, 0.01 * exact);
+    EXPECT_LT(largest, 1.5 * mean);
+}
+
+// The cap chain of a uniform map is the map, at every level; of the shipped
+// sky, the sun is found where scripts/make-environments.py puts it (35
+// degrees up, azimuth -40) with about its power (500 x a 2.5 degree disc),
+// and left out of the chain; the studio's soft boxes are too wide to be one.
+TEST(EnvironmentCaps, UniformStaysUniformAndTheSkysSunIsFound) {
+    for (const RadianceImage& level : capAverageChain(filledImage(64, 32, 0.7f), EnvironmentSun{}))
+        for (float v : level.rgb) ASSERT_NEAR(v, 0.7f, 1e-5f);
+    auto load = [](const char* name) {
+        return loadEnvironmentImage((sourceRoot() / "scenes/environments" / name).string());
+    };
+    const RadianceImage sky = load("sky.hdr");
+    const EnvironmentSun sun = findSun(sky);
+    ASSERT_TRUE(sun.present);
+    const double elevation = 35 * kPi / 180, azimuth = -40 * kPi / 180;
+    const dvec3 expected(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), -std::cos(elevation) * std::cos(azimuth));
+    const double power = 470.0 * 2 * kPi * (1 - std::cos(2.5 * kPi / 180));
+    std::printf("sky's sun: %.2f degrees from where it was drawn, radius %.2f degrees, power %.3f (drawn %.3f)\n",
+                std::acos(std::min(1.0, glm::dot(sun.direction, expected))) * 180 / kPi, sun.angularRadius * 180 / kPi,
+                sun.power.y, power);
+    EXPECT_GT(glm::dot(sun.direction, expected), std::cos(1.0 * kPi / 180));
+    EXPECT_NEAR(sun.power.y, power, 0.15 * power);
+    const std::vector<RadianceImage> chain = capAverageChain(sky, sun);
+    float brightest = 0.0f;
+    for (float v : chain[0].rgb) brightest = std::max(brightest, v);
+    EXPECT_LT(brightest, 10.0f) << "the sun is left out of the cap chain";
+    EXPECT_FALSE(findSun(load("studio.hdr")).present);
 }
