@@ -41,7 +41,7 @@ double clampRoughness(double roughness) { return std::clamp(roughness, kMinRough
 
 Rendering renderCpu(const Scene&, int) { absent("rendering with --cpu"); }
 Rendering renderCpu(const Scene&, int, const EnvironmentOptions&) { absent("rendering with --cpu"); }
-PixelTerms explainPixel(const Scene&, const Camera&, int, int, int, int) { absent("asking a pixel"); }
+PixelTerms explainPixel(const Scene&, const Camera&, int, int, int, int, const EnvironmentTables*) { absent("asking a pixel"); }
 std::string formatPixelTerms(const Scene&, const PixelTerms&) { absent("asking a pixel"); }
 glm::dvec3 displayEncode(glm::dvec3, const RenderSettings&) { absent("this value"); }
 glm::dvec2 sampleOffset(int, int) { absent("this value"); }
