@@ -109,7 +109,10 @@ RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, do
         const double NoH = halfVectors[size_t(i)].z, a2 = alpha * alpha;
         const double d = NoH * NoH * (a2 - 1.0) + 1.0;
         const double D = a2 / (kPiPrefilter * d * d);
-        sampleSolidAngle[size_t(i)] = 4.0 / (N * D);
+        // The sharpest level (roughness 0) reads the map itself: its lobe is
+        // narrower than a pixel, and its few draws in GGX's long tail would
+        // otherwise spread a sun over degrees around it.
+        sampleSolidAngle[size_t(i)] = roughness <= 0.0 ? 0.0 : 4.0 / (N * D);
     }
     const double pixelSolidAngle = 2.0 * kPiPrefilter * kPiPrefilter / (double(image.width) * double(image.height));
     RadianceImage out;
@@ -136,8 +139,8 @@ RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, do
                 l = glm::normalize(l);
                 glm::dvec2 uv = equirectUv(l);
                 const double sinTheta = std::sqrt(std::max(1e-6, 1.0 - l.y * l.y));
-                const double level = 0.5 * std::log2(sampleSolidAngle[size_t(&hl - halfVectors.data())] /
-                                                     (pixelSolidAngle * sinTheta)) + 1.0;
+                const double share = sampleSolidAngle[size_t(&hl - halfVectors.data())];
+                const double level = share > 0.0 ? 0.5 * std::log2(share / (pixelSolidAngle * sinTheta)) + 1.0 : 0.0;
                 sum += pyramidRadiance(pyramid, uv, level) * NoL;
                 weight += NoL;
             }

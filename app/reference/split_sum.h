@@ -50,7 +50,8 @@ glm::dvec3 ggxHalfVector(double u1, double u2, double alpha);
 // map's pyramid (2 x 2 blocks averaged by solid angle) at the level whose
 // pixel covers the draw's share of the lobe, 1 / (N pdf(l)), one level
 // coarser (filtered importance sampling, Krivanek and Colbert 2008): a small
-// sun reflects as one smooth highlight, not as the few draws that met it.
+// sun reflects as one smooth highlight, not as the few draws that met it
+// (roughness 0 reads the map itself).
 RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples);
 
 // The prefiltered chain: level k of `levels` (>= 2) for roughness

@@ -251,3 +251,26 @@ TEST(EnvironmentPicture, NoNegativeOrNonFiniteLightAtAnySunIntensity) {
         }
     }
 }
+
+// `raylab render --cpu --samples N --seed S` (issue 34): the environment
+// integral's directions and seed, apart from the pixel filter's --spp. The
+// same seed gives the same bytes, another seed another picture, and either
+// option without --cpu is one line and exit 1.
+TEST(EnvironmentPicture, CpuSamplesAndSeedAreOptions) {
+    const fs::path dir = test::freshTempDir("environment-cpu-options");
+    const std::string scene = (sourceRoot() / "scenes/environments/sky-spheres.json").string();
+    auto render = [&](const std::string& name, const std::string& options) {
+        auto r = test::runRaylab("render " + scene + " --cpu --size 16x12 " + options + " -o " + (dir / name).string());
+        EXPECT_EQ(r.status, 0) << r.output;
+        return test::readText(dir / name);
+    };
+    const std::string a = render("a.png", "--samples 8 --seed 5"), b = render("b.png", "--samples 8 --seed 5");
+    const std::string c = render("c.png", "--samples 8 --seed 6");
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+    for (const char* option : {"--samples 8", "--seed 2"}) {
+        auto r = test::runRaylab("render " + scene + " --size 16x12 " + option + " -o " + (dir / "d.png").string());
+        EXPECT_EQ(r.status, 1) << option;
+        EXPECT_NE(r.output.find("add --cpu"), std::string::npos) << r.output;
+    }
+}
