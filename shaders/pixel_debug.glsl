@@ -111,7 +111,11 @@ void debugRecordHit(Hit hit, vec3 v, Material m, int bounce) {
     debugRecord(DBG_ENV_PREFILTERED, bounce, -1, envPrefiltered);
     debugRecord(DBG_ENV_SCALE_BIAS, bounce, -1, vec3(envScaleBias, 0.0));
     debugRecord(DBG_ENV_VISIBILITY, bounce, -1, vec3(formFactors, 0.0, 0.0));
-    debugRecord(DBG_ENV_LIGHT, bounce, -1, environmentShading(envE, envPrefiltered, envScaleBias, m));
+    vec3 envLitE = envE;  // as environmentHitLight() takes it: the sun's correction, clamped at 0
+#ifndef RL_ENV_IRRADIANCE_MAP
+    envLitE += sunIrradianceCorrection(hit.n);
+#endif
+    debugRecord(DBG_ENV_LIGHT, bounce, -1, environmentShading(max(envLitE, vec3(0.0)), envPrefiltered, envScaleBias, m));
 #endif
 }
 

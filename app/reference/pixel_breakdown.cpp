@@ -108,7 +108,16 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
         e.prefilteredSpread = glm::max(e.prefilteredSpread, glm::abs(lookup(glm::normalize(r + kLookupAngle * t)) - e.prefiltered));
     e.scaleBias = splitSumAt(tables, NoV, m.roughness);
     const dvec3 F0 = baseReflectance(m);
-    const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * e.irradiance;
+    // The picture's irradiance: SH9's, the sun's three bands swapped for the
+    // sun as a point source, clamped at 0 (shaders/environment.glsl).
+    dvec3 irradiance = e.irradiance;
+    if (tables.sunPresent) {
+        const double x = glm::dot(environmentLocalDirection(environment, n), tables.sunDirection);
+        const double sh = 0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5);
+        irradiance += environment.intensity * tables.sunPower * (std::max(x, 0.0) - sh);
+    }
+    irradiance = glm::max(irradiance, dvec3(0.0));
+    const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * irradiance;
     const dvec3 specular = e.prefiltered * (F0 * e.scaleBias.x + e.scaleBias.y);
     e.light = diffuse + specular;
     return e;

@@ -43,6 +43,12 @@ struct EnvironmentTables {
     const std::vector<RadianceImage>* levels = nullptr;  // level k for roughness k / (levels - 1)
     const std::vector<glm::dvec2>* table = nullptr;      // [j * tableSize + i]: (scale, bias)
     int tableSize = 0;
+    // The map's sun (render/environment_caps.h, findSun), which the picture
+    // adds to SH9's irradiance as a point source (environment.glsl,
+    // sunIrradianceCorrection): image frame, no intensity.
+    bool sunPresent = false;
+    glm::dvec3 sunDirection{0.0, 1.0, 0.0};
+    glm::dvec3 sunPower{0.0};
 };
 
 // The approximation's terms at one hit, in double, as environmentHitLight()
@@ -64,7 +70,7 @@ struct EnvironmentTerms {
     // (reference/sphere_form_factor.h): the share of the sky's diffuse light
     // they hide, before the occlusion's framework parts (docs/model.md).
     double formFactors = 0.0;
-    glm::dvec3 light{0.0};        // environmentShading(irradiance, prefiltered, scaleBias, m), before occlusion
+    glm::dvec3 light{0.0};        // environmentShading(max(irradiance + the sun's correction, 0), prefiltered, scaleBias, m), before occlusion
 };
 constexpr double kLookupAngle = 1e-4;  // radians: the shader's float atan and acos (a GPU's approximations), with room
 EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, glm::dvec3 n,
