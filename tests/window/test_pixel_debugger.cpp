@@ -126,13 +126,15 @@ TEST(PixelDebugger, FindsEachMutantInItsOwnExercise) {
 // small picture of the default scene (the lecture scene: spheres, ground,
 // sky, the bounces between them), nor of the metal and dielectric rows with
 // reflections (roughness 0 to 1, mirror bounces between spheres), nor of an
-// environment scene (exercise 11's terms beside the approximation's).
+// environment scene with a sun and of one with spheres resting on a ground
+// (exercise 11's terms beside the approximation's, 12's form factors).
 TEST(PixelDebugger, SolutionsAgreeWithTheReferenceEverywhere) {
     auto context = createHeadlessContext(Backend::Auto);
     const Implementation impl{sourceRoot() / "solutions", {}};
     for (const std::string& file : {std::string(""), (sourceRoot() / "scenes" / "metal-row-reflections.json").string(),
                                     (sourceRoot() / "scenes" / "dielectric-row-reflections.json").string(),
-                                    (sourceRoot() / "scenes" / "environments" / "sky-spheres.json").string()}) {
+                                    (sourceRoot() / "scenes" / "environments" / "sky-spheres.json").string(),
+                                    (sourceRoot() / "scenes" / "environments" / "contact.json").string()}) {
         const Scene scene = file.empty() ? defaultScene() : loadSceneFile(file).scene;
         const ShaderProgram program = buildPixelDebugProgram(impl, scene);
         const int w = 32, h = 18;
