@@ -26,7 +26,7 @@ public:
     // every frame, and a slow machine reaches its scale in a few steps.
     static constexpr double kStepRatio = 0.70710678118654752;
 
-    bool enabled = true;  // panel: "lower resolution while moving"
+    bool enabled = true;  // panel: "adaptive resolution"
 
     // A measured frame: `ms` to render `pixels` pixels.
     void record(double ms, double pixels);

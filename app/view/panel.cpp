@@ -5,6 +5,7 @@
 #include "view/presets.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the widest row (the layout report)
 
 #include <algorithm>
 #include <cfloat>
@@ -61,20 +62,21 @@ bool editPosition(const char* label, glm::dvec3& p) {
 
 void frameSection(ViewState& state, const PanelInfo& info) {
     if (!ImGui::CollapsingHeader("Frame", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (info.frameMs > 0)
-        ImGui::Text("%.1f ms per frame (%.1f fps)", info.frameMs, 1000.0 / info.frameMs);
+    if (info.frameMs > 0)  // short: at UI scale 3 on 1280x720 "ms per frame (0.3 fps)" was cut to "(0.3"
+        ImGui::Text("%.1f fps, %.0f ms a frame", 1000.0 / info.frameMs, info.frameMs);
     else
         ImGui::TextDisabled("no frame measured yet");
     if (info.gpuMs > 0) ImGui::Text("GPU %.1f ms (timer query)", info.gpuMs);
     ImGui::Text("%d x %d", info.renderWidth, info.renderHeight);
-    if (info.renderWidth != info.windowWidth) {
-        ImGui::SameLine();
+    if (info.renderWidth != info.windowWidth)  // a line of its own: beside the size it was cut at UI scale 3
         ImGui::TextDisabled("(moving; window %d x %d)", info.windowWidth, info.windowHeight);
-    }
-    ImGui::Checkbox("lower resolution while moving", &state.adaptiveResolution);
+    ImGui::Checkbox("adaptive resolution", &state.adaptiveResolution);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("fewer pixels while the camera or a value moves (30 fps)");
     ImGui::Checkbox("render every frame", &state.continuous);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: render only when something changes (quiet laptop fans).");
+    ImGui::PushTextWrapPos(0.0f);  // the renderer's name wraps at the panel's edge
     ImGui::TextDisabled("%s", info.device.c_str());
+    ImGui::PopTextWrapPos();
 }
 
 LayoutRect itemRect() {
@@ -100,8 +102,10 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out, PanelR
     ImGui::TextUnformatted("view");
     ImGui::SetNextItemWidth(-FLT_MIN);
     // The whole name where it fits, else the key and the short name ("3  F(v.h)").
-    static const char* const kShortNames[] = {"final picture", "D", "G", "F(v.h)", "diffuse", "specular",
-                                              "n.l", "shadow", "normals", "bounce k", "F(n.v)"};
+    static const char* const kShortNames[] = {"final picture", "D",          "G",           "F(v.h)",
+                                              "diffuse",       "specular",   "n.l",         "shadow",
+                                              "normals",       "bounce k",   "F(n.v)",      "E(n) / pi",
+                                              "prefiltered",   "split scale", "split bias"};
     const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().FramePadding.x;
     std::string preview = names[std::size_t(current)];
     if (ImGui::CalcTextSize(preview.c_str()).x > room && current < int(std::size(kShortNames)))
@@ -125,7 +129,8 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out, PanelR
             }
         ImGui::EndCombo();
     }
-    ImGui::Checkbox("caption and colour bar (K)", &state.showCaptions);
+    ImGui::Checkbox("caption (K)", &state.showCaptions);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the caption and colour bar on the picture");
     if (state.view == View::Bounce) {
         // One past max bounces: "beyond the limit it is black", shown live.
         if (ImGui::SliderInt("bounce k", &state.viewBounce, 0, std::max(scene.render.maxBounces, 0) + 1, "%d", kClamp))
@@ -186,7 +191,8 @@ void modelSection(Scene& scene, ViewRequests& out) {
     choose("F", m.fresnel, {"Schlick", "exact dielectric", "exact conductor"});
     choose("diffuse", m.diffuse, {"Lambert", "Burley"});
     ImGui::EndDisabled();
-    out.sceneEdited |= ImGui::Checkbox("Blinn-Phong (course comparison)", &m.blinnPhong);
+    out.sceneEdited |= ImGui::Checkbox("Blinn-Phong", &m.blinnPhong);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the course comparison model");
     if (!m.isReference() && ImGui::Button("back to the reference model")) {
         m = ShadingModel{};
         out.sceneEdited = true;
@@ -335,7 +341,8 @@ void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
     char path[512];
     std::snprintf(path, sizeof path, "%s", state.savePath.c_str());
     if (ImGui::InputText("save as", path, sizeof path)) state.savePath = path;
-    ImGui::Checkbox("with the current view as its camera", &state.saveCamera);
+    ImGui::Checkbox("with this camera", &state.saveCamera);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("save the current view as the scene's camera");
     if (ImGui::Button("Save (Ctrl+S)")) out.save = true;
     ImGui::TextDisabled("only changed values are written; the file's layout stays");
     if (state.askOverwrite) ImGui::OpenPopup("Overwrite a bundled scene?");
@@ -466,8 +473,10 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("fold the panel to a narrow strip (presenter layout)");
         ImGui::PushItemWidth(std::max(6.0f * ImGui::GetFontSize(),
                                       ImGui::GetContentRegionAvail().x - 9.0f * ImGui::GetFontSize()));
-        frameSection(state, info);
+        ImGui::PushTextWrapPos(0.0f);  // every text wraps at the panel's edge (at UI scale 3 on 1280 px "(0.3 fps" was cut)
+        // The view first: at UI scale 3 on 1280x720 it was below the fold.
         viewSection(state, scene, out, rects);
+        frameSection(state, info);
         compareSection(state, info, out);
         displaySection(scene, out);
         renderSection(scene, out);
@@ -481,7 +490,15 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         sceneSection(state, info, out);
         interfaceSection(info, out);
         if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
+        ImGui::PopTextWrapPos();
         ImGui::PopItemWidth();
+        if (rects) {  // the widest row against the room for it (a text wider than the panel is cut at its edge)
+            const ImGuiWindow* w = ImGui::GetCurrentWindow();
+            const ImVec2 o = viewport->Pos;
+            rects->content = {w->WorkRect.Min.x - o.x, w->InnerClipRect.Min.y - o.y, w->WorkRect.Max.x - o.x,
+                              w->InnerClipRect.Max.y - o.y};
+            rects->rows = {rects->content.x0, rects->content.y0, w->DC.CursorMaxPos.x - o.x, rects->content.y1};
+        }
     }
     ImGui::End();
     return out;

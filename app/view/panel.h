@@ -44,6 +44,8 @@ struct PanelRects {
     LayoutRect viewCombo;   // the teaching view's dropdown: the room for its text
     LayoutRect viewText;    // the current view's name in it, whole
     LayoutRect askedPixel;  // the asked pixel's box
+    LayoutRect content;     // the room for the rows: the panel less its padding and scroll bar
+    LayoutRect rows;        // the rows as drawn: from content's left to the right edge of the widest (cut beyond content)
 };
 
 // Draws the panel (when state.showPanel) and returns what the user asked for.

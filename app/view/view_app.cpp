@@ -497,8 +497,14 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     info.currentPreset = currentPreset();
     info.uiScale = scale;
     info.status = status_;
-    requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info, &panelRects_);
-    drawHelpOverlay(state_.showHelp);
+    if (state_.showHelp)  // the help has the window (below); the panel comes back when it closes
+        panelRects_ = {};
+    else
+        requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info, &panelRects_);
+    // The help over the whole window, opaque, at the UI scale, in pages;
+    // the panel steps aside while it is open (drawPanel: it would be under
+    // it anyway), so none of the panel's text shows through or beside it.
+    const HelpRects help = drawHelpOverlay(state_.showHelp, state_.helpPage, state_.helpPages, scale);
 
     // Window units from here (ImGui's); the report in framebuffer pixels.
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();
@@ -510,6 +516,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     };
     const float windowHeight = float(fbHeight_ / perUnit.y);
 
+    if (!help.box.empty()) {
+        layout_.add("help", LayoutBox::Kind::Cover, toPixels(help.box));
+        layout_.add("help rows", LayoutBox::Kind::Part, toPixels(help.rows), "help");
+    }
     const LayoutRect errorBox = drawErrorOverlay(errors(), scale, toUnits(errorArea_));
     errorBoxHeight_ = (errorBox.y1 - errorBox.y0) * float(perUnit.y);
     if (!errorBox.empty()) layout_.add("errors", LayoutBox::Kind::Widget, toPixels(errorBox));
@@ -558,6 +568,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
             layout_.add("view name", LayoutBox::Kind::Part, toPixels(p.viewText), "view dropdown");
         }
         if (!p.askedPixel.empty()) layout_.add("asked pixel", LayoutBox::Kind::Part, toPixels(p.askedPixel), "panel");
+        if (!p.content.empty()) {
+            layout_.add("panel content", LayoutBox::Kind::Part, toPixels(p.content), "panel");
+            layout_.add("panel rows", LayoutBox::Kind::Part, toPixels(p.rows), "panel content");
+        }
     }
 }
 

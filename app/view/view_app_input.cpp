@@ -305,7 +305,16 @@ void ViewApp::perform(Action action, int argument) {
     RenderSettings& render = scene_.scene().render;
     bool sceneEdited = false;
     switch (action) {
-        case Action::ToggleHelp: state_.showHelp = !state_.showHelp; break;
+        case Action::ToggleHelp:  // opens at page 1; then the next page; after the last, closes
+            if (!state_.showHelp) {
+                state_.showHelp = true;
+                state_.helpPage = 0;
+            } else if (state_.helpPage + 1 < state_.helpPages) {
+                ++state_.helpPage;
+            } else {
+                state_.showHelp = false;
+            }
+            break;
         case Action::TogglePanel: state_.showPanel = !state_.showPanel; break;
         case Action::ToggleCaptions: state_.showCaptions = !state_.showCaptions; break;
         case Action::TogglePickMode:
