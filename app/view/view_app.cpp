@@ -764,10 +764,14 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
     const glm::dvec3 u = glm::cross(r, f);
     const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
-    int x0 = 0, width = fbWidth_;  // side by side: the half the pixel was asked in
-    pictureColumns(sideBySideActive() ? pickedHalf_ : -1, x0, width);
+    // Side by side: the half the pixel was asked in; asked in the wipe or
+    // the whole window before X, the half of the code it was asked of
+    // (issue 37: the rays stayed at their full-window places, across the names).
+    const int half = sideBySideActive() ? (pickedHalf_ >= 0 ? pickedHalf_ : pickedSide_) : -1;
+    int x0 = 0, width = fbWidth_;
+    pictureColumns(half, x0, width);
     int y0 = 0, height = fbHeight_;
-    pictureRows(sideBySideActive() ? pickedHalf_ : -1, y0, height);
+    pictureRows(half, y0, height);
     const double aspect = double(width) / height;
     // Points closer than this along the view direction are clipped away:
     // a ray from the camera itself projects to no point.
@@ -782,8 +786,25 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
             return glm::dvec2(x0 + (c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * width,
                               y0 + (1.0 - c.y / (c.z * tanHalf)) * 0.5 * height);
         };
-        const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
-        out.push_back({float(pa.x), float(pa.y), float(pb.x), float(pb.y), colour});
+        glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
+        // Clipped to the picture (Liang-Barsky): side by side, a ray never
+        // leaves its half for the bars and the names above it.
+        double t0 = 0, t1 = 1;
+        const glm::dvec2 d = pb - pa;
+        const double p[4] = {-d.x, d.x, -d.y, d.y};
+        const double q[4] = {pa.x - x0, x0 + width - pa.x, pa.y - y0, y0 + height - pa.y};
+        for (int k = 0; k < 4; ++k) {
+            if (p[k] == 0) {
+                if (q[k] < 0) return;  // parallel to this edge and outside it
+                continue;
+            }
+            const double t = q[k] / p[k];
+            if (p[k] < 0) t0 = std::max(t0, t);
+            else t1 = std::min(t1, t);
+        }
+        if (t0 > t1) return;
+        const glm::dvec2 from = pa + t0 * d, to = pa + t1 * d;
+        out.push_back({float(from.x), float(from.y), float(to.x), float(to.y), colour});
     };
     // Colours: primary and reflected rays yellow / cyan, shadow rays green
     // when the light is visible, red when a sphere blocks it.

@@ -212,6 +212,7 @@ private:
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
+    int pickedSide_ = 0;   // the code the asked pixel was asked of (0 left / --impl, 1 right)
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window
     // The pixel debugger's program of each side (render/pixel_debugger.h),
     // built at the first pick after the side's files (rebuild()), program

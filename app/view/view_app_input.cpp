@@ -240,6 +240,7 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         // wipe the side of the divider it is on.
         int side = pickedHalf_ < 0 ? 0 : pickedHalf_;
         if (wipeActive() && i >= dividerPixel()) side = 1;
+        pickedSide_ = side;
         if (wipeActive()) where = std::string(" (") + sides_[std::size_t(side)].program->label() + ", " +
                                   (side == 0 ? "left" : "right") + " of the divider)";
         state_.pickedText = debugPickedPixel(side, scene, camera, width, height, i - x0, height - 1 - (row - y0));

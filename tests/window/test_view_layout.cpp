@@ -68,6 +68,25 @@ TEST(LayoutRules, LeavingTheWindowAndACutTextAreReportedScrolledRowsAreNot) {
     EXPECT_NE(problems[1].find("toast leaves the window"), std::string::npos) << problems[1];
 }
 
+// The help (issue 37): a cover hides the caption and the spheres under it
+// (no overlap), but not the panel; its rows never scroll, so a row below
+// its bottom is cut, not scrolled away.
+TEST(LayoutRules, TheHelpCoversWidgetsNotThePanelAndItsRowsAreWhole) {
+    LayoutReport r = window720();
+    r.add("caption", K::Widget, {800, 600, 1270, 710});
+    r.add("sphere 1", K::Subject, {300, 270, 450, 420});
+    r.add("help", K::Cover, {10, 10, 1270, 710});
+    r.add("help rows", K::Part, {20, 40, 1260, 700}, "help");
+    EXPECT_TRUE(layoutProblems(r).empty()) << layoutProblems(r).front();
+    r.add("help rows", K::Part, {20, 40, 1260, 730}, "help");  // a row below the help's bottom
+    r.add("panel", K::Tool, {10, 10, 350, 710});
+    const auto problems = layoutProblems(r);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].find("help rows is cut by help"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[1].find("help overlaps panel"), std::string::npos) << problems[1];
+    EXPECT_EQ(parseLayoutJson(layoutJson(r), "layout.json").boxes[2].kind, K::Cover);
+}
+
 TEST(LayoutRules, TheReportSurvivesItsJson) {
     LayoutReport r = window720();
     r.uiScale = 2;
