@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iterator>
 #include <string>
@@ -47,7 +48,10 @@ bool editDouble(const char* label, double& value, float min, float max, const ch
 bool editColour(const char* label, glm::dvec3& colour) {
     float c[3] = {float(colour.x), float(colour.y), float(colour.z)};
     // Float: the values are linear reflectances/colours in [0, 1], shown as such.
-    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float)) return false;
+    // Where three numbers do not fit (UI scale 3 on 1280 px), the swatch
+    // alone: a click on it opens the picker with the numbers.
+    const bool narrow = ImGui::CalcItemWidth() < 12.0f * ImGui::GetFontSize();
+    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | (narrow ? ImGuiColorEditFlags_NoInputs : 0))) return false;
     colour = {c[0], c[1], c[2]};
     return true;
 }
@@ -77,6 +81,30 @@ void frameSection(ViewState& state, const PanelInfo& info) {
     ImGui::PushTextWrapPos(0.0f);  // the renderer's name wraps at the panel's edge
     ImGui::TextDisabled("%s", info.device.c_str());
     ImGui::PopTextWrapPos();
+}
+
+// A section's header: its name and, where the row has room, its detail
+// ("Presets (course figures)"); at UI scale 3 on 1280 px the details were cut.
+bool header(const char* name, const char* detail, ImGuiTreeNodeFlags flags = 0) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing();
+    const std::string full = std::string(name) + detail;
+    const std::string shown = ImGui::CalcTextSize(full.c_str()).x <= room ? full : std::string(name);
+    return ImGui::CollapsingHeader((shown + "###" + name).c_str(), flags);
+}
+
+// A tree node's label from its parts, as many as fit the row (a label
+// does not wrap: at UI scale 1 "<- asked pixel" was cut at the panel's edge);
+// the first part always, a part that does not fit shortened to its arrow.
+std::string fitLabel(const std::vector<std::string>& parts) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing();
+    std::string label;
+    for (const std::string& part : parts) {
+        if (label.empty() || ImGui::CalcTextSize((label + part).c_str()).x <= room)
+            label += part;
+        else if (part.find("<-") != std::string::npos && ImGui::CalcTextSize((label + "  <-").c_str()).x <= room)
+            label += "  <-";
+    }
+    return label;
 }
 
 LayoutRect itemRect() {
@@ -175,7 +203,7 @@ void renderSection(Scene& scene, ViewRequests& out) {
 // The model variants (docs/model-variants.md). A change of model is the one
 // panel edit that recompiles: each variant is compiled in only when used.
 void modelSection(Scene& scene, ViewRequests& out) {
-    if (!ImGui::CollapsingHeader("Model (recompiles)")) return;
+    if (!header("Model", " (recompiles)")) return;
     ShadingModel& m = scene.model;
     auto choose = [&](const char* label, auto& value, std::initializer_list<const char*> names) {
         int index = int(value);
@@ -199,10 +227,31 @@ void modelSection(Scene& scene, ViewRequests& out) {
     }
 }
 
+// Text wrapped at the panel's edge, a word longer than the row (a path,
+// a formula) broken where the row ends: ImGui wraps at spaces only, and at
+// UI scale 3 a path ran past the panel's edge, cut.
+void textBrokenAnywhere(const std::string& text) {
+    const float room = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.size();
+        if (ImGui::CalcTextSize(text.c_str() + at, text.c_str() + end).x > room) {
+            // The longest prefix that fits, ended at its last space where it has one.
+            std::size_t fit = at + 1;
+            while (fit < text.size() && ImGui::CalcTextSize(text.c_str() + at, text.c_str() + fit + 1).x <= room) ++fit;
+            const std::size_t space = text.rfind(' ', fit);
+            end = space != std::string::npos && space > at ? space : fit;
+        }
+        ImGui::TextUnformatted(text.c_str() + at, text.c_str() + end);
+        at = end;
+        while (at < text.size() && text[at] == ' ') ++at;
+    }
+}
+
 void pickedSection(ViewState& state, PanelRects* rects) {
     if (state.pickedText.empty()) return;
     if (state.revealPicked) ImGui::SetNextItemOpen(true);
-    if (!ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)")) return;
+    if (!header("Asked pixel", " (Ctrl+click, I)")) return;
     // The answer first, wrapped to the panel: the first difference (or that
     // there is none) and the checker's hint; the table below scrolls.
     const std::string& all = state.pickedText;
@@ -216,7 +265,7 @@ void pickedSection(ViewState& state, PanelRects* rects) {
         if (!bad && line.rfind("every value", 0) != 0 && line.rfind("checker,", 0) != 0) continue;
         ImGui::PushStyleColor(ImGuiCol_Text, bad ? ImVec4(1.0f, 0.35f, 0.35f, 1.0f) : ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
         if (line.rfind("checker,", 0) == 0) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.5f, 1.0f));
-        ImGui::TextWrapped("%s", line.c_str());
+        textBrokenAnywhere(line);
         ImGui::PopStyleColor(line.rfind("checker,", 0) == 0 ? 2 : 1);
     }
     // Its own scrolling box: two lights and two bounces are ~25 lines.
@@ -261,8 +310,10 @@ void materialsSection(Scene& scene, ViewState& state, ViewRequests& out) {
         }
         // The asked pixel's sphere is selected: highlighted, and marked.
         // Named as the scene file's errors name them (spheres[0] is the first).
-        if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "spheres[%zu]  rough %.2f  metal %.2f%s",
-                              i, m.roughness, m.metallic, picked ? "  <- asked pixel" : "")) {
+        char values[64];
+        std::snprintf(values, sizeof values, "  rough %.2f  metal %.2f", m.roughness, m.metallic);
+        const std::string label = fitLabel({"spheres[" + std::to_string(i) + "]", values, picked ? "  <- asked pixel" : ""});
+        if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "%s", label.c_str())) {
             out.sceneEdited |= editColour("albedo", m.albedo);
             out.sceneEdited |= editDouble("roughness", m.roughness, 0.0f, 1.0f);
             out.sceneEdited |= editDouble("metallic", m.metallic, 0.0f, 1.0f);
@@ -278,7 +329,8 @@ void lightsSection(Scene& scene, ViewRequests& out) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& l = scene.lights[i];
         ImGui::PushID(int(i));
-        if (ImGui::TreeNode("light", "lights[%zu]%s", i, i == 0 ? "  (key light of the term views)" : "")) {
+        const std::string label = fitLabel({"lights[" + std::to_string(i) + "]", i == 0 ? "  (key light of the term views)" : ""});
+        if (ImGui::TreeNode("light", "%s", label.c_str())) {
             out.sceneEdited |= editPosition("position", l.position);
             out.sceneEdited |= editColour("colour", l.color);
             out.sceneEdited |=
@@ -293,7 +345,7 @@ void lightsSection(Scene& scene, ViewRequests& out) {
 // values the program reads as uniforms: dragging them never recompiles.
 void environmentSection(Scene& scene, ViewRequests& out) {
     if (!scene.environment) return;
-    if (!ImGui::CollapsingHeader("Environment (sky light)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!header("Environment", " (sky light)", ImGuiTreeNodeFlags_DefaultOpen)) return;
     Environment& e = *scene.environment;
     ImGui::TextDisabled("%s", e.file.c_str());
     out.sceneEdited |= editDouble("env intensity", e.intensity, kPanelMinEnvIntensity, kPanelMaxEnvIntensity,
@@ -303,7 +355,7 @@ void environmentSection(Scene& scene, ViewRequests& out) {
 }
 
 void presetsSection(Scene& scene, const Scene& fromFile, const PanelInfo& info, ViewRequests& out) {
-    if (!ImGui::CollapsingHeader("Presets (course figures)")) return;
+    if (!header("Presets", " (course figures)")) return;
     const char* group = "";
     for (const SettingPreset& p : settingPresets()) {
         if (std::strcmp(group, p.group) != 0) {
@@ -471,7 +523,7 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         // panel is 576 px: 351 for the labels, 200 for the widgets).
         if (ImGui::SmallButton("<< strip")) state.panelStrip = true;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("fold the panel to a narrow strip (presenter layout)");
-        ImGui::PushItemWidth(std::max(6.0f * ImGui::GetFontSize(),
+        ImGui::PushItemWidth(std::max(4.5f * ImGui::GetFontSize(),
                                       ImGui::GetContentRegionAvail().x - 9.0f * ImGui::GetFontSize()));
         ImGui::PushTextWrapPos(0.0f);  // every text wraps at the panel's edge (at UI scale 3 on 1280 px "(0.3 fps" was cut)
         // The view first: at UI scale 3 on 1280x720 it was below the fold.
