@@ -296,7 +296,14 @@ void ViewApp::frame() {
     steadyScale_ = ui_->scale();
     glfwSwapBuffers(window_->window());
     endPart(FrameParts::Swap);
-    if (rendered) parts_.end(renderedScale_ < 1.0 || moving());
+    if (rendered) {
+        const bool movingFrame = renderedScale_ < 1.0 || moving();
+        parts_.end(movingFrame);
+        // The full picture back: from the hand's last move to this swap.
+        if (!movingFrame && wasMoving_)
+            stillBackMs_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - lastMove_).count());
+        wasMoving_ = movingFrame;
+    }
     if (rendered) {
         const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         stats_.addWall(frameMs);
@@ -896,6 +903,11 @@ void ViewApp::printStats() const {
             std::printf("raylab view: still: %zu renders at full resolution, median %.1f ms\n", fullRenderMs_.size(),
                         FrameStats::median(fullRenderMs_));
     }
+    if (!stillBackMs_.empty())
+        std::printf("raylab view: still: the full picture back %.0f ms after the hand stopped (median of %zu, the "
+                    "longest %.0f ms)\n",
+                    FrameStats::median(stillBackMs_), stillBackMs_.size(),
+                    *std::max_element(stillBackMs_.begin(), stillBackMs_.end()));
     if (options_.stats && parts_.movingFrames() > 0) {
         const double interval = parts_.movingIntervalMs();
         std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,

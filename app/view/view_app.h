@@ -184,6 +184,8 @@ private:
     double lastRenderMs_ = 0;         // the last render's wall time (software renderers only)
     std::vector<double> movingFrameMs_;  // whole frames rendered while moving, for --stats
     std::vector<double> fullRenderMs_;   // renders at full resolution (software renderers), for --stats
+    std::vector<double> stillBackMs_;    // from the last move to the swap of the full picture, for --stats
+    bool wasMoving_ = false;             // the last rendered frame was a moving one
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events

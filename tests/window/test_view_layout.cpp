@@ -268,8 +268,8 @@ void checkViews(int w, int h, const std::vector<std::string>& views) {
     }
     if (h == 720) {
         maybeUpdateDocImage(dir / "help-3.png", "help-720p-scale-3.png");
-        for (const std::string& v : views)
-            if (v != "final") maybeUpdateDocImage(dir / (v + "-2.png"), "view-" + v + "-720p-scale-2.png");
+        for (const std::string v : {"irradiance", "env-bias"})  // the suite's two: their names in the dropdown
+            maybeUpdateDocImage(dir / (v + "-2.png"), "view-" + v + "-720p-scale-2.png");
     } else {
         maybeUpdateDocImage(dir / "help-2.png", "help-1080p-scale-2.png");
         maybeUpdateDocImage(dir / "pick-3.png", "environment-pick-1080p-scale-3.png");
