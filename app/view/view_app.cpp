@@ -162,7 +162,9 @@ int ViewApp::run() {
 }
 
 void ViewApp::endPart(FrameParts::Part p) {
-    if (options_.stats && p != FrameParts::Events && p != FrameParts::Programs && p != FrameParts::UiBuild) gl::Finish();
+    if (options_.stats && parts_.profiled() && p != FrameParts::Events && p != FrameParts::Programs &&
+        p != FrameParts::UiBuild)
+        gl::Finish();
     parts_.mark(p);
 }
 
