@@ -46,6 +46,10 @@ constexpr double kIdleWaitSeconds = 0.5;
 // Frames drawn after any wake-up before waiting again: ImGui needs one or
 // two frames to settle hover and layout after an input event.
 constexpr int kFramesAfterWake = 3;
+// A term view refines in bands of about this long each (one a frame): the
+// window answers input 10 times a second while the full picture comes in.
+constexpr double kRefineBandMs = 100.0;
+constexpr int kMinRefineRows = 8;
 // How long a toast ("saved ...") stays on screen.
 constexpr auto kToastTime = std::chrono::seconds(3);
 
@@ -198,9 +202,9 @@ void ViewApp::frame() {
     const bool lastFrame = scriptDone && framesLeft_ == 1;
     if (lastFrame && !options_.screenshot.empty()) pendingShot_ = options_.screenshot;
     const bool screenshot = !pendingShot_.empty() || !pendingUiShot_.empty();
-    const bool refine = !moving() && (renderedScale_ < 1.0 || stillPending_);
+    const bool refine = !moving() && (renderedScale_ < 1.0 || stillPending_ || refineRow_ > 0);
     bool rendered = false;
-    if (dirty_ || state_.continuous || refine || (screenshot && renderedScale_ < 1.0)) {
+    if (dirty_ || state_.continuous || refine || (screenshot && (renderedScale_ < 1.0 || refineRow_ > 0))) {
         renderPicture(screenshot);
         rendered = true;
     }
@@ -299,7 +303,7 @@ void ViewApp::frame() {
     glfwSwapBuffers(window_->window());
     endPart(FrameParts::Swap);
     if (rendered) {
-        const bool movingFrame = renderedScale_ < 1.0 || moving();
+        const bool movingFrame = renderedScale_ < 1.0 || moving() || refineRow_ > 0;
         parts_.end(movingFrame);
         // The full picture back: from the hand's last move to this swap.
         if (!movingFrame && wasMoving_)
@@ -325,7 +329,7 @@ bool ViewApp::waitOrPoll() {
         glfwWaitEventsTimeout(kIdleWaitSeconds);
         return true;
     }
-    const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || framesBeforeIdle_ > 0 ||
+    const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || refineRow_ > 0 || framesBeforeIdle_ > 0 ||
                       (script_ && !script_->finished()) || framesLeft_ > 0 || Clock::now() < toastUntil_;
     if (busy) {
         glfwPollEvents();
@@ -458,15 +462,29 @@ void ViewApp::renderPicture(bool fullResolution) {
     PictureProgram* still = stillPicture(sides_[0]);
     const ShaderProgram* left = sides_[0].program->program();
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
+    // A term view's full picture (the generic program: seconds at 1080p on
+    // llvmpipe) in bands of rows, one a frame, over the upscaled moving
+    // picture, so the window keeps answering while it refines (issue 37).
+    // The first band after a change starts at row 0; a move starts over.
+    const bool progressive = scale == 1.0 && !fullResolution && !still && !sideBySideActive() &&
+                             !isPictureView(state_.view) && renderedScale_ > 0 && (renderedScale_ < 1.0 || refineRow_ > 0);
+    int band0 = 0, band1 = frame.height;
+    if (progressive) {
+        const double msPerRow = adaptive_.msPerPixel() * frame.width;
+        const int rows = msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
+        band0 = refineRow_;
+        band1 = std::min(frame.height, band0 + std::max(rows, kMinRefineRows));
+    }
+    const double pixels = double(frame.width) * (band1 - band0);
     const auto renderStart = Clock::now();
-    if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
+    if (!softwareRenderer_) timer_->begin(pixels);
     try {
         if (still)  // the whole frame: with its sky tiles
             picture_->render(*still, frame, !moving());
         else if (sideBySideActive())
             picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else
-            picture_->render(left, right, frame, split);
+            picture_->render(left, right, frame, split, band0, band1);
         runtimeError_.clear();
     } catch (const Error& e) {
         if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -478,11 +496,14 @@ void ViewApp::renderPicture(bool fullResolution) {
         gl::Finish();
         lastRenderMs_ = std::chrono::duration<double, std::milli>(Clock::now() - renderStart).count();
         stats_.addGpu(lastRenderMs_);
-        adaptive_.record(lastRenderMs_, double(frame.width) * frame.height);
-        if (scale == 1.0) fullRenderMs_.push_back(lastRenderMs_);
+        adaptive_.record(lastRenderMs_, pixels);
+        if (scale == 1.0 && !progressive) fullRenderMs_.push_back(lastRenderMs_);
     } else {
         timer_->end();
     }
+    if (progressive) ++refineBands_;
+    refineRow_ = progressive && band1 < frame.height ? band1 : 0;
+    picture_->setRefinedRows(progressive && band1 < frame.height ? band1 : -1);
     renderedScale_ = scale;
     dirty_ = false;
 }
@@ -910,6 +931,7 @@ void ViewApp::printStats() const {
                     "longest %.0f ms)\n",
                     FrameStats::median(stillBackMs_), stillBackMs_.size(),
                     *std::max_element(stillBackMs_.begin(), stillBackMs_.end()));
+    if (refineBands_ > 0) std::printf("raylab view: still: term views refined in %d bands of about %.0f ms\n", refineBands_, kRefineBandMs);
     if (options_.stats && parts_.movingFrames() > 0) {
         const double interval = parts_.movingIntervalMs();
         std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,

@@ -186,6 +186,8 @@ private:
     std::vector<double> fullRenderMs_;   // renders at full resolution (software renderers), for --stats
     std::vector<double> stillBackMs_;    // from the last move to the swap of the full picture, for --stats
     bool wasMoving_ = false;             // the last rendered frame was a moving one
+    int refineBands_ = 0;                // bands drawn, for --stats
+    int refineRow_ = 0;                  // a term view refining: the next band's first row (from the bottom); 0 = none
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events

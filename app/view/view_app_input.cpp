@@ -355,9 +355,9 @@ void ViewApp::perform(Action action, int argument) {
             trackball_->reset();
             dirty_ = true;
             break;
-        case Action::SetView:
+        case Action::SetView:  // as a value: the moving picture first, then the full one (in bands for a term view)
             state_.view = View(argument);
-            dirty_ = true;
+            valueChanged();
             break;
         case Action::BounceDown:
         case Action::BounceUp:
