@@ -209,8 +209,15 @@ void ViewApp::onCursor(glm::dvec2 pixel) {
 }
 
 void ViewApp::pickPixel(glm::dvec2 pixel) {
+    // Compared as read, before any conversion (issue 37: 4294967296 wrapped round to 0).
+    if (!(pixel.x >= 0 && pixel.y >= 0 && pixel.x < fbWidth_ && pixel.y < fbHeight_)) {
+        char where[64];
+        std::snprintf(where, sizeof where, "(%.10g, %.10g)", pixel.x, pixel.y);
+        std::cerr << "raylab: error: pick " << where << ": outside the " << fbWidth_ << "x"
+                  << fbHeight_ << " window (pixels from the top left)" << std::endl;
+        return;
+    }
     const int i = int(std::floor(pixel.x)), row = int(std::floor(pixel.y));
-    if (i < 0 || row < 0 || i >= fbWidth_ || row >= fbHeight_) return;
     try {
         Camera camera = trackball_->camera();
         // Side by side, each half is a whole picture of its own width with
