@@ -508,7 +508,10 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
     const char* title = "raylab  (H: keys, Tab: hide)";
     if (ImGui::CalcTextSize(title).x > titleRoom) title = "raylab (H, Tab)";
     const std::string titleId = std::string(title) + "###raylab-panel";
-    if (ImGui::Begin(titleId.c_str(), &state.showPanel)) {
+    if (info.backgroundCleared) ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0, 0, 0, 0));  // ImGui skips it
+    const bool shown = ImGui::Begin(titleId.c_str(), &state.showPanel);
+    if (info.backgroundCleared) ImGui::PopStyleColor();
+    if (shown) {
         if (rects) {
             rects->panel = windowRect();
             const LayoutRect& p = rects->panel;

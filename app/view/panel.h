@@ -25,6 +25,11 @@ struct PanelInfo {
     int currentPreset = -1;  // index into presets, -1 when the scene is none of them
     float uiScale = 1;
     std::string status;  // the last save or screenshot, one line
+    // The window clears the panel's rectangle to its background colour
+    // itself (a scissored clear: on llvmpipe a fill of memory, where ImGui's
+    // background is a textured, blended quad over ~700k pixels at UI scale
+    // 2 on 1080p): the panel then draws no background of its own.
+    bool backgroundCleared = false;
 };
 
 // Where the panel starts, in window (ImGui) units: top left, 340 x the UI

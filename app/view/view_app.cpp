@@ -19,6 +19,8 @@
 #define GLFW_INCLUDE_NONE  // gl_api.h declares the GL functions
 #include <GLFW/glfw3.h>
 
+#include <imgui.h>  // the panel's background colour
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -221,6 +223,7 @@ void ViewApp::frame() {
     const int covered[4] = {int(std::ceil(panelNow.x0)), int(std::ceil(panelNow.y0)), int(std::floor(panelNow.x1)),
                             int(std::floor(panelNow.y1))};
     picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr);
+    panelSteady_ = panelSteady;
     endPart(FrameParts::Present);
     const std::vector<OverlaySegment> rays = pickedRays();
     const std::vector<OverlayLabel> labels = sideBySideLabels();
@@ -527,6 +530,7 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     info.currentPreset = currentPreset();
     info.uiScale = scale;
     info.status = status_;
+    info.backgroundCleared = panelSteady_;
     if (state_.showHelp)  // the help has the window (below); the panel comes back when it closes
         panelRects_ = {};
     else
@@ -578,6 +582,17 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         layout_.add("wipe right name", LayoutBox::Kind::Widget, toPixels(wipeLabels.right));
     }
     endPart(FrameParts::UiBuild);
+    if (panelSteady_ && !panelRects_.panel.empty()) {  // the panel's background, as a clear (PanelInfo::backgroundCleared)
+        const LayoutRect r = toPixels(panelRects_.panel);
+        const int x0 = int(std::floor(r.x0)), x1 = int(std::ceil(r.x1)), y0 = int(std::floor(r.y0)), y1 = int(std::ceil(r.y1));
+        const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        gl::Enable(GL_SCISSOR_TEST);
+        gl::Scissor(x0, fbHeight_ - y1, x1 - x0, y1 - y0);
+        gl::ClearColor(bg.x, bg.y, bg.z, 1.0f);
+        gl::Clear(GL_COLOR_BUFFER_BIT);
+        gl::Disable(GL_SCISSOR_TEST);
+    }
     ui_->endFrame();
 
     if (!captionPlaced_.box.empty()) {

@@ -211,6 +211,7 @@ private:
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
     LayoutRect steadyPanel_;     // the panel, framebuffer pixels, where the last two frames drew it; empty: it moved
     float steadyScale_ = 0;      // the UI scale of the last frame
+    bool panelSteady_ = false;   // this frame: the picture not presented under the panel; its background cleared
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
