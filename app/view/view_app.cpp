@@ -216,10 +216,17 @@ void ViewApp::frame() {
     // last two frames and no hand moves it; the picture's own screenshot
     // needs them all.
     const LayoutRect panelNow = panelPixels();
+    // Anything that may move, fold or resize the panel this frame (a hand on
+    // it or over it, a new window size or UI scale, the help taking the
+    // window) starts the count again: two quiet frames first.
+    const bool touched = panelOwnsButton_[0] || panelOwnsButton_[1] || panelOwnsButton_[2] || ui_->wantsMouse() ||
+                         state_.showHelp || steadyScale_ != ui_->scale() || steadyWidth_ != fbWidth_ ||
+                         steadyHeight_ != fbHeight_;
+    quietFrames_ = touched ? 0 : quietFrames_ + 1;
+    steadyWidth_ = fbWidth_, steadyHeight_ = fbHeight_;
     const bool panelSteady = !panelNow.empty() && panelNow.x0 == steadyPanel_.x0 && panelNow.y0 == steadyPanel_.y0 &&
-                             panelNow.x1 == steadyPanel_.x1 && panelNow.y1 == steadyPanel_.y1 &&
-                             !panelOwnsButton_[0] && !panelOwnsButton_[1] && !panelOwnsButton_[2] &&
-                             pendingShot_.empty() && steadyScale_ == ui_->scale() && !panelRects_.panel.empty();
+                             panelNow.x1 == steadyPanel_.x1 && panelNow.y1 == steadyPanel_.y1 && quietFrames_ >= 2 &&
+                             pendingShot_.empty() && !panelRects_.panel.empty();
     const int covered[4] = {int(std::ceil(panelNow.x0)), int(std::ceil(panelNow.y0)), int(std::floor(panelNow.x1)),
                             int(std::floor(panelNow.y1))};
     picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr);

@@ -211,6 +211,8 @@ private:
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
     LayoutRect steadyPanel_;     // the panel, framebuffer pixels, where the last two frames drew it; empty: it moved
     float steadyScale_ = 0;      // the UI scale of the last frame
+    int steadyWidth_ = 0, steadyHeight_ = 0;  // the framebuffer size of the last frame
+    int quietFrames_ = 0;        // frames since the panel could last have moved, folded or resized
     bool panelSteady_ = false;   // this frame: the picture not presented under the panel; its background cleared
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
