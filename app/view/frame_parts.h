@@ -6,8 +6,11 @@
 //
 // On a software renderer (llvmpipe) GL calls only queue work: it runs on
 // llvmpipe's threads at the next flush. So that each part is charged with
-// its own pixels, the window finishes the GL queue at each part's end when
-// `--stats` is given (finish()); without it nothing waits.
+// its own pixels, the window finishes the GL queue at each part's end, with
+// `--stats` only and on every kProfileEvery-th frame only: each finish
+// wakes llvmpipe's threads, which on a loaded machine costs frame rate.
+// The parts are the medians of those frames; the frame rate (swap to swap)
+// is every frame's.
 #pragma once
 
 #include <array>
@@ -34,6 +37,10 @@ public:
     static const char* name(Part p);
 
     using Clock = std::chrono::steady_clock;
+    static constexpr int kProfileEvery = 4;
+
+    // This frame's parts are timed (the GL queue finished at each part's end).
+    bool profiled() const { return frame_ % kProfileEvery == 0; }
 
     // Starts a frame's first part.
     void begin() { last_ = Clock::now(), current_.fill(0.0); }
@@ -43,18 +50,20 @@ public:
         current_[p] += std::chrono::duration<double, std::milli>(now - last_).count();
         last_ = now;
     }
-    // The frame is done: its parts go to the run's lists (`moving`: a drag's frame).
+    // The frame is done: its parts go to the run's lists where it was
+    // profiled (`moving`: a drag's frame), its swap to the frame rate's.
     void end(bool moving);
     // One line a part, "render 12.3 ms (moving) / 140.1 ms (all)", for --stats.
     std::string summary() const;
-    // The median of part `p` over the moving frames (0 when none).
+    // The median of part `p` over the profiled moving frames (0 when none).
     double movingMedian(Part p) const;
     // The median time between the swaps of consecutive moving frames: the
     // frame rate the audience sees, events and idle waits included.
     double movingIntervalMs() const;
-    std::size_t movingFrames() const { return moving_[0].size(); }
+    std::size_t movingFrames() const { return intervals_.size(); }
 
 private:
+    long frame_ = 0;  // frames ended, moving or not
     Clock::time_point last_{};
     std::array<double, kCount> current_{};
     std::array<std::vector<double>, kCount> moving_, all_;

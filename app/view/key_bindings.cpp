@@ -12,7 +12,7 @@ namespace rl {
 
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> table = {
-        {GLFW_KEY_H, false, Action::ToggleHelp, 0, "H", "show / hide this help"},
+        {GLFW_KEY_H, false, Action::ToggleHelp, 0, "H", "show this help; again: its next page, after the last: hide it"},
         {GLFW_KEY_TAB, false, Action::TogglePanel, 0, "Tab", "show / hide the panel (a clean picture to project)"},
         {GLFW_KEY_K, false, Action::ToggleCaptions, 0, "K", "caption and colour bar on the picture on / off"},
         {GLFW_KEY_I, false, Action::TogglePickMode, 0, "I", "pick mode: a click asks the pixel (Ctrl+click always does)"},

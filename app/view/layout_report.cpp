@@ -14,7 +14,8 @@ namespace {
 // 13 pixels at UI scale 1).
 constexpr float kSlack = 0.5f;
 
-const char* const kKindNames[] = {"widget", "line", "part", "subject", "tool"};
+const char* const kKindNames[] = {"widget", "line", "part", "subject", "tool", "cover"};
+constexpr int kKinds = 6;
 
 std::string number(float v) {
     char text[32];
@@ -53,7 +54,9 @@ std::vector<std::string> layoutProblems(const LayoutReport& report) {
         for (const LayoutBox& p : boxes)
             if (p.name == b.parent) {
                 found = true;
-                if (b.rect.x0 < p.rect.x0 - kSlack || b.rect.x1 > p.rect.x1 + kSlack)
+                // In a cover (the help: it never scrolls) rows beyond its height are cut too.
+                const bool rowsCut = p.kind == K::Cover && (b.rect.y0 < p.rect.y0 - kSlack || b.rect.y1 > p.rect.y1 + kSlack);
+                if (b.rect.x0 < p.rect.x0 - kSlack || b.rect.x1 > p.rect.x1 + kSlack || rowsCut)
                     out.push_back(b.name + " is cut by " + p.name + ": " + describe(b.rect) + " in " + describe(p.rect));
             }
         if (!found) out.push_back(b.name + ": no " + b.parent + " in the report");
@@ -68,6 +71,8 @@ std::vector<std::string> layoutProblems(const LayoutReport& report) {
             if (aSubject && bSubject) continue;                          // spheres may hide each other
             if (a.kind == K::Line && b.kind == K::Line) continue;        // the divider's own pieces
             if ((aSubject && b.kind != K::Widget) || (bSubject && a.kind != K::Widget)) continue;
+            // The cover hides what is under it; only the tools (the panel) must stay clear of it.
+            if ((a.kind == K::Cover && b.kind != K::Tool) || (b.kind == K::Cover && a.kind != K::Tool)) continue;
             if (shrunk(a.rect).overlaps(shrunk(b.rect)))
                 out.push_back(a.name + " overlaps " + b.name + ": " + describe(a.rect) + " and " + describe(b.rect));
         }
@@ -103,7 +108,7 @@ LayoutReport parseLayoutJson(const std::string& text, const std::string& origin)
             box.name = b.at("name").get<std::string>();
             const std::string kind = b.at("kind").get<std::string>();
             bool known = false;
-            for (int k = 0; k < 5; ++k)
+            for (int k = 0; k < kKinds; ++k)
                 if (kind == kKindNames[k]) {
                     box.kind = LayoutBox::Kind(k);
                     known = true;

@@ -29,6 +29,8 @@ struct LayoutBox {
         Subject,  // a sphere on screen: what the widgets must leave visible
         Tool,     // the panel, a toast: clear of widgets and inside the window; may cover spheres
                   // (the lecturer shows or hides the panel; a toast goes after 3 s)
+        Cover,    // the help: opaque, over the picture and its overlays (which it hides, not
+                  // overlaps); clear of the tools, inside the window, its parts whole (no scrolling)
     };
     std::string name;  // "caption", "errors", "panel", "sphere 3", ...
     Kind kind = Kind::Widget;

@@ -3,9 +3,11 @@
 #include "view/key_bindings.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // BringWindowToDisplayFront, the rows' extent
 
 #include <algorithm>
 #include <cfloat>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,8 +25,6 @@ constexpr float kToastAlpha = 0.75f;
 // The error box never covers more than 60% of the window's height: the
 // picture that is still running stays visible above it (it scrolls).
 constexpr float kMaxErrorHeight = 0.6f;
-// The help never exceeds 95% of the window (it scrolls): its edges stay visible.
-constexpr float kMaxHelpSize = 0.95f;
 // The wipe: a 2-pixel line is visible from the back of the room and hides
 // little; labels sit 6 pixels from it in a dark box of 6 pixels padding.
 constexpr float kDividerWidth = 2.0f;
@@ -34,66 +34,123 @@ const ImGuiWindowFlags kOverlayFlags = ImGuiWindowFlags_NoDecoration | ImGuiWind
                                        ImGuiWindowFlags_NoNav;
 }  // namespace
 
-void drawHelpOverlay(bool& open) {
-    if (!open) return;
+HelpRects drawHelpOverlay(bool& open, int& page, int& pages, float uiScale, LayoutRect area) {
+    if (!open) return {};
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(viewport->GetCenter(), ImGuiCond_Always, ImVec2(0.5f, 0.5f));  // centred
-    ImGui::SetNextWindowBgAlpha(kReadableAlpha);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
-                                        ImVec2(viewport->Size.x * kMaxHelpSize, viewport->Size.y * kMaxHelpSize));
-    if (ImGui::Begin(
-            "Keys and mouse (H or Escape closes)", &open,
-            ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
-        // Every row: the input, what it does. Keys with no text of their own
-        // (F2..F8) are listed under the first of their group.
-        std::vector<std::pair<const char*, const char*>> rows;
-        for (const MouseBinding& m : mouseBindings()) rows.push_back({m.input, m.what});
-        for (const KeyBinding& k : keyBindings())
-            if (*k.what) rows.push_back({k.keys, k.what});
-        // As many column pairs (up to 3) as it takes to fit the window: the
-        // help never scrolls where it can spread sideways. Where no count of
-        // pairs fits at the UI scale (at 2 on 1920x1080 three pairs are
-        // wider than the window), the text shrinks until one does: the help
-        // is for the lecturer, who reads it close up.
-        ImGui::SetWindowFontScale(1.0f);  // measured at the UI scale (the window keeps last frame's factor)
-        const ImGuiStyle& style = ImGui::GetStyle();
-        const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
-        const float availableHeight = viewport->Size.y * kMaxHelpSize - 4 * lineHeight;  // title and padding
-        const float availableWidth = viewport->Size.x * kMaxHelpSize - 2 * style.WindowPadding.x;
-        float keyWidth = 0, whatWidth = 0;
-        for (const auto& row : rows) {
-            keyWidth = std::max(keyWidth, ImGui::CalcTextSize(row.first).x);
-            whatWidth = std::max(whatWidth, ImGui::CalcTextSize(row.second).x);
-        }
-        const float pairWidth = keyWidth + whatWidth + 2 * (2 * style.CellPadding.x + style.ItemSpacing.x);
+    const float margin = kMargin * uiScale;
+    if (area.empty()) area = {margin, margin, viewport->Size.x - margin, viewport->Size.y - margin};
+    // Every row: the input, what it does. Keys with no text of their own
+    // (F2..F8) are listed under the first of their group.
+    using Row = std::pair<const char*, const char*>;
+    std::vector<Row> rows;
+    for (const MouseBinding& m : mouseBindings()) rows.push_back({m.input, m.what});
+    for (const KeyBinding& k : keyBindings())
+        if (*k.what) rows.push_back({k.keys, k.what});
+    const ImGuiStyle& style = ImGui::GetStyle();
+    // Measured at the UI scale: the font as the panel's (FontGlobalScale).
+    const float lineHeight = ImGui::GetTextLineHeight() + style.ItemSpacing.y;
+    const float cellGap = 2 * style.CellPadding.x + style.ItemSpacing.x;  // at least what a table puts between columns
+    const float width = area.x1 - area.x0 - 2 * style.WindowPadding.x;
+    // The title bar, the padding, the footer line and a line's slack (the
+    // table's own spacing between rows).
+    const float height = area.y1 - area.y0 - ImGui::GetFrameHeight() - 2 * style.WindowPadding.y - 3 * lineHeight;
+    float keyWidth = 0, whatWidth = 0;
+    for (const Row& row : rows) {
+        keyWidth = std::max(keyWidth, ImGui::CalcTextSize(row.first).x);
+        whatWidth = std::max(whatWidth, ImGui::CalcTextSize(row.second).x);
+    }
+    // A layout: `groups` column pairs, the key column at most a third of a
+    // pair (its long names, "left drag on the divider", wrap too), the
+    // descriptions wrapped in the rest; rows fill a column to the height,
+    // then the next column, then the next page.
+    struct Layout {
         int groups = 1;
-        float fontScale = 0;
-        for (int g = 1; g <= 3; ++g) {
-            const int perColumn = (int(rows.size()) + g - 1) / g;
-            const float fits = std::min({1.0f, availableWidth / (float(g) * pairWidth),
-                                         availableHeight / (float(perColumn) * lineHeight)});
-            if (fits > fontScale + 1e-3f) {
-                fontScale = fits;
-                groups = g;
+        float keyWrap = 0, wrap = 0;
+        std::vector<std::vector<std::vector<std::size_t>>> pages;  // page -> column -> rows
+    };
+    auto layOut = [&](int groups) {
+        Layout l;
+        l.groups = groups;
+        const float pair = width / float(groups);
+        l.keyWrap = std::min(keyWidth, std::max(4 * ImGui::GetFontSize(), (pair - 2 * cellGap) / 3));
+        l.wrap = std::min(whatWidth, pair - l.keyWrap - 2 * cellGap);
+        if (l.wrap < 10 * ImGui::GetFontSize() && groups > 1) return l;  // too narrow: no pages, not chosen
+        l.pages.push_back({{}});
+        float used = 0;
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const float h = std::max(ImGui::CalcTextSize(rows[i].first, nullptr, false, l.keyWrap).y,
+                                     ImGui::CalcTextSize(rows[i].second, nullptr, false, l.wrap).y) +
+                            style.ItemSpacing.y + 2 * style.CellPadding.y;
+            if (!l.pages.back().back().empty() && used + h > height) {
+                used = 0;
+                if (int(l.pages.back().size()) == groups) l.pages.push_back({});
+                l.pages.back().push_back({});
             }
+            used += h;
+            l.pages.back().back().push_back(i);
         }
-        ImGui::SetWindowFontScale(std::max(fontScale, 0.5f));  // below half a line, scrolling is better than shrinking
-        const int perGroup = (int(rows.size()) + groups - 1) / groups;
+        return l;
+    };
+    // The fewest pages; of those, the fewest columns (the widest descriptions).
+    Layout layout = layOut(1);
+    for (int g = 2; g <= 3; ++g) {
+        Layout l = layOut(g);
+        if (!l.pages.empty() && l.pages.size() < layout.pages.size()) layout = std::move(l);
+    }
+    pages = int(layout.pages.size());
+    page = std::clamp(page, 0, pages - 1);
+    const auto& columns = layout.pages[std::size_t(page)];
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 0.5f * (area.x0 + area.x1), viewport->Pos.y + area.y0),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.0f));  // centred in the area, at its top
+    ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: nothing under it shows through its text
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(area.x1 - area.x0, area.y1 - area.y0));
+    HelpRects out;
+    // Short: at UI scale 3 the title bar is narrow.
+    const std::string title = pages > 1 ? "Keys " + std::to_string(page + 1) + "/" + std::to_string(pages) + "###help"
+                                        : std::string("Keys###help");
+    if (ImGui::Begin(title.c_str(), &open,
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                         ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoFocusOnAppearing)) {
+        ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());  // over the error box and the toast
+        const ImVec2 o = viewport->Pos;
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        out.box = {pos.x - o.x, pos.y - o.y, pos.x - o.x + size.x, pos.y - o.y + size.y};
+        // The texts' own rectangles (a table clips what does not fit its
+        // column, so the table's extent would hide a cut).
+        out.rows = {out.box.x1, out.box.y1, out.box.x0, out.box.y0};
+        auto text = [&](const char* t, float wrapWidth) {
+            ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrapWidth);
+            ImGui::TextUnformatted(t);
+            ImGui::PopTextWrapPos();
+            const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+            out.rows = {std::min(out.rows.x0, a.x - o.x), std::min(out.rows.y0, a.y - o.y),
+                        std::max(out.rows.x1, b.x - o.x), std::max(out.rows.y1, b.y - o.y)};
+        };
+        std::size_t tallest = 0;
+        for (const auto& c : columns) tallest = std::max(tallest, c.size());
+        const int groups = int(columns.size());
         if (ImGui::BeginTable("##help", 2 * groups, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_PadOuterX)) {
-            for (int r = 0; r < perGroup; ++r) {
+            for (int g = 0; g < groups; ++g) {
+                ImGui::TableSetupColumn(nullptr, ImGuiTableColumnFlags_WidthFixed, layout.keyWrap);
+                ImGui::TableSetupColumn(nullptr, ImGuiTableColumnFlags_WidthFixed, layout.wrap);
+            }
+            for (std::size_t r = 0; r < tallest; ++r) {
                 ImGui::TableNextRow();
-                for (int g = 0; g < groups; ++g) {
-                    const int index = g * perGroup + r;
+                for (const auto& c : columns) {
                     ImGui::TableNextColumn();
-                    if (index < int(rows.size())) ImGui::TextUnformatted(rows[std::size_t(index)].first);
+                    if (r < c.size()) text(rows[c[r]].first, layout.keyWrap);
                     ImGui::TableNextColumn();
-                    if (index < int(rows.size())) ImGui::TextUnformatted(rows[std::size_t(index)].second);
+                    if (r < c.size()) text(rows[c[r]].second, layout.wrap);
                 }
             }
             ImGui::EndTable();
         }
+        ImGui::PushStyleColor(ImGuiCol_Text, style.Colors[ImGuiCol_TextDisabled]);
+        text(page + 1 < pages ? "H: next page" : "H: close", width);
+        ImGui::PopStyleColor();
     }
     ImGui::End();
+    return out;
 }
 
 LayoutRect drawErrorOverlay(const std::vector<std::string>& errors, float uiScale, LayoutRect area, bool atTop) {

@@ -11,8 +11,16 @@
 
 namespace rl {
 
-// Every key and mouse action, from key_bindings.h, centred on the window.
-void drawHelpOverlay(bool& open);
+// Every key and mouse action, from key_bindings.h, at the UI scale, opaque,
+// inside `area` (window units; empty: the window less the margins): as many
+// column pairs as fit unwrapped, else one pair with the descriptions
+// wrapped, and in pages where the rows do not fit the height (`page` of
+// `pages`, H turns them). Nothing scrolls or is cut. Returns the box drawn
+// and the rows' extent (window units), empty when closed.
+struct HelpRects {
+    LayoutRect box, rows;
+};
+HelpRects drawHelpOverlay(bool& open, int& page, int& pages, float uiScale, LayoutRect area = {});
 
 // One box, red, with every current error (already formatted:
 // "exercises: shaders/x.glsl:12: error: ..."), inside `area` (window units):

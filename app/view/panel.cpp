@@ -5,10 +5,12 @@
 #include "view/presets.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the widest row (the layout report)
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iterator>
 #include <string>
@@ -46,7 +48,10 @@ bool editDouble(const char* label, double& value, float min, float max, const ch
 bool editColour(const char* label, glm::dvec3& colour) {
     float c[3] = {float(colour.x), float(colour.y), float(colour.z)};
     // Float: the values are linear reflectances/colours in [0, 1], shown as such.
-    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float)) return false;
+    // Where three numbers do not fit (UI scale 3 on 1280 px), the swatch
+    // alone: a click on it opens the picker with the numbers.
+    const bool narrow = ImGui::CalcItemWidth() < 12.0f * ImGui::GetFontSize();
+    if (!ImGui::ColorEdit3(label, c, ImGuiColorEditFlags_Float | (narrow ? ImGuiColorEditFlags_NoInputs : 0))) return false;
     colour = {c[0], c[1], c[2]};
     return true;
 }
@@ -61,20 +66,45 @@ bool editPosition(const char* label, glm::dvec3& p) {
 
 void frameSection(ViewState& state, const PanelInfo& info) {
     if (!ImGui::CollapsingHeader("Frame", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    if (info.frameMs > 0)
-        ImGui::Text("%.1f ms per frame (%.1f fps)", info.frameMs, 1000.0 / info.frameMs);
+    if (info.frameMs > 0)  // short: at UI scale 3 on 1280x720 "ms per frame (0.3 fps)" was cut to "(0.3"
+        ImGui::Text("%.1f fps, %.0f ms a frame", 1000.0 / info.frameMs, info.frameMs);
     else
         ImGui::TextDisabled("no frame measured yet");
     if (info.gpuMs > 0) ImGui::Text("GPU %.1f ms (timer query)", info.gpuMs);
     ImGui::Text("%d x %d", info.renderWidth, info.renderHeight);
-    if (info.renderWidth != info.windowWidth) {
-        ImGui::SameLine();
+    if (info.renderWidth != info.windowWidth)  // a line of its own: beside the size it was cut at UI scale 3
         ImGui::TextDisabled("(moving; window %d x %d)", info.windowWidth, info.windowHeight);
-    }
-    ImGui::Checkbox("lower resolution while moving", &state.adaptiveResolution);
+    ImGui::Checkbox("adaptive resolution", &state.adaptiveResolution);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("fewer pixels while the camera or a value moves (30 fps)");
     ImGui::Checkbox("render every frame", &state.continuous);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off: render only when something changes (quiet laptop fans).");
+    ImGui::PushTextWrapPos(0.0f);  // the renderer's name wraps at the panel's edge
     ImGui::TextDisabled("%s", info.device.c_str());
+    ImGui::PopTextWrapPos();
+}
+
+// A section's header: its name and, where the row has room, its detail
+// ("Presets (course figures)"); at UI scale 3 on 1280 px the details were cut.
+bool header(const char* name, const char* detail, ImGuiTreeNodeFlags flags = 0) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing();
+    const std::string full = std::string(name) + detail;
+    const std::string shown = ImGui::CalcTextSize(full.c_str()).x <= room ? full : std::string(name);
+    return ImGui::CollapsingHeader((shown + "###" + name).c_str(), flags);
+}
+
+// A tree node's label from its parts, as many as fit the row (a label
+// does not wrap: at UI scale 1 "<- asked pixel" was cut at the panel's edge);
+// the first part always, a part that does not fit shortened to its arrow.
+std::string fitLabel(const std::vector<std::string>& parts) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing();
+    std::string label;
+    for (const std::string& part : parts) {
+        if (label.empty() || ImGui::CalcTextSize((label + part).c_str()).x <= room)
+            label += part;
+        else if (part.find("<-") != std::string::npos && ImGui::CalcTextSize((label + "  <-").c_str()).x <= room)
+            label += "  <-";
+    }
+    return label;
 }
 
 LayoutRect itemRect() {
@@ -100,8 +130,10 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out, PanelR
     ImGui::TextUnformatted("view");
     ImGui::SetNextItemWidth(-FLT_MIN);
     // The whole name where it fits, else the key and the short name ("3  F(v.h)").
-    static const char* const kShortNames[] = {"final picture", "D", "G", "F(v.h)", "diffuse", "specular",
-                                              "n.l", "shadow", "normals", "bounce k", "F(n.v)"};
+    static const char* const kShortNames[] = {"final picture", "D",          "G",           "F(v.h)",
+                                              "diffuse",       "specular",   "n.l",         "shadow",
+                                              "normals",       "bounce k",   "F(n.v)",      "E(n) / pi",
+                                              "prefiltered",   "split scale", "split bias"};
     const float room = ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().FramePadding.x;
     std::string preview = names[std::size_t(current)];
     if (ImGui::CalcTextSize(preview.c_str()).x > room && current < int(std::size(kShortNames)))
@@ -125,7 +157,8 @@ void viewSection(ViewState& state, const Scene& scene, ViewRequests& out, PanelR
             }
         ImGui::EndCombo();
     }
-    ImGui::Checkbox("caption and colour bar (K)", &state.showCaptions);
+    ImGui::Checkbox("caption (K)", &state.showCaptions);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the caption and colour bar on the picture");
     if (state.view == View::Bounce) {
         // One past max bounces: "beyond the limit it is black", shown live.
         if (ImGui::SliderInt("bounce k", &state.viewBounce, 0, std::max(scene.render.maxBounces, 0) + 1, "%d", kClamp))
@@ -170,7 +203,7 @@ void renderSection(Scene& scene, ViewRequests& out) {
 // The model variants (docs/model-variants.md). A change of model is the one
 // panel edit that recompiles: each variant is compiled in only when used.
 void modelSection(Scene& scene, ViewRequests& out) {
-    if (!ImGui::CollapsingHeader("Model (recompiles)")) return;
+    if (!header("Model", " (recompiles)")) return;
     ShadingModel& m = scene.model;
     auto choose = [&](const char* label, auto& value, std::initializer_list<const char*> names) {
         int index = int(value);
@@ -186,17 +219,39 @@ void modelSection(Scene& scene, ViewRequests& out) {
     choose("F", m.fresnel, {"Schlick", "exact dielectric", "exact conductor"});
     choose("diffuse", m.diffuse, {"Lambert", "Burley"});
     ImGui::EndDisabled();
-    out.sceneEdited |= ImGui::Checkbox("Blinn-Phong (course comparison)", &m.blinnPhong);
+    out.sceneEdited |= ImGui::Checkbox("Blinn-Phong", &m.blinnPhong);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the course comparison model");
     if (!m.isReference() && ImGui::Button("back to the reference model")) {
         m = ShadingModel{};
         out.sceneEdited = true;
     }
 }
 
+// Text wrapped at the panel's edge, a word longer than the row (a path,
+// a formula) broken where the row ends: ImGui wraps at spaces only, and at
+// UI scale 3 a path ran past the panel's edge, cut.
+void textBrokenAnywhere(const std::string& text) {
+    const float room = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize());
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.size();
+        if (ImGui::CalcTextSize(text.c_str() + at, text.c_str() + end).x > room) {
+            // The longest prefix that fits, ended at its last space where it has one.
+            std::size_t fit = at + 1;
+            while (fit < text.size() && ImGui::CalcTextSize(text.c_str() + at, text.c_str() + fit + 1).x <= room) ++fit;
+            const std::size_t space = text.rfind(' ', fit);
+            end = space != std::string::npos && space > at ? space : fit;
+        }
+        ImGui::TextUnformatted(text.c_str() + at, text.c_str() + end);
+        at = end;
+        while (at < text.size() && text[at] == ' ') ++at;
+    }
+}
+
 void pickedSection(ViewState& state, PanelRects* rects) {
     if (state.pickedText.empty()) return;
     if (state.revealPicked) ImGui::SetNextItemOpen(true);
-    const bool open = ImGui::CollapsingHeader("Asked pixel (Ctrl+click, I)");
+    const bool open = header("Asked pixel", " (Ctrl+click, I)");
     if (state.revealPicked) ImGui::SetScrollHereY(0.0f);  // the panel opens at the answer
     if (!open) return;
     // The answer first, wrapped to the panel: the first difference (or that
@@ -212,7 +267,7 @@ void pickedSection(ViewState& state, PanelRects* rects) {
         if (!bad && line.rfind("this pixel agrees", 0) != 0 && line.rfind("checker,", 0) != 0) continue;
         ImGui::PushStyleColor(ImGuiCol_Text, bad ? ImVec4(1.0f, 0.35f, 0.35f, 1.0f) : ImVec4(0.6f, 1.0f, 0.6f, 1.0f));
         if (line.rfind("checker,", 0) == 0) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.5f, 1.0f));
-        ImGui::TextWrapped("%s", line.c_str());
+        textBrokenAnywhere(line);
         ImGui::PopStyleColor(line.rfind("checker,", 0) == 0 ? 2 : 1);
     }
     // Its own scrolling box: two lights and two bounces are ~25 lines.
@@ -262,8 +317,10 @@ void materialsSection(Scene& scene, ViewState& state, ViewRequests& out) {
         if (picked && state.revealPicked) ImGui::SetNextItemOpen(true);  // opened; the panel scrolls to the answer
         // The asked pixel's sphere is selected: highlighted, and marked.
         // Named as the scene file's errors name them (spheres[0] is the first).
-        if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "spheres[%zu]  rough %.2f  metal %.2f%s",
-                              i, m.roughness, m.metallic, picked ? "  <- asked pixel" : "")) {
+        char values[64];
+        std::snprintf(values, sizeof values, "  rough %.2f  metal %.2f", m.roughness, m.metallic);
+        const std::string label = fitLabel({"spheres[" + std::to_string(i) + "]", values, picked ? "  <- asked pixel" : ""});
+        if (ImGui::TreeNodeEx("sphere", picked ? ImGuiTreeNodeFlags_Selected : 0, "%s", label.c_str())) {
             out.sceneEdited |= editColour("albedo", m.albedo);
             out.sceneEdited |= editDouble("roughness", m.roughness, 0.0f, 1.0f);
             out.sceneEdited |= editDouble("metallic", m.metallic, 0.0f, 1.0f);
@@ -279,7 +336,8 @@ void lightsSection(Scene& scene, ViewRequests& out) {
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         Light& l = scene.lights[i];
         ImGui::PushID(int(i));
-        if (ImGui::TreeNode("light", "lights[%zu]%s", i, i == 0 ? "  (key light of the term views)" : "")) {
+        const std::string label = fitLabel({"lights[" + std::to_string(i) + "]", i == 0 ? "  (key light of the term views)" : ""});
+        if (ImGui::TreeNode("light", "%s", label.c_str())) {
             out.sceneEdited |= editPosition("position", l.position);
             out.sceneEdited |= editColour("colour", l.color);
             out.sceneEdited |=
@@ -294,7 +352,7 @@ void lightsSection(Scene& scene, ViewRequests& out) {
 // values the program reads as uniforms: dragging them never recompiles.
 void environmentSection(Scene& scene, ViewRequests& out) {
     if (!scene.environment) return;
-    if (!ImGui::CollapsingHeader("Environment (sky light)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!header("Environment", " (sky light)", ImGuiTreeNodeFlags_DefaultOpen)) return;
     Environment& e = *scene.environment;
     ImGui::TextDisabled("%s", e.file.c_str());
     out.sceneEdited |= editDouble("env intensity", e.intensity, kPanelMinEnvIntensity, kPanelMaxEnvIntensity,
@@ -304,7 +362,7 @@ void environmentSection(Scene& scene, ViewRequests& out) {
 }
 
 void presetsSection(Scene& scene, const Scene& fromFile, const PanelInfo& info, ViewRequests& out) {
-    if (!ImGui::CollapsingHeader("Presets (course figures)")) return;
+    if (!header("Presets", " (course figures)")) return;
     const char* group = "";
     for (const SettingPreset& p : settingPresets()) {
         if (std::strcmp(group, p.group) != 0) {
@@ -342,7 +400,8 @@ void sceneSection(ViewState& state, const PanelInfo& info, ViewRequests& out) {
     char path[512];
     std::snprintf(path, sizeof path, "%s", state.savePath.c_str());
     if (ImGui::InputText("save as", path, sizeof path)) state.savePath = path;
-    ImGui::Checkbox("with the current view as its camera", &state.saveCamera);
+    ImGui::Checkbox("with this camera", &state.saveCamera);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("save the current view as the scene's camera");
     if (ImGui::Button("Save (Ctrl+S)")) out.save = true;
     ImGui::TextDisabled("only changed values are written; the file's layout stays");
     if (state.askOverwrite) ImGui::OpenPopup("Overwrite a bundled scene?");
@@ -456,7 +515,10 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
     const char* title = "raylab  (H: keys, Tab: hide)";
     if (ImGui::CalcTextSize(title).x > titleRoom) title = "raylab (H, Tab)";
     const std::string titleId = std::string(title) + "###raylab-panel";
-    if (ImGui::Begin(titleId.c_str(), &state.showPanel)) {
+    if (info.backgroundCleared) ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0, 0, 0, 0));  // ImGui skips it
+    const bool shown = ImGui::Begin(titleId.c_str(), &state.showPanel);
+    if (info.backgroundCleared) ImGui::PopStyleColor();
+    if (shown) {
         if (rects) {
             rects->panel = windowRect();
             const LayoutRect& p = rects->panel;
@@ -471,10 +533,12 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         // panel is 576 px: 351 for the labels, 200 for the widgets).
         if (ImGui::SmallButton("<< strip")) state.panelStrip = true;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("fold the panel to a narrow strip (presenter layout)");
-        ImGui::PushItemWidth(std::max(6.0f * ImGui::GetFontSize(),
+        ImGui::PushItemWidth(std::max(4.5f * ImGui::GetFontSize(),
                                       ImGui::GetContentRegionAvail().x - 9.0f * ImGui::GetFontSize()));
-        frameSection(state, info);
+        ImGui::PushTextWrapPos(0.0f);  // every text wraps at the panel's edge (at UI scale 3 on 1280 px "(0.3 fps" was cut)
+        // The view first: at UI scale 3 on 1280x720 it was below the fold.
         viewSection(state, scene, out, rects);
+        frameSection(state, info);
         compareSection(state, info, out);
         displaySection(scene, out);
         renderSection(scene, out);
@@ -488,7 +552,15 @@ ViewRequests drawPanel(Scene& scene, const Scene& fromFile, ViewState& state, co
         sceneSection(state, info, out);
         interfaceSection(info, out);
         if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
+        ImGui::PopTextWrapPos();
         ImGui::PopItemWidth();
+        if (rects) {  // the widest row against the room for it (a text wider than the panel is cut at its edge)
+            const ImGuiWindow* w = ImGui::GetCurrentWindow();
+            const ImVec2 o = viewport->Pos;
+            rects->content = {w->WorkRect.Min.x - o.x, w->InnerClipRect.Min.y - o.y, w->WorkRect.Max.x - o.x,
+                              w->InnerClipRect.Max.y - o.y};
+            rects->rows = {rects->content.x0, rects->content.y0, w->DC.CursorMaxPos.x - o.x, rects->content.y1};
+        }
     }
     ImGui::End();
     return out;

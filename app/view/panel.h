@@ -25,6 +25,11 @@ struct PanelInfo {
     int currentPreset = -1;  // index into presets, -1 when the scene is none of them
     float uiScale = 1;
     std::string status;  // the last save or screenshot, one line
+    // The window clears the panel's rectangle to its background colour
+    // itself (a scissored clear: on llvmpipe a fill of memory, where ImGui's
+    // background is a textured, blended quad over ~700k pixels at UI scale
+    // 2 on 1080p): the panel then draws no background of its own.
+    bool backgroundCleared = false;
 };
 
 // Where the panel starts, in window (ImGui) units: top left, 340 x the UI
@@ -44,6 +49,8 @@ struct PanelRects {
     LayoutRect viewCombo;   // the teaching view's dropdown: the room for its text
     LayoutRect viewText;    // the current view's name in it, whole
     LayoutRect askedPixel;  // the asked pixel's box
+    LayoutRect content;     // the room for the rows: the panel less its padding and scroll bar
+    LayoutRect rows;        // the rows as drawn: from content's left to the right edge of the widest (cut beyond content)
 };
 
 // Draws the panel (when state.showPanel) and returns what the user asked for.

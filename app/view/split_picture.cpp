@@ -57,7 +57,7 @@ void SplitPicture::renderSideBySide(const ShaderProgram* left, const ShaderProgr
 }
 
 void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame,
-                          int splitX) {
+                          int splitX, int rows0, int rows1) {
     sideBySide_ = false;
     offset_ = 0;
     width_ = frame.width;
@@ -69,7 +69,8 @@ void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right,
         drawn_[i] = programs[i] && x1[i] > x0[i];
         if (!drawn_[i]) continue;
         gl::Enable(GL_SCISSOR_TEST);
-        gl::Scissor(x0[i], 0, x1[i] - x0[i], height_);
+        const int y0 = std::clamp(rows0, 0, height_), y1 = rows1 < 0 ? height_ : std::clamp(rows1, y0, height_);
+        gl::Scissor(x0[i], y0, x1[i] - x0[i], y1 - y0);
         sides_[i].draw(*programs[i], frame);
         gl::Disable(GL_SCISSOR_TEST);
     }
@@ -130,6 +131,31 @@ void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box)
     }
     if (width_ == 0 || height_ == 0) return;
     const bool sameSize = width_ == windowWidth && height_ == windowHeight;
+    if (sameSize && !sideBySide_ && refinedRows_ >= 0 && refinedRows_ < height_) {
+        // Refining: the last reduced picture, upscaled from its 8-bit copy
+        // (not refreshed: the targets are full size now), then the bands
+        // done, 1:1, over it.
+        toWindow();
+        if (upscaleWidth_ > 0 && upscaleHeight_ > 0) {
+            gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
+            gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
+            gl::BlitFramebuffer(0, 0, upscaleWidth_, upscaleHeight_, 0, 0, windowWidth, windowHeight,
+                                GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        } else {
+            gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+            gl::Clear(GL_COLOR_BUFFER_BIT);
+        }
+        for (int i = 0; i < 2; ++i) {
+            const int x0 = i == 0 ? 0 : split_, x1 = i == 0 ? split_ : width_;
+            if (!drawn_[i] || x1 <= x0 || refinedRows_ <= 0) continue;
+            gl::BindFramebuffer(GL_READ_FRAMEBUFFER, sides_[i].framebuffer());
+            gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
+            gl::BlitFramebuffer(x0, 0, x1, refinedRows_, x0, 0, x1, refinedRows_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        }
+        offWindow();
+        gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        return;
+    }
     const int src0[2] = {0, sideBySide_ ? 0 : split_},
               src1[2] = {sideBySide_ ? split_ - offset_ : split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
     const int windowOffset = width_ > 0 ? int(std::lround(double(offset_) * windowWidth / width_)) : 0;

@@ -17,7 +17,14 @@ public:
     // `frame.width` x `frame.height` is the render size. `left` draws the
     // columns [0, splitX), `right` the columns [splitX, width); a null
     // program (none has built yet) leaves its side black.
-    void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX);
+    // Rows [rows0, rows1) only (from the bottom; rows1 < 0: all): one band
+    // of a picture that refines over several frames (setRefinedRows).
+    void render(const ShaderProgram* left, const ShaderProgram* right, const FrameSettings& frame, int splitX,
+                int rows0 = 0, int rows1 = -1);
+    // While a full-size picture comes in by bands: present() shows its
+    // rows [0, rows) over the last reduced picture, upscaled (kept from the
+    // last present at a reduced size); -1: the picture alone.
+    void setRefinedRows(int rows) { refinedRows_ = rows; }
     // One picture over the whole frame, with its sky tiles where it has a sky
     // program; `look`: read the frame back for marked pixels
     // (GlRenderer::drawChecked: the view looks when the camera rests).
@@ -63,6 +70,7 @@ private:
     int offset_ = 0;  // side by side: the columns left of the pictures (the panel's)
     int halfHeight_ = 0;
     bool sideBySide_ = false;
+    int refinedRows_ = -1;
 };
 
 }  // namespace rl

@@ -19,6 +19,8 @@
 #define GLFW_INCLUDE_NONE  // gl_api.h declares the GL functions
 #include <GLFW/glfw3.h>
 
+#include <imgui.h>  // the panel's background colour
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -46,6 +48,10 @@ constexpr double kIdleWaitSeconds = 0.5;
 // Frames drawn after any wake-up before waiting again: ImGui needs one or
 // two frames to settle hover and layout after an input event.
 constexpr int kFramesAfterWake = 3;
+// A term view refines in bands of about this long each (one a frame): the
+// window answers input 10 times a second while the full picture comes in.
+constexpr double kRefineBandMs = 100.0;
+constexpr int kMinRefineRows = 8;
 // How long a toast ("saved ...") stays on screen.
 constexpr auto kToastTime = std::chrono::seconds(3);
 
@@ -162,7 +168,9 @@ int ViewApp::run() {
 }
 
 void ViewApp::endPart(FrameParts::Part p) {
-    if (options_.stats && p != FrameParts::Events && p != FrameParts::Programs && p != FrameParts::UiBuild) gl::Finish();
+    if (options_.stats && parts_.profiled() && p != FrameParts::Events && p != FrameParts::Programs &&
+        p != FrameParts::UiBuild)
+        gl::Finish();
     parts_.mark(p);
 }
 
@@ -196,9 +204,9 @@ void ViewApp::frame() {
     const bool lastFrame = scriptDone && framesLeft_ == 1;
     if (lastFrame && !options_.screenshot.empty()) pendingShot_ = options_.screenshot;
     const bool screenshot = !pendingShot_.empty() || !pendingUiShot_.empty();
-    const bool refine = !moving() && (renderedScale_ < 1.0 || stillPending_);
+    const bool refine = !moving() && (renderedScale_ < 1.0 || stillPending_ || refineRow_ > 0);
     bool rendered = false;
-    if (dirty_ || state_.continuous || refine || (screenshot && renderedScale_ < 1.0)) {
+    if (dirty_ || state_.continuous || refine || (screenshot && (renderedScale_ < 1.0 || refineRow_ > 0))) {
         renderPicture(screenshot);
         rendered = true;
     }
@@ -208,13 +216,21 @@ void ViewApp::frame() {
     // last two frames and no hand moves it; the picture's own screenshot
     // needs them all.
     const LayoutRect panelNow = panelPixels();
+    // Anything that may move, fold or resize the panel this frame (a hand on
+    // it or over it, a new window size or UI scale, the help taking the
+    // window) starts the count again: two quiet frames first.
+    const bool touched = panelOwnsButton_[0] || panelOwnsButton_[1] || panelOwnsButton_[2] || ui_->wantsMouse() ||
+                         state_.showHelp || steadyScale_ != ui_->scale() || steadyWidth_ != fbWidth_ ||
+                         steadyHeight_ != fbHeight_;
+    quietFrames_ = touched ? 0 : quietFrames_ + 1;
+    steadyWidth_ = fbWidth_, steadyHeight_ = fbHeight_;
     const bool panelSteady = !panelNow.empty() && panelNow.x0 == steadyPanel_.x0 && panelNow.y0 == steadyPanel_.y0 &&
-                             panelNow.x1 == steadyPanel_.x1 && panelNow.y1 == steadyPanel_.y1 &&
-                             !panelOwnsButton_[0] && !panelOwnsButton_[1] && !panelOwnsButton_[2] &&
-                             pendingShot_.empty() && steadyScale_ == ui_->scale() && !panelRects_.panel.empty();
+                             panelNow.x1 == steadyPanel_.x1 && panelNow.y1 == steadyPanel_.y1 && quietFrames_ >= 2 &&
+                             pendingShot_.empty() && !panelRects_.panel.empty();
     const int covered[4] = {int(std::ceil(panelNow.x0)), int(std::ceil(panelNow.y0)), int(std::floor(panelNow.x1)),
                             int(std::floor(panelNow.y1))};
     picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr);
+    panelSteady_ = panelSteady;
     endPart(FrameParts::Present);
     const std::vector<OverlaySegment> rays = pickedRays();
     const std::vector<OverlayLabel> labels = sideBySideLabels();
@@ -296,7 +312,14 @@ void ViewApp::frame() {
     steadyScale_ = ui_->scale();
     glfwSwapBuffers(window_->window());
     endPart(FrameParts::Swap);
-    if (rendered) parts_.end(renderedScale_ < 1.0 || moving());
+    if (rendered) {
+        const bool movingFrame = renderedScale_ < 1.0 || moving() || refineRow_ > 0;
+        parts_.end(movingFrame);
+        // The full picture back: from the hand's last move to this swap.
+        if (!movingFrame && wasMoving_)
+            stillBackMs_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - lastMove_).count());
+        wasMoving_ = movingFrame;
+    }
     if (rendered) {
         const double frameMs = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         stats_.addWall(frameMs);
@@ -316,7 +339,7 @@ bool ViewApp::waitOrPoll() {
         glfwWaitEventsTimeout(kIdleWaitSeconds);
         return true;
     }
-    const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || framesBeforeIdle_ > 0 ||
+    const bool busy = dirty_ || state_.continuous || moving() || renderedScale_ < 1.0 || refineRow_ > 0 || framesBeforeIdle_ > 0 ||
                       (script_ && !script_->finished()) || framesLeft_ > 0 || Clock::now() < toastUntil_;
     if (busy) {
         glfwPollEvents();
@@ -449,15 +472,29 @@ void ViewApp::renderPicture(bool fullResolution) {
     PictureProgram* still = stillPicture(sides_[0]);
     const ShaderProgram* left = sides_[0].program->program();
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
+    // A term view's full picture (the generic program: seconds at 1080p on
+    // llvmpipe) in bands of rows, one a frame, over the upscaled moving
+    // picture, so the window keeps answering while it refines (issue 37).
+    // The first band after a change starts at row 0; a move starts over.
+    const bool progressive = scale == 1.0 && !fullResolution && !still && !sideBySideActive() &&
+                             !isPictureView(state_.view) && renderedScale_ > 0 && (renderedScale_ < 1.0 || refineRow_ > 0);
+    int band0 = 0, band1 = frame.height;
+    if (progressive) {
+        const double msPerRow = adaptive_.msPerPixel() * frame.width;
+        const int rows = msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
+        band0 = refineRow_;
+        band1 = std::min(frame.height, band0 + std::max(rows, kMinRefineRows));
+    }
+    const double pixels = double(frame.width) * (band1 - band0);
     const auto renderStart = Clock::now();
-    if (!softwareRenderer_) timer_->begin(double(frame.width) * frame.height);
+    if (!softwareRenderer_) timer_->begin(pixels);
     try {
         if (still)  // the whole frame: with its sky tiles
             picture_->render(*still, frame, !moving());
         else if (sideBySideActive())
             picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else
-            picture_->render(left, right, frame, split);
+            picture_->render(left, right, frame, split, band0, band1);
         runtimeError_.clear();
     } catch (const Error& e) {
         if (runtimeError_ != e.what()) std::cerr << "raylab: error: " << e.what() << std::endl;
@@ -469,11 +506,14 @@ void ViewApp::renderPicture(bool fullResolution) {
         gl::Finish();
         lastRenderMs_ = std::chrono::duration<double, std::milli>(Clock::now() - renderStart).count();
         stats_.addGpu(lastRenderMs_);
-        adaptive_.record(lastRenderMs_, double(frame.width) * frame.height);
-        if (scale == 1.0) fullRenderMs_.push_back(lastRenderMs_);
+        adaptive_.record(lastRenderMs_, pixels);
+        if (scale == 1.0 && !progressive) fullRenderMs_.push_back(lastRenderMs_);
     } else {
         timer_->end();
     }
+    if (progressive) ++refineBands_;
+    refineRow_ = progressive && band1 < frame.height ? band1 : 0;
+    picture_->setRefinedRows(progressive && band1 < frame.height ? band1 : -1);
     renderedScale_ = scale;
     dirty_ = false;
 }
@@ -497,8 +537,15 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     info.currentPreset = currentPreset();
     info.uiScale = scale;
     info.status = status_;
-    requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info, &panelRects_);
-    drawHelpOverlay(state_.showHelp);
+    info.backgroundCleared = panelSteady_;
+    if (state_.showHelp)  // the help has the window (below); the panel comes back when it closes
+        panelRects_ = {};
+    else
+        requests = drawPanel(scene_.scene(), scene_.fromFile(), state_, info, &panelRects_);
+    // The help over the whole window, opaque, at the UI scale, in pages;
+    // the panel steps aside while it is open (drawPanel: it would be under
+    // it anyway), so none of the panel's text shows through or beside it.
+    const HelpRects help = drawHelpOverlay(state_.showHelp, state_.helpPage, state_.helpPages, scale);
 
     // Window units from here (ImGui's); the report in framebuffer pixels.
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();
@@ -510,6 +557,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     };
     const float windowHeight = float(fbHeight_ / perUnit.y);
 
+    if (!help.box.empty()) {
+        layout_.add("help", LayoutBox::Kind::Cover, toPixels(help.box));
+        layout_.add("help rows", LayoutBox::Kind::Part, toPixels(help.rows), "help");
+    }
     const LayoutRect errorBox = drawErrorOverlay(errors(), scale, toUnits(errorArea_));
     errorBoxHeight_ = (errorBox.y1 - errorBox.y0) * float(perUnit.y);
     if (!errorBox.empty()) layout_.add("errors", LayoutBox::Kind::Widget, toPixels(errorBox));
@@ -549,6 +600,17 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         layout_.add("wipe right name", LayoutBox::Kind::Widget, toPixels(wipeLabels.right));
     }
     endPart(FrameParts::UiBuild);
+    if (panelSteady_ && !panelRects_.panel.empty()) {  // the panel's background, as a clear (PanelInfo::backgroundCleared)
+        const LayoutRect r = toPixels(panelRects_.panel);
+        const int x0 = int(std::floor(r.x0)), x1 = int(std::ceil(r.x1)), y0 = int(std::floor(r.y0)), y1 = int(std::ceil(r.y1));
+        const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+        gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        gl::Enable(GL_SCISSOR_TEST);
+        gl::Scissor(x0, fbHeight_ - y1, x1 - x0, y1 - y0);
+        gl::ClearColor(bg.x, bg.y, bg.z, 1.0f);
+        gl::Clear(GL_COLOR_BUFFER_BIT);
+        gl::Disable(GL_SCISSOR_TEST);
+    }
     ui_->endFrame();
 
     if (!captionPlaced_.box.empty()) {
@@ -569,6 +631,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
             layout_.add("view name", LayoutBox::Kind::Part, toPixels(p.viewText), "view dropdown");
         }
         if (!p.askedPixel.empty()) layout_.add("asked pixel", LayoutBox::Kind::Part, toPixels(p.askedPixel), "panel");
+        if (!p.content.empty()) {
+            layout_.add("panel content", LayoutBox::Kind::Part, toPixels(p.content), "panel");
+            layout_.add("panel rows", LayoutBox::Kind::Part, toPixels(p.rows), "panel content");
+        }
     }
 }
 
@@ -762,10 +828,14 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
     const glm::dvec3 u = glm::cross(r, f);
     const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
-    int x0 = 0, width = fbWidth_;  // side by side: the half the pixel was asked in
-    pictureColumns(sideBySideActive() ? pickedHalf_ : -1, x0, width);
+    // Side by side: the half the pixel was asked in; asked in the wipe or
+    // the whole window before X, the half of the code it was asked of
+    // (issue 37: the rays stayed at their full-window places, across the names).
+    const int half = sideBySideActive() ? (pickedHalf_ >= 0 ? pickedHalf_ : pickedSide_) : -1;
+    int x0 = 0, width = fbWidth_;
+    pictureColumns(half, x0, width);
     int y0 = 0, height = fbHeight_;
-    pictureRows(sideBySideActive() ? pickedHalf_ : -1, y0, height);
+    pictureRows(half, y0, height);
     const double aspect = double(width) / height;
     // Points closer than this along the view direction are clipped away:
     // a ray from the camera itself projects to no point.
@@ -780,8 +850,25 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
             return glm::dvec2(x0 + (c.x / (c.z * tanHalf * aspect) + 1.0) * 0.5 * width,
                               y0 + (1.0 - c.y / (c.z * tanHalf)) * 0.5 * height);
         };
-        const glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
-        out.push_back({float(pa.x), float(pa.y), float(pb.x), float(pb.y), colour});
+        glm::dvec2 pa = toPixel(ca), pb = toPixel(cb);
+        // Clipped to the picture (Liang-Barsky): side by side, a ray never
+        // leaves its half for the bars and the names above it.
+        double t0 = 0, t1 = 1;
+        const glm::dvec2 d = pb - pa;
+        const double p[4] = {-d.x, d.x, -d.y, d.y};
+        const double q[4] = {pa.x - x0, x0 + width - pa.x, pa.y - y0, y0 + height - pa.y};
+        for (int k = 0; k < 4; ++k) {
+            if (p[k] == 0) {
+                if (q[k] < 0) return;  // parallel to this edge and outside it
+                continue;
+            }
+            const double t = q[k] / p[k];
+            if (p[k] < 0) t0 = std::max(t0, t);
+            else t1 = std::min(t1, t);
+        }
+        if (t0 > t1) return;
+        const glm::dvec2 from = pa + t0 * d, to = pa + t1 * d;
+        out.push_back({float(from.x), float(from.y), float(to.x), float(to.y), colour});
     };
     // Colours: primary and reflected rays yellow / cyan, shadow rays green
     // when the light is visible, red when a sphere blocks it.
@@ -873,6 +960,12 @@ void ViewApp::printStats() const {
             std::printf("raylab view: still: %zu renders at full resolution, median %.1f ms\n", fullRenderMs_.size(),
                         FrameStats::median(fullRenderMs_));
     }
+    if (!stillBackMs_.empty())
+        std::printf("raylab view: still: the full picture back %.0f ms after the hand stopped (median of %zu, the "
+                    "longest %.0f ms)\n",
+                    FrameStats::median(stillBackMs_), stillBackMs_.size(),
+                    *std::max_element(stillBackMs_.begin(), stillBackMs_.end()));
+    if (refineBands_ > 0) std::printf("raylab view: still: term views refined in %d bands of about %.0f ms\n", refineBands_, kRefineBandMs);
     if (options_.stats && parts_.movingFrames() > 0) {
         const double interval = parts_.movingIntervalMs();
         std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,

@@ -185,6 +185,10 @@ private:
     double lastRenderMs_ = 0;         // the last render's wall time (software renderers only)
     std::vector<double> movingFrameMs_;  // whole frames rendered while moving, for --stats
     std::vector<double> fullRenderMs_;   // renders at full resolution (software renderers), for --stats
+    std::vector<double> stillBackMs_;    // from the last move to the swap of the full picture, for --stats
+    bool wasMoving_ = false;             // the last rendered frame was a moving one
+    int refineBands_ = 0;                // bands drawn, for --stats
+    int refineRow_ = 0;                  // a term view refining: the next band's first row (from the bottom); 0 = none
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
@@ -208,11 +212,15 @@ private:
     PanelRects panelRects_;      // the panel's parts as last drawn, window units
     LayoutRect steadyPanel_;     // the panel, framebuffer pixels, where the last two frames drew it; empty: it moved
     float steadyScale_ = 0;      // the UI scale of the last frame
+    int steadyWidth_ = 0, steadyHeight_ = 0;  // the framebuffer size of the last frame
+    int quietFrames_ = 0;        // frames since the panel could last have moved, folded or resized
+    bool panelSteady_ = false;   // this frame: the picture not presented under the panel; its background cleared
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
+    int pickedSide_ = 0;   // the code the asked pixel was asked of (0 left / --impl, 1 right)
     int pickedHalf_ = -1;  // side by side: the picture the asked pixel is in (0 left, 1 right); -1 the whole window
     // The pixel debugger's program of each side (render/pixel_debugger.h),
     // built at the first pick after the side's files (rebuild()), program

@@ -209,8 +209,15 @@ void ViewApp::onCursor(glm::dvec2 pixel) {
 }
 
 void ViewApp::pickPixel(glm::dvec2 pixel) {
+    // Compared as read, before any conversion (issue 37: 4294967296 wrapped round to 0).
+    if (!(pixel.x >= 0 && pixel.y >= 0 && pixel.x < fbWidth_ && pixel.y < fbHeight_)) {
+        char where[64];
+        std::snprintf(where, sizeof where, "(%.10g, %.10g)", pixel.x, pixel.y);
+        std::cerr << "raylab: error: pick " << where << ": outside the " << fbWidth_ << "x"
+                  << fbHeight_ << " window (pixels from the top left)" << std::endl;
+        return;
+    }
     const int i = int(std::floor(pixel.x)), row = int(std::floor(pixel.y));
-    if (i < 0 || row < 0 || i >= fbWidth_ || row >= fbHeight_) return;
     try {
         Camera camera = trackball_->camera();
         // Side by side, each half is a whole picture of its own width with
@@ -240,6 +247,7 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         // wipe the side of the divider it is on.
         int side = pickedHalf_ < 0 ? 0 : pickedHalf_;
         if (wipeActive() && i >= dividerPixel()) side = 1;
+        pickedSide_ = side;
         if (wipeActive()) where = std::string(" (") + sides_[std::size_t(side)].program->label() + ", " +
                                   (side == 0 ? "left" : "right") + " of the divider)";
         state_.pickedText = debugPickedPixel(side, scene, camera, width, height, i - x0, height - 1 - (row - y0));
@@ -316,7 +324,16 @@ void ViewApp::perform(Action action, int argument) {
     RenderSettings& render = scene_.scene().render;
     bool sceneEdited = false;
     switch (action) {
-        case Action::ToggleHelp: state_.showHelp = !state_.showHelp; break;
+        case Action::ToggleHelp:  // opens at page 1; then the next page; after the last, closes
+            if (!state_.showHelp) {
+                state_.showHelp = true;
+                state_.helpPage = 0;
+            } else if (state_.helpPage + 1 < state_.helpPages) {
+                ++state_.helpPage;
+            } else {
+                state_.showHelp = false;
+            }
+            break;
         case Action::TogglePanel: state_.showPanel = !state_.showPanel; break;
         case Action::ToggleCaptions: state_.showCaptions = !state_.showCaptions; break;
         case Action::TogglePickMode:
@@ -356,9 +373,9 @@ void ViewApp::perform(Action action, int argument) {
             trackball_->reset();
             dirty_ = true;
             break;
-        case Action::SetView:
+        case Action::SetView:  // as a value: the moving picture first, then the full one (in bands for a term view)
             state_.view = View(argument);
-            dirty_ = true;
+            valueChanged();
             break;
         case Action::BounceDown:
         case Action::BounceUp:

@@ -18,6 +18,8 @@ struct ViewState {
     int viewBounce = 1;              // k of view 9: 1 = the first reflection, the first one worth looking at
     bool showPanel = true;           // Tab
     bool showHelp = false;           // H
+    int helpPage = 0;                // H again: the next page of the help; after the last, closed
+    int helpPages = 1;               // as the help was last drawn (drawHelpOverlay)
     bool showCaptions = true;        // K: caption and colour bar on the picture (caption_layer.h)
     bool pickMode = false;           // I: a left click asks the pixel (as Ctrl+click)
     std::string pickedText;          // the last asked pixel's terms, for the panel
