@@ -579,9 +579,10 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         if (!toastBox.empty()) layout_.add("toast", LayoutBox::Kind::Tool, toPixels(toastBox));
     }
     // The asked pixel's answer beside it, clear of the widgets; the divider
-    // goes around it (view/asked_pixel_label.h).
+    // goes around it (view/asked_pixel_label.h). The help, while open, has
+    // the window: the label comes back when it closes.
     LayoutRect labelBox;
-    if (!askedLabel_.lines.empty() && sameCamera(askedCamera_, trackball_->camera())) {
+    if (!askedLabel_.lines.empty() && sameCamera(askedCamera_, trackball_->camera()) && !state_.showHelp) {
         std::vector<LayoutRect> avoid = {errorBox, panelRects_.panel, toastBox};
         if (wipeActive()) avoid.insert(avoid.end(), {wipeLabels.left, wipeLabels.right});
         if (!captionPlaced_.box.empty()) avoid.push_back(toUnits(captionPlaced_.box));
