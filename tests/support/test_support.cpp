@@ -53,6 +53,28 @@ std::string readText(const std::filesystem::path& path) {
     return s.str();
 }
 
+std::filesystem::path solutionsWithMutant(const std::filesystem::path& root, const std::string& exerciseFile,
+                                          const std::filesystem::path& mutant) {
+    namespace fs = std::filesystem;
+    const fs::path dir = root / (fs::path(exerciseFile).stem().string() + "-" + mutant.stem().string());
+    fs::create_directories(dir);
+    for (const auto& entry : fs::directory_iterator(sourceRoot() / "solutions"))
+        if (entry.path().extension() == ".glsl") fs::copy_file(entry.path(), dir / entry.path().filename());
+    fs::copy_file(mutant, dir / exerciseFile, fs::copy_options::overwrite_existing);
+    return dir;
+}
+
+const char* const kBeyondScene = R"({
+  "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 40},
+  "render": {"width": 32, "height": 24, "max_bounces": 1, "spp": 1, "ambient": 0.03, "background": [0, 0, 0],
+             "exposure": 1.0, "tonemap": "reinhard", "gamma": 2.2},
+  "lights": [{"position": [0, 0, 2.5], "color": [1, 1, 1], "intensity": 10}],
+  "spheres": [
+    {"center": [0, 0, 0], "radius": 1, "material": {"albedo": [0.8, 0.8, 0.8], "roughness": 0.5, "metallic": 0, "ao": 1}},
+    {"center": [0, 0, 6], "radius": 0.5, "material": {"albedo": [0.8, 0.2, 0.2], "roughness": 0.5, "metallic": 0, "ao": 1}}
+  ]
+})";
+
 Rendering renderGl(const Scene& scene, const std::string& backend) {
     // One context per backend for the whole test process.
     static std::map<std::string, std::unique_ptr<GlContext>> contexts;

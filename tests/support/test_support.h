@@ -44,6 +44,17 @@ std::vector<std::string> unitFileNames(const std::string& kind);
 // The file such a name stands for: course/<unit>/<kind>/<stem>.glsl.
 std::filesystem::path unitFilePath(const std::string& kind, const std::string& name);
 
+// A folder `root`/NAME holding a copy of solutions/ with the exercise file
+// `exerciseFile` ("05-ggx.glsl") replaced by `mutant` (a course mutant,
+// course/<unit>/mutants/<name>.glsl); NAME is the file's unit and stem.
+std::filesystem::path solutionsWithMutant(const std::filesystem::path& root, const std::string& exerciseFile,
+                                          const std::filesystem::path& mutant);
+
+// A wall lit by a light in front of it, a sphere behind the light (and behind
+// the camera), 32x24: a shadow ray that does not stop at the light finds the
+// sphere (04's "occluders beyond" mistake shows at the wall's centre).
+extern const char* const kBeyondScene;
+
 // Renders with OpenGL (solutions/, a headless context made once per process).
 Rendering renderGl(const Scene& scene, const std::string& backend = "auto");
 

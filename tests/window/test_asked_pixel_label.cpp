@@ -33,14 +33,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A copy of solutions/ with one exercise replaced by one of its mutants.
 fs::path mutantFolder(const fs::path& root, const std::string& unit, const std::string& mutant) {
-    const fs::path dir = root / (unit + "-" + mutant);
-    fs::create_directories(dir);
-    for (const auto& entry : fs::directory_iterator(sourceRoot() / "solutions"))
-        if (entry.path().extension() == ".glsl") fs::copy_file(entry.path(), dir / entry.path().filename());
-    fs::copy_file(sourceRoot() / "course" / unit / "mutants" / (mutant + ".glsl"), dir / (unit + ".glsl"),
-                  fs::copy_options::overwrite_existing);
-    return dir;
+    return rl::test::solutionsWithMutant(root, unit + ".glsl", sourceRoot() / "course" / unit / "mutants" / (mutant + ".glsl"));
 }
 
 DisplayImage picture(const Implementation& impl, Scene scene, int w, int h) {

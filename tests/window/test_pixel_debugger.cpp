@@ -32,28 +32,10 @@ namespace {
 
 // A copy of solutions/ with one exercise replaced by one of its mutants.
 fs::path mutantFolder(const fs::path& root, const std::string& unit, const std::string& mutant) {
-    const fs::path dir = root / (unit + "-" + mutant);
-    fs::create_directories(dir);
-    for (const auto& entry : fs::directory_iterator(sourceRoot() / "solutions"))
-        if (entry.path().extension() == ".glsl") fs::copy_file(entry.path(), dir / entry.path().filename());
-    fs::copy_file(sourceRoot() / "course" / unit / "mutants" / (mutant + ".glsl"), dir / (unit + ".glsl"),
-                  fs::copy_options::overwrite_existing);
-    return dir;
+    return rl::test::solutionsWithMutant(root, unit + ".glsl", sourceRoot() / "course" / unit / "mutants" / (mutant + ".glsl"));
 }
 
-// Occluder beyond the light: a wall, a light in front of it, a sphere behind
-// the light (and behind the camera). The wall's centre is lit; a shadow ray
-// that does not stop at the light finds the sphere (04's mutant).
-const char* const kBeyondScene = R"({
-  "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 40},
-  "render": {"width": 32, "height": 24, "max_bounces": 1, "spp": 1, "ambient": 0.03, "background": [0, 0, 0],
-             "exposure": 1.0, "tonemap": "reinhard", "gamma": 2.2},
-  "lights": [{"position": [0, 0, 2.5], "color": [1, 1, 1], "intensity": 10}],
-  "spheres": [
-    {"center": [0, 0, 0], "radius": 1, "material": {"albedo": [0.8, 0.8, 0.8], "roughness": 0.5, "metallic": 0, "ao": 1}},
-    {"center": [0, 0, 6], "radius": 0.5, "material": {"albedo": [0.8, 0.2, 0.2], "roughness": 0.5, "metallic": 0, "ao": 1}}
-  ]
-})";
+using rl::test::kBeyondScene;  // 04's mutant shows at its wall's centre
 
 struct MutantCase {
     const char* unit;
