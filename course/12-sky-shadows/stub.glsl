@@ -1,7 +1,8 @@
 // Exercise 12 (optional): shadows of the sky. Handout: course/12-sky-shadows/handout.md
 //
-// Until you write this, no sphere shadows the environment's diffuse light:
-// a sphere resting on the ground sits on it without a contact shadow.
+// Until you write this, no sphere shadows the sky's diffuse light: a sphere
+// resting on the ground lacks the soft contact shadow around it (a sun's
+// sharp shadow, which the framework computes, stays).
 
 // The share of the environment's diffuse light at p (unit normal n) that the
 // sphere (centre, radius) hides: its form factor, the cosine-weighted solid
