@@ -74,8 +74,9 @@ fi
 # out, the file that says they are not in this copy (CMakeLists.txt chooses
 # the same way).
 if [ -f app/reference/cpu_reference.cpp ]; then
-    SOURCES="$SOURCES app/reference/cpu_reference.cpp app/reference/pixel_breakdown.cpp app/reference/brdf_reference.cpp"
-    SOURCES="$SOURCES app/reference/environment_reference.cpp app/reference/split_sum.cpp"
+    model="$(sed -n '/^  set(RAYLAB_REFERENCE_MODEL$/,/)/p' CMakeLists.txt | grep -o 'app/reference/[a-z_0-9]*\.cpp' | tr '\n' ' ')"
+    [ -n "$model" ] || { echo "scripts/build-web.sh: found no RAYLAB_REFERENCE_MODEL sources in CMakeLists.txt" >&2; exit 1; }
+    SOURCES="$SOURCES $model"
 else
     SOURCES="$SOURCES app/reference/absent.cpp"
 fi

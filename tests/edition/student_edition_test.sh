@@ -68,7 +68,8 @@ done
 # (each unit's expected values and mistakes' formulas), the yardsticks' and
 # the model variants' code; in their place the recorded data.
 for model in app/reference/brdf_reference.cpp app/reference/cpu_reference.cpp app/reference/environment_reference.cpp \
-             app/reference/pixel_breakdown.cpp app/reference/split_sum.cpp app/checks/probe_toolkit.h \
+             app/reference/pixel_breakdown.cpp app/reference/split_sum.cpp app/reference/sphere_form_factor.cpp \
+             app/checks/probe_toolkit.h \
              app/bench/expert.cpp app/bench/expert_scene.cpp shaders/yardstick/textbook.frag; do
     [ ! -e "$edition/$model" ] || fail "$model is in the edition"
 done

@@ -229,9 +229,9 @@ TEST(GradeClass, EveryStudentGetsItsMarksAndReason) {
     // grades.csv: a header, then every student exactly once, sorted, the total last.
     std::vector<std::string> csv = lines(readText(out / "grades.csv"));
     ASSERT_FALSE(csv.empty());
-    // 11-environment: the optional exercise, graded in its own column with weight 0 (a bonus).
+    // 11-environment, 12-sky-shadows: the optional exercises, each graded in its own column with weight 0 (a bonus).
     EXPECT_EQ(csv[0], "Student,01-camera,02-intersect,03-lambert,04-shadows,05-ggx,06-geometry,07-fresnel,"
-                      "08-cook-torrance,09-reflections,10-display,11-environment,Total");
+                      "08-cook-torrance,09-reflections,10-display,11-environment,12-sky-shadows,Total");
     std::vector<std::string> ids;
     for (std::size_t k = 1; k < csv.size(); ++k) ids.push_back(csv[k].substr(0, csv[k].find(',')));
     std::vector<std::string> expected = {"compile-error", "corrupt", "empty", "endless", "full", "include-escape"};
@@ -464,7 +464,7 @@ TEST(GradeRun, SecondRunSkipsForceRegradesAndBytesAgree) {
     CommandResult changed = runRaylab(gradeArgs(sub, out));
     ASSERT_EQ(changed.status, 0) << changed.output;
     EXPECT_TRUE(contains(changed.output, "graded 1, skipped 5")) << changed.output;
-    EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,0.00,100.00\n"))
+    EXPECT_TRUE(contains(readText(out / "grades.csv"), "\nfresnel,8.00,10.00,8.00,10.00,10.00,10.00,8.00,14.00,12.00,10.00,0.00,0.00,100.00\n"))
         << readText(out / "grades.csv");
     if (!HasFailure()) fs::remove_all(root);
 }
@@ -656,7 +656,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     int images = 0;
     for (auto it = std::sregex_iterator(page.begin(), page.end(), img); it != std::sregex_iterator(); ++it, ++images)
         EXPECT_TRUE(fs::is_regular_file(out / "fresnel" / (*it)[1].str())) << (*it)[1].str();
-    EXPECT_EQ(images, 11 * 5 * 3) << "every check scene of every exercise (the optional 11 too): render, reference, difference";
+    EXPECT_EQ(images, 12 * 5 * 3) << "every check scene of every exercise (the optional 11 and 12 too): render, reference, difference";
     EXPECT_TRUE(contains(readText(out / "broken" / "index.html"), "05-ggx.glsl:3:")) << "the compile log, file:line";
 
     const std::string chromium = "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
@@ -687,7 +687,7 @@ TEST(GradeRun, HtmlReportRendersInHeadlessChromium) {
     std::smatch h2;
     ASSERT_TRUE(std::regex_search(page, h2, std::regex("<h2 id=\"([^\"]+)\"")));
     EXPECT_EQ(h2[1].str(), "07-fresnel") << "the failing exercise first";
-    EXPECT_TRUE(contains(page, "<details class=\"passed\"><summary>10 exercises passed:")) << page.substr(0, 3000);
+    EXPECT_TRUE(contains(page, "<details class=\"passed\"><summary>11 exercises passed:")) << page.substr(0, 3000);
 
     // Layout and filter as Chromium lays the page out at 1280 px: the table, notes column included,
     // fits the window, and typing in the filter box keeps the matching students only.
@@ -782,7 +782,7 @@ TEST(GradeRun, GradescopeLayoutWritesResultsJson) {
     json results = readJson(root / "results" / "results.json");
     expectGradescopeResults(results);
     EXPECT_DOUBLE_EQ(results.at("score").get<double>(), 26);
-    ASSERT_EQ(results.at("tests").size(), 11u);  // the ten and the optional 11-environment (max_score 0)
+    ASSERT_EQ(results.at("tests").size(), 12u);  // the ten and the optional 11-environment and 12-sky-shadows (max_score 0)
     const json& first = results["tests"][0];
     for (const char* key : {"name", "score", "max_score", "status", "output", "visibility"})
         EXPECT_TRUE(first.contains(key)) << key;

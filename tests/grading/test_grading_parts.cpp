@@ -218,7 +218,7 @@ TEST(OutputFolder, OneRunAtATimeAndNeverInsideTheSubmissions) {
 
 TEST(Rubric, DefaultIsValidAndWorth100) {
     Rubric r = loadRubric(defaultRubricPath());
-    EXPECT_EQ(r.exercises.size(), 11u);  // the optional 11-environment with weight 0: still worth 100
+    EXPECT_EQ(r.exercises.size(), 12u);  // the optional 11-environment and 12-sky-shadows with weight 0: still worth 100
     EXPECT_EQ(r.maxHundredths(), 10000);
     EXPECT_EQ(r.idColumn, "Student");
 }
