@@ -113,6 +113,14 @@ constexpr auto kFinish = std::chrono::seconds(240);
 
 const char* const kStates[] = {"wipe", "pick", "side", "errors"};
 
+// RAYLAB_LAYOUT_ALL=1: every view at both sizes, and (with
+// RAYLAB_UPDATE_DOC_IMAGES=1) every screenshot into docs/lecture.md's gallery.
+bool allLayouts() {
+    const char* all = std::getenv("RAYLAB_LAYOUT_ALL");
+    return all && std::string(all) == "1";
+}
+
+
 int count(const LayoutReport& r, const std::string& prefix) {
     int n = 0;
     for (const LayoutBox& b : r.boxes) n += b.name.rfind(prefix, 0) == 0;
@@ -219,6 +227,11 @@ void checkSize(int w, int h) {
     for (int s : {1, 2, 3})
         maybeUpdateDocImage(dir / ("pick-" + std::to_string(s) + ".png"),
                             "layout-" + std::to_string(h) + "p-scale-" + std::to_string(s) + ".png");
+    if (allLayouts())  // the gallery of docs/lecture.md, "Every view at every scale"
+        for (int s : {1, 2, 3})
+            for (const char* state : kStates)
+                maybeUpdateDocImage(dir / (std::string(state) + "-" + std::to_string(s) + ".png"),
+                                    "every-view/" + std::to_string(h) + "p-" + state + "-" + std::to_string(s) + ".png");
     if (h == 720) maybeUpdateDocImage(dir / "errors-3.png", "layout-720p-scale-3-errors.png");
 }
 
@@ -266,6 +279,9 @@ void checkViews(int w, int h, const std::vector<std::string>& views) {
             EXPECT_NE(find(report, "panel rows"), nullptr) << what;
         }
     }
+    if (allLayouts())  // the gallery of docs/lecture.md, "Every view at every scale"
+        for (const std::string& state : states)
+            maybeUpdateDocImage(dir / (state + ".png"), "every-view/" + std::to_string(h) + "p-environment-" + state + ".png");
     if (h == 720) {
         maybeUpdateDocImage(dir / "help-3.png", "help-720p-scale-3.png");
         for (const std::string v : {"irradiance", "env-bias"})  // the suite's two: their names in the dropdown
@@ -274,11 +290,6 @@ void checkViews(int w, int h, const std::vector<std::string>& views) {
         maybeUpdateDocImage(dir / "help-2.png", "help-1080p-scale-2.png");
         maybeUpdateDocImage(dir / "pick-3.png", "environment-pick-1080p-scale-3.png");
     }
-}
-
-bool allLayouts() {
-    const char* all = std::getenv("RAYLAB_LAYOUT_ALL");
-    return all && std::string(all) == "1";
 }
 
 const std::vector<std::string> kAllViews = {"final",  "d",      "g",          "f",           "fnv",

@@ -220,6 +220,7 @@ void maybeUpdateDocImage(const std::filesystem::path& shot, const std::string& n
                                                     4);
         image = half;
     }
+    std::filesystem::create_directories((dir / name).parent_path());  // "every-view/..."
     writePng((dir / name).string(), image);
 }
 
