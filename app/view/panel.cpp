@@ -37,6 +37,20 @@ constexpr float kMaxPanelFraction = 0.45f;    // of the window's width: the pict
 
 const ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;  // typed values obey the range too
 
+// A combo box whose longest item shows whole: where the item width left of
+// the label column is too narrow for it (the tone map's "exponential" at UI
+// scale 3 read "reinh"), the label goes on its own line above a combo as
+// wide as the item needs (or the panel allows).
+bool fittedCombo(const char* label, int* index, const char* const items[], int count) {
+    float longest = 0;
+    for (int i = 0; i < count; ++i) longest = std::max(longest, ImGui::CalcTextSize(items[i]).x);
+    const float needed = longest + ImGui::GetFrameHeight() + 2.0f * ImGui::GetStyle().FramePadding.x;
+    if (needed <= ImGui::CalcItemWidth()) return ImGui::Combo(label, index, items, count);
+    ImGui::TextUnformatted(label);
+    ImGui::SetNextItemWidth(std::min(needed, ImGui::GetContentRegionAvail().x));
+    return ImGui::Combo((std::string("##") + label).c_str(), index, items, count);
+}
+
 bool editDouble(const char* label, double& value, float min, float max, const char* format = "%.3f",
                 ImGuiSliderFlags flags = 0) {
     float v = float(value);
@@ -173,7 +187,7 @@ void displaySection(Scene& scene, ViewRequests& out) {
                                   ImGuiSliderFlags_Logarithmic);
     const char* toneMaps[] = {"reinhard", "exponential", "none"};  // the order of rl::ToneMap
     int op = int(r.tonemap);
-    if (ImGui::Combo("tone map", &op, toneMaps, 3)) {
+    if (fittedCombo("tone map", &op, toneMaps, 3)) {
         r.tonemap = ToneMap(op);
         out.sceneEdited = true;
     }
@@ -192,7 +206,7 @@ void renderSection(Scene& scene, ViewRequests& out) {
     for (int i = 0; i < 4; ++i)
         if (kSppChoices[i] == r.spp) sppIndex = i;
     const char* sppNames[] = {"1", "4", "9", "16"};
-    if (ImGui::Combo("samples per pixel", &sppIndex, sppNames, 4)) {
+    if (fittedCombo("samples per pixel", &sppIndex, sppNames, 4)) {
         r.spp = kSppChoices[sppIndex];
         out.sceneEdited = true;
     }
@@ -208,7 +222,7 @@ void modelSection(Scene& scene, ViewRequests& out) {
     auto choose = [&](const char* label, auto& value, std::initializer_list<const char*> names) {
         int index = int(value);
         std::vector<const char*> list(names);
-        if (ImGui::Combo(label, &index, list.data(), int(list.size()))) {
+        if (fittedCombo(label, &index, list.data(), int(list.size()))) {
             value = std::remove_reference_t<decltype(value)>(index);
             out.sceneEdited = true;
         }
