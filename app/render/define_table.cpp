@@ -27,9 +27,10 @@ constexpr unsigned kLiveStill = purposeBit(Purpose::LiveStill);
 constexpr unsigned kProbe = purposeBit(Purpose::Probe);
 constexpr unsigned kGenericPicture = purposeBit(Purpose::GenericPicture);
 constexpr unsigned kGeneric = purposeBit(Purpose::Generic);
+constexpr unsigned kPixelDebug = purposeBit(Purpose::PixelDebug);
 // The model is compiled into every program drawn for a scene; the checker's
 // one program serves every check scene, so it has none.
-constexpr unsigned kEveryScene = kPicture | kEveryView | kLive | kLiveStill | kGenericPicture | kGeneric;
+constexpr unsigned kEveryScene = kPicture | kEveryView | kLive | kLiveStill | kGenericPicture | kGeneric | kPixelDebug;
 // What a specialised program compiles in.
 constexpr unsigned kSpecialised = kPicture | kEveryView | kLive | kLiveStill;
 // The picture programs of the live view.
@@ -58,6 +59,11 @@ Value lightsOrNone(const DefineInput& in, std::string (*macro)(const Scene&)) {
 
 std::vector<DefineRow> makeTable() {
     std::vector<DefineRow> t;
+
+    // ---- the purpose alone.
+    t.push_back({"RL_PIXEL_DEBUG", kPurpose, kPixelDebug, {}, {},
+                 "pixel_debug.frag records the exercises' values at one pixel (render/pixel_debugger.h)",
+                 [](const DefineInput&) { return kOne; }});
 
     // ---- the model (docs/model-variants.md): the reference model has none,
     // so every reference scene shares one generic program.
@@ -92,7 +98,9 @@ std::vector<DefineRow> makeTable() {
                  "the environment map, its SH9 irradiance and prefiltered specular (environment.glsl), only "
                  "for a scene with an environment",
                  [](const DefineInput& in) { return when(in.scene.environment.has_value()); }});
-    t.push_back({"RL_ENV_OCCLUSION", kStructure, kEveryScene, {"RL_ENVIRONMENT"}, {},
+    // Not in the pixel debugger's program: its double side (reference/pixel_breakdown.h) compares
+    // exercise 11's terms and 12's form factors, not the occlusion's framework parts.
+    t.push_back({"RL_ENV_OCCLUSION", kStructure, kEveryScene & ~kPixelDebug, {"RL_ENVIRONMENT"}, {},
                  "the spheres' caps taken out of the environment light (environment_occlusion.glsl): the strategy, 2 "
                  "(the caps' own light and the sun), for two spheres or more",
                  [](const DefineInput& in) { return in.scene.spheres.size() > 1 ? Value("2") : kNone; }});
@@ -251,6 +259,7 @@ const char* purposeName(Purpose purpose) {
         case Purpose::Probe: return "probe";
         case Purpose::GenericPicture: return "generic-picture";
         case Purpose::Generic: return "generic";
+        case Purpose::PixelDebug: return "pixel-debug";
     }
     return "?";
 }
@@ -265,7 +274,6 @@ std::string glslName(const DefineRow& row) { return row.name.substr(0, row.name.
 const std::vector<const char*>& nonSpecialisationNames() {
     static const std::vector<const char*> names = {
         "RL_PROBE_EXERCISE",    // probe.frag: the exercise the checker probes (checks/checker.cpp)
-        "RL_PIXEL_DEBUG",       // pixel_debug.frag: the pixel debugger's recorder (render/pixel_debugger.cpp)
         "RL_MAX_SPHERES",       // scene.glsl: the uniform block's size, its own default
         "RL_MAX_LIGHTS",        // scene.glsl: the same for the lights
         "RL_LOOP_LIMIT",        // loop_guard.glsl: a constant of the runaway-loop guard (per run of a loop)

@@ -36,8 +36,11 @@ enum class Purpose {
     Probe,           // the checker's ray tracer (`raylab check`): one program for every check scene
     GenericPicture,  // the bench's "generic-picture" row: the generic program without the term views
     Generic,         // the model only: `raylab render --generic`, the live view's term views, `raylab record`
+    PixelDebug,      // the pixel debugger's recorder (`raylab render --ask`, the live view's click): the
+                     // generic program without the environment's occlusion, which the reference's
+                     // breakdown it is compared with does not have (render/pixel_debugger.h)
 };
-inline constexpr int kPurposeCount = 7;
+inline constexpr int kPurposeCount = 8;
 const char* purposeName(Purpose purpose);  // "picture", "every-view", "live-view", "live-still", "probe", ...
 
 // What a row's value depends on (a bit set). The live view compiles only rows

@@ -274,13 +274,10 @@ std::string PixelValue::name() const {
 }
 
 ShaderProgram buildPixelDebugProgram(const Implementation& impl, const Scene& scene) {
-    ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::Generic);
-    defines["RL_PIXEL_DEBUG"] = "1";
-    // The table compares the environment light before the spheres' occlusion
-    // (the reference's double path has exercise 11's terms, not the
-    // occlusion's framework parts: docs/decisions.md, "Ask a pixel"); exercise
-    // 12's form factors are recorded on their own row (pixel_debug.glsl).
-    defines.erase("RL_ENV_OCCLUSION");
+    // The define table's pixel-debug purpose: the generic program, recording,
+    // without the environment's occlusion (exercise 12's form factors are
+    // recorded on their own row, pixel_debug.glsl; docs/decisions.md).
+    const ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::PixelDebug);
     return ShaderProgram(assembleShader("fullscreen.vert", impl, {}), assembleShader("pixel_debug.frag", impl, defines));
 }
 

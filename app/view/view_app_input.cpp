@@ -273,7 +273,7 @@ std::string ViewApp::debugPickedPixel(int side, const Scene& scene, const Camera
     const Implementation& impl = s.program->implementation();
     DebugProgram& debug = debugPrograms_[side];
     try {
-        ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::Generic);
+        ShaderDefines defines = definesFor(scene, implementationFacts(impl), Purpose::PixelDebug);  // as buildPixelDebugProgram
         if (!debug.program || debug.liveProgram != s.program->program() || debug.defines != defines) {
             debug.program.reset();
             debug.program = std::make_unique<ShaderProgram>(buildPixelDebugProgram(impl, scene));

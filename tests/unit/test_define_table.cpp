@@ -196,7 +196,7 @@ std::string definesReport() {
     for (const fs::path& file : sceneFiles()) {
         const Scene scene = loadSceneFile(file.string()).scene;
         const std::string name = file.lexically_relative(sourceRoot()).string();
-        for (Purpose p : {Purpose::Generic, Purpose::GenericPicture, Purpose::EveryView})
+        for (Purpose p : {Purpose::Generic, Purpose::GenericPicture, Purpose::EveryView, Purpose::PixelDebug})
             out += line(name, purposeName(p), "-", definesFor(scene, ImplementationFacts{}, p));
         // The implementations with equal defines on one line ("solutions,student-09").
         std::vector<std::pair<std::string, ShaderDefines>> picture, sky, live, still;
