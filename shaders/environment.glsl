@@ -29,7 +29,7 @@
 // (what a hit adds: exercise 11's functions on the host's tables), and the
 // lookups environmentLocal(), equirectUv(), prefilteredRadiance(), splitSumLookup().
 
-const int ENV_MAX_LEVELS = 8;
+const int ENV_MAX_LEVELS = 16;
 
 #ifdef RL_ENVIRONMENT
 uniform sampler2D u_envMap;

@@ -59,7 +59,7 @@ std::vector<EnvironmentApproximation> environmentSweep() {
     for (int n : kIrradianceMapWidths) add({n, 0, 0, 0, 0});
     // The prefiltered environment: its size, fewer and more roughness levels, fewer and more samples per texel.
     for (int w : {32, 64, 128, 256}) add({0, w, 0, 0, 0});
-    for (int levels : {2, 4, 6, 8}) add({0, 0, levels, 0, 0});
+    for (int levels : {2, 4, 6, 8, 12, 16}) add({0, 0, levels, 0, 0});
     for (int samples : {8, 32, 128, 512}) add({0, 0, 0, samples, 0});
     // The split-sum table.
     for (int size : {4, 8, 16, 32, 64}) add({0, 0, 0, 0, size});

@@ -155,11 +155,19 @@ RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, do
 
 double prefilterLevelRoughness(int level, int levels) { return levels > 1 ? double(level) / (levels - 1) : 0.0; }
 
+int prefilterLevelWidth(double roughness, int width) {
+    const double r = std::clamp(roughness, kMinRoughness, 1.0), alpha = r * r;
+    int w = 8;
+    while (w < width && w * alpha < kPiPrefilter) w *= 2;
+    return std::min(w, std::max(width, 8));
+}
+
 std::vector<RadianceImage> prefilterChain(const RadianceImage& image, int width, int height, int levels, int samples) {
     std::vector<RadianceImage> chain;
     const std::vector<RadianceImage> pyramid = pyramidOf(image);
     for (int k = 0; k < levels; ++k) {
-        int w = std::max(width >> k, 8), h = std::max(height >> k, 4);
+        const int w = prefilterLevelWidth(prefilterLevelRoughness(k, levels), width);
+        const int h = std::max(int(std::lround(double(w) * height / std::max(width, 1))), 4);
         chain.push_back(prefilterFromPyramid(pyramid, prefilterLevelRoughness(k, levels), w, h, samples));
     }
     return chain;

@@ -55,9 +55,16 @@ glm::dvec3 ggxHalfVector(double u1, double u2, double alpha);
 RadianceImage prefilterEnvironment(const RadianceImage& image, double roughness, int width, int height, int samples);
 
 // The prefiltered chain: level k of `levels` (>= 2) for roughness
-// k / (levels - 1), halving the size each level (never below 8 x 4): the
-// shader picks the level roughness * (levels - 1).
+// k / (levels - 1), each as wide as its lobe needs: the smallest power of
+// two W with a texel of at most the lobe's alpha radians, 2 pi / W <= 2 alpha
+// (W >= pi / alpha, alpha = roughness^2), from 8 up to `width` (the sharper
+// levels all `width`), and as high as width x height gives it (never below
+// 4). Many levels at small sizes: a roughness between two levels blends two
+// lobes of nearly the same width (between 0 and 0.2 the lobe's solid angle
+// grows 1000-fold; six levels blended a near-mirror with a fifth of that).
+// The shader picks the level roughness * (levels - 1).
 double prefilterLevelRoughness(int level, int levels);
+int prefilterLevelWidth(double roughness, int width);
 std::vector<RadianceImage> prefilterChain(const RadianceImage& image, int width, int height, int levels, int samples);
 
 }  // namespace rl::ref

@@ -18,7 +18,7 @@ namespace {
 
 void checkSettings(const EnvironmentSettings& s) {
     auto bad = [](const std::string& what) { throw Error("environment settings: " + what); };
-    if (s.levels < 2 || s.levels > 8) bad("levels must be 2 to 8");
+    if (s.levels < 2 || s.levels > 16) bad("levels must be 2 to 16");
     if (s.prefilterWidth < 8 || s.prefilterHeight < 4 || s.prefilterWidth > 4096 || s.prefilterHeight > 2048)
         bad("the prefiltered size must be 8 x 4 to 4096 x 2048");
     if (s.prefilterSamples < 1 || s.prefilterSamples > 65536) bad("prefilter samples must be 1 to 65536");

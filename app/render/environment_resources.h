@@ -28,9 +28,9 @@ namespace rl {
 
 // The approximation's sizes (what the bench sweeps). Defaults: docs/decisions.md.
 struct EnvironmentSettings {
-    int prefilterWidth = 128;   // level 0 of the prefiltered chain (each level halves, never below 8 x 4)
+    int prefilterWidth = 128;   // the sharpest levels of the prefiltered chain (the rougher as wide as their lobe needs, ref::prefilterChain)
     int prefilterHeight = 64;
-    int levels = 6;             // level k for roughness k / (levels - 1); 2 to 8 (ENV_MAX_LEVELS, shaders/environment.glsl)
+    int levels = 16;            // level k for roughness k / (levels - 1); 2 to 16 (ENV_MAX_LEVELS, shaders/environment.glsl)
     int prefilterSamples = 128; // GGX-distributed directions per prefiltered texel (Hammersley)
     int tableSize = 32;         // the split-sum table: tableSize x tableSize entries
     int tableSamples = 32;      // tableSamples^2 half vectors per entry
