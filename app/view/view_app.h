@@ -140,6 +140,19 @@ private:
     void pictureRows(int half, int& y0, int& height) const;
     // Side by side: framebuffer columns left of the pictures (the panel's).
     int sideBySideOffset() const;
+    // The framebuffer columns left of the picture: the docked panel's (or
+    // its strip's) with a margin while it is shown, 0 while hidden. The
+    // picture takes the rest of the window (docs/decisions.md, "The picture
+    // beside the panel").
+    int pictureOffset() const;
+    // tan(fov_y / 2) of the picture over the scene's: the picture beside the
+    // panel shows the whole window's width of the scene (its field of view
+    // grows upwards and downwards instead of losing the spheres at the sides).
+    double fovScale() const;
+    // The trackball's camera with the picture's field of view: what the
+    // picture, a pick and the projected rays are computed with.
+    Camera pictureCamera() const;
+    glm::dvec2 trackballPixel(glm::dvec2 pixel) const;  // window pixels -> the picture's, for the trackball
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
@@ -188,7 +201,9 @@ private:
     std::vector<double> stillBackMs_;    // from the last move to the swap of the full picture, for --stats
     bool wasMoving_ = false;             // the last rendered frame was a moving one
     int refineBands_ = 0;                // bands drawn, for --stats
-    int refineRow_ = 0;                  // a term view refining: the next band's first row (from the bottom); 0 = none
+    int refineRow_ = 0;                  // a still refining: the next band's first row (from the bottom); 0 = none
+    bool refineStill_ = false;           // the refining bands are the still program's
+    double refineMsPerRow_ = 0;          // the last band's cost (software renderers), for the next band's rows
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
