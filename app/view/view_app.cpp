@@ -249,6 +249,10 @@ void ViewApp::frame() {
     }
     const LayoutRect panel = panelPixels();
     if (!panel.empty()) avoid.push_back(panel);
+    // The asked pixel's answer, where it was last frame (it is placed after
+    // the caption, clear of it; beside the docked panel the picture is
+    // narrower, and without this the two could find no room apart).
+    if (!labelPixels_.empty()) avoid.push_back(labelPixels_);
     float topReserved = 0;
     WipeLabels wipeLabels;
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
@@ -585,7 +589,9 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     // names (and the caption when it went to the top); clear of the
     // overlays, but it may cover spheres for those seconds.
     LayoutRect toastBox;
-    if (Clock::now() < toastUntil_) {
+    // While an error box is shown, no toast: the error has the room (the
+    // toast's message is in the terminal and the panel's status).
+    if (Clock::now() < toastUntil_ && errorBox.empty()) {
         float top = wipeActive() ? std::max(wipeLabels.left.y1, wipeLabels.right.y1) + 10 * scale : 0.0f;
         for (const LayoutRect& l : captionPlaced_.labels) top = std::max(top, toUnits(l).y1 + 10 * scale);
         if (!captionPlaced_.box.empty() && captionPlaced_.box.y0 < 0.5f * fbHeight_)
@@ -606,6 +612,11 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         labelBox = drawAskedPixelLabel(askedLabel_, scale, avoid);
         layout_.add("asked pixel label", LayoutBox::Kind::Tool, toPixels(labelBox));
     }
+    const LayoutRect labelBefore = labelPixels_;
+    labelPixels_ = labelBox.empty() ? LayoutRect{} : toPixels(labelBox);
+    if (labelBefore.x0 != labelPixels_.x0 || labelBefore.y0 != labelPixels_.y0 || labelBefore.x1 != labelPixels_.x1 ||
+        labelBefore.y1 != labelPixels_.y1)
+        framesBeforeIdle_ = std::max(framesBeforeIdle_, 2);  // the caption moves aside next frame
     if (wipeActive()) {
         std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel, toastBox, labelBox};
         if (!captionPlaced_.box.empty()) clear.push_back(toUnits(captionPlaced_.box));

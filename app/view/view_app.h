@@ -233,6 +233,7 @@ private:
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
+    LayoutRect labelPixels_;                 // the asked pixel's label last frame, framebuffer pixels: the caption keeps clear of it
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
     int pickedSide_ = 0;   // the code the asked pixel was asked of (0 left / --impl, 1 right)

@@ -89,6 +89,25 @@ TEST(LayoutRules, TheHelpCoversWidgetsNotThePanelAndItsRowsAreWhole) {
     EXPECT_EQ(parseLayoutJson(layoutJson(r), "layout.json").boxes[2].kind, K::Cover);
 }
 
+// The docked panel (issue 37): opaque, so it must leave the picture area
+// and every sphere the camera frames visible (at 720p, UI scale 3 it hid
+// two of five); the caption over the picture is its overlay, no problem.
+TEST(LayoutRules, TheDockedPanelCoversNeitherThePictureNorASphere) {
+    LayoutReport r = window720();
+    r.add("picture", K::Picture, {636, 0, 1280, 720});
+    r.add("panel", K::Dock, {30, 30, 606, 690});
+    r.add("sphere 1", K::Subject, {800, 300, 880, 380});
+    r.add("caption", K::Widget, {640, 480, 1270, 700});
+    EXPECT_TRUE(layoutProblems(r).empty()) << layoutProblems(r).front();
+    r.boxes[0].rect.x0 = 0;  // the picture under the panel, as before
+    r.add("sphere 2", K::Subject, {500, 300, 580, 380});
+    const auto problems = layoutProblems(r);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].find("panel covers picture"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[1].find("panel covers sphere 2"), std::string::npos) << problems[1];
+    EXPECT_EQ(parseLayoutJson(layoutJson(r), "layout.json").boxes[1].kind, K::Dock);
+}
+
 TEST(LayoutRules, TheReportSurvivesItsJson) {
     LayoutReport r = window720();
     r.uiScale = 2;
