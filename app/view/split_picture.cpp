@@ -29,6 +29,21 @@ void SplitPicture::ensureUpscaleSource(int width, int height) const {
     upscaleHeight_ = height;
 }
 
+void SplitPicture::keepForRefining() {
+    if (width_ <= 0 || height_ <= 0 || sideBySide_) return;
+    ensureUpscaleSource(width_, height_);
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, upscaleFramebuffer_);
+    const int x0[2] = {0, split_}, x1[2] = {split_, width_};
+    for (int i = 0; i < 2; ++i) {
+        if (!drawn_[i] || x1[i] <= x0[i]) continue;
+        gl::BindFramebuffer(GL_READ_FRAMEBUFFER, sides_[i].framebuffer());
+        gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
+        gl::BlitFramebuffer(x0[i], 0, x1[i], height_, x0[i], 0, x1[i], height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+}
+
 void SplitPicture::setScene(const Scene& scene) {
     for (GlRenderer& side : sides_) side.setScene(scene);
 }

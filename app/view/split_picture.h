@@ -25,6 +25,10 @@ public:
     // rows [0, rows) over the last reduced picture, upscaled (kept from the
     // last present at a reduced size); -1: the picture alone.
     void setRefinedRows(int rows) { refinedRows_ = rows; }
+    // Before the first band over a picture already at full size (drawn by
+    // the structure's program while the hand moved): that picture becomes
+    // the one the bands come in over.
+    void keepForRefining();
     // One picture over the whole frame, with its sky tiles where it has a sky
     // program; `look`: read the frame back for marked pixels
     // (GlRenderer::drawChecked: the view looks when the camera rests).

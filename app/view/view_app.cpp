@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -149,6 +150,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     state_.panelStrip = options_.panelStrip;
     state_.showCaptions = !options_.hideCaptions;
     state_.sideBySide = options_.sideBySide && sides_.size() == 2;
+    if (const char* rows = std::getenv("RAYLAB_REFINE_ROWS")) refineRows_ = std::max(0, std::atoi(rows));
     framesLeft_ = options_.frames;
     if (options_.frames > 0) state_.continuous = true;  // every frame renders: the median is the renderer's
     if (options_.fullscreen) window_->toggleFullscreen();
@@ -469,6 +471,7 @@ PictureProgram* ViewApp::stillPicture(Side& side) {
 bool ViewApp::moving() const { return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime; }
 
 void ViewApp::renderPicture(bool fullResolution) {
+    const bool stillWasPending = stillPending_;  // the last picture: the structure's program at full size
     // Right of the docked panel (the whole window side by side: its halves
     // leave the panel's columns themselves).
     const int pictureWidth = sideBySideActive() ? fbWidth_ : std::max(1, fbWidth_ - pictureOffset());
@@ -493,16 +496,19 @@ void ViewApp::renderPicture(bool fullResolution) {
     // after a change starts at row 0; a move starts over, and so does
     // another program.
     const bool progressive = scale == 1.0 && !fullResolution && !sideBySideActive() && renderedScale_ > 0 &&
-                             (renderedScale_ < 1.0 || refineRow_ > 0);
+                             (renderedScale_ < 1.0 || refineRow_ > 0 || (stillWasPending && still));
     int band0 = 0, band1 = frame.height;
     if (progressive) {
         if (refineRow_ > 0 && refineStill_ != (still != nullptr)) refineRow_ = 0;
         if (refineRow_ == 0) refineMsPerRow_ = 0;  // a new still: the moving frames' estimate first
         const double msPerRow = refineMsPerRow_ > 0 ? refineMsPerRow_ : adaptive_.msPerPixel() * frame.width;
-        const int rows = msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
+        const int rows = refineRows_ > 0 ? refineRows_ : msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
         band0 = refineRow_;
-        band1 = std::min(frame.height, band0 + std::max(rows, kMinRefineRows));
+        band1 = std::min(frame.height, band0 + (refineRows_ > 0 ? rows : std::max(rows, kMinRefineRows)));
         refineStill_ = still != nullptr;
+        // Over the full-size picture of the structure's program: it stays on
+        // screen under the bands (the reduced one is the upscale source already).
+        if (band0 == 0 && renderedScale_ >= 1.0) picture_->keepForRefining();
     }
     const double pixels = double(frame.width) * (band1 - band0);
     const auto renderStart = Clock::now();

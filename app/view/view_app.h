@@ -204,6 +204,7 @@ private:
     int refineRow_ = 0;                  // a still refining: the next band's first row (from the bottom); 0 = none
     bool refineStill_ = false;           // the refining bands are the still program's
     double refineMsPerRow_ = 0;          // the last band's cost (software renderers), for the next band's rows
+    int refineRows_ = 0;                 // RAYLAB_REFINE_ROWS: bands of this many rows (tests: bands at a small size); 0 = by time
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
