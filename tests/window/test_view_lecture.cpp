@@ -746,12 +746,15 @@ TEST(LectureDrag, TheEnvironmentSceneStillRefinesInBandsToTheOneShotStill) {
     TempDir dir;
     auto env = windowEnv(x);
     const std::string scene = (sourceRoot() / "scenes" / "environments" / "sky-spheres.json").string();
-    writeText(dir / "bands.txt", "wait 2\nkey 0\nsleep 6\nscreenshot bands.png\nquit\n");
+    // The D view first (--view d): its full picture is what the targets
+    // hold when the bands begin, so a row no band draws shows.
+    writeText(dir / "bands.txt", "wait 3\nkey 0\nsleep 6\nscreenshot bands.png\nquit\n");
     writeText(dir / "whole.txt", "wait 3\nscreenshot whole.png\nquit\n");
     for (const std::string& size : {"640x360"}) {
         SCOPED_TRACE(size);
         env["RAYLAB_REFINE_ROWS"] = "16";
-        RunResult bands = runRaylab({"view", scene, "--size", size, "--script", "bands.txt", "--stats"}, env, dir.path());
+        RunResult bands = runRaylab({"view", scene, "--size", size, "--view", "d", "--script", "bands.txt", "--stats"},
+                                    env, dir.path());
         ASSERT_EQ(bands.status, 0) << bands.err;
         env["RAYLAB_REFINE_ROWS"] = "";
         RunResult whole = runRaylab({"view", scene, "--size", size, "--script", "whole.txt", "--stats"}, env, dir.path());
