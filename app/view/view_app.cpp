@@ -251,6 +251,9 @@ void ViewApp::frame() {
     }
     const LayoutRect panel = panelPixels();
     if (!panel.empty()) avoid.push_back(panel);
+    // The columns left of the picture (the panel's and its margin): the
+    // caption stays on the picture, whole in its screenshot.
+    if (const int x0 = sideBySideActive() ? 0 : pictureOffset(); x0 > 0) avoid.push_back({0, 0, float(x0), float(fbHeight_)});
     // The asked pixel's answer, where it was last frame (it is placed after
     // the caption, clear of it; beside the docked panel the picture is
     // narrower, and without this the two could find no room apart).
