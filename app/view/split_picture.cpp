@@ -164,10 +164,24 @@ void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box)
         // done, 1:1, over it.
         toWindow();
         if (upscaleWidth_ > 0 && upscaleHeight_ > 0) {
+            // Only the rows the bands have not reached (llvmpipe samples
+            // every pixel of a scaled blit: the refined rows would be drawn twice).
+            const double y0 = double(refinedRows_) * upscaleHeight_ / windowHeight;
             gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
             gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
-            gl::BlitFramebuffer(0, 0, upscaleWidth_, upscaleHeight_, px0, 0, windowWidth, windowHeight,
-                                GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            gl::Enable(GL_SCISSOR_TEST);
+            const int sx = box ? std::max(box[0], px0) : px0, sx1 = box ? std::min(box[0] + box[2], windowWidth) : windowWidth;
+            const int sy = box ? std::max(box[1], refinedRows_) : refinedRows_,
+                      sy1 = box ? std::min(box[1] + box[3], windowHeight) : windowHeight;
+            if (sx1 > sx && sy1 > sy) {
+                gl::Scissor(sx, sy, sx1 - sx, sy1 - sy);
+                const int srcY0 = std::max(0, int(std::floor(y0)) - 1);  // a row below: the filter's neighbour
+                const double dstY0 = double(srcY0) * windowHeight / upscaleHeight_;
+                gl::BlitFramebuffer(0, srcY0, upscaleWidth_, upscaleHeight_, px0, int(std::lround(dstY0)), windowWidth,
+                                    windowHeight, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            }
+            if (!box) gl::Disable(GL_SCISSOR_TEST);
+            else gl::Scissor(box[0], box[1], box[2], box[3]);
         } else {
             gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
             gl::Clear(GL_COLOR_BUFFER_BIT);

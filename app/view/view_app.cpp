@@ -42,7 +42,10 @@ std::string readTextFile(const std::string& path) { return readRegularFile(path,
 // After the camera's last change, keep the low resolution this long before
 // refining: mouse-wheel notches and drag events arrive every 10-50 ms, and
 // refining between two of them would make every other frame a slow one.
-constexpr auto kSettleTime = std::chrono::milliseconds(200);
+// 120 ms, not 200 (issue 37): the still comes in bands of 100 ms, so a pause
+// mistaken for the end costs one band, not a whole blocking still, and the
+// full picture is back 80 ms sooner.
+constexpr auto kSettleTime = std::chrono::milliseconds(120);
 // Idle: wait for events at most this long (the file watchers wake the loop
 // at once; the time-out only refreshes the panel's clock-driven parts).
 constexpr double kIdleWaitSeconds = 0.5;
@@ -507,7 +510,8 @@ void ViewApp::renderPicture(bool fullResolution) {
         const double msPerRow = refineMsPerRow_ > 0 ? refineMsPerRow_ : adaptive_.msPerPixel() * frame.width;
         const int rows = refineRows_ > 0 ? refineRows_ : msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
         band0 = refineRow_;
-        band1 = std::min(frame.height, band0 + (refineRows_ > 0 ? rows : std::max(rows, kMinRefineRows)));
+        band1 = refineRows_ > 0 ? std::min(frame.height, band0 + rows)
+                                : std::min(frame.height, (band0 + std::max(rows, kMinRefineRows) + 15) / 16 * 16);  // llvmpipe's 16-row tiles whole
         refineStill_ = still != nullptr;
         // Over the full-size picture of the structure's program: it stays on
         // screen under the bands (the reduced one is the upscale source already).
