@@ -134,7 +134,8 @@ private:
     // bottom) of side `side`'s code; the CPU reference's breakdown alone,
     // with the reason, when the debugger's program does not build.
     std::string debugPickedPixel(int side, const Scene& scene, const Camera& camera, int width, int height, int i, int j);
-    // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
+    // The columns [x0, x0 + width) of the picture `half` shows (side by side), or (half < 0) the
+    // picture right of the docked panel (the whole window while it is hidden).
     void pictureColumns(int half, int& x0, int& width) const;
     // Side by side: the rows of the letterboxed half picture (top-left origin).
     void pictureRows(int half, int& y0, int& height) const;

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -152,6 +153,21 @@ const LayoutBox* find(const LayoutReport& r, const std::string& name) {
     return nullptr;
 }
 
+// A point of the picture, in window pixels, given as a fraction of the
+// whole window's picture (as it was before the panel docked): the picture
+// is right of the panel (its right edge plus a margin, as panelRect() and
+// the window put it) and shows the whole window's width of the scene, so a
+// sphere keeps its place across the picture's width and moves towards the
+// middle vertically by the picture's width over the window's.
+int pictureX(int w, int s, double fx) {
+    const double offset = std::round(10.0 * s + std::min(340.0 * s, 0.45 * w) + 10.0 * s);
+    return int(offset + fx * (w - offset));
+}
+int pictureY(int w, int h, int s, double fy) {
+    const double offset = std::round(10.0 * s + std::min(340.0 * s, 0.45 * w) + 10.0 * s);
+    return int(0.5 * h + (fy - 0.5) * h * (w - offset) / w);
+}
+
 // One window a size (the scales and states are script steps: one start-up,
 // one shader compile), the lecture scene against itself in Blinn-Phong
 // (--compare-model: a wipe and side by side without a second folder), the
@@ -177,7 +193,7 @@ void checkSize(int w, int h) {
         const std::string tag = "-" + std::to_string(s);
         script += "ui-scale " + std::to_string(s) + "\n" + shot(std::string("wipe") + tag);
         // The white sphere, right of the divider.
-        script += "pick " + std::to_string(int(0.70 * w)) + " " + std::to_string(int(0.48 * h)) + "\n" +
+        script += "pick " + std::to_string(pictureX(w, s, 0.70)) + " " + std::to_string(pictureY(w, h, s, 0.48)) + "\n" +
                   shot(std::string("pick") + tag);
     }
     script += "key P\n" + shot("toast");  // "saved raylab-....png" for 3 s, at UI scale 3
@@ -277,7 +293,8 @@ void checkViews(int w, int h, const std::vector<std::string>& views) {
         }
         script += "key H\n" + shot("help" + tag) + "key Escape\n";
         states.push_back("help" + tag);
-        script += "pick " + std::to_string(int(0.62 * w)) + " " + std::to_string(int(0.55 * h)) + "\n" + shot("pick" + tag);
+        script += "pick " + std::to_string(pictureX(w, s, 0.62)) + " " + std::to_string(pictureY(w, h, s, 0.55)) + "\n" +
+                  shot("pick" + tag);
         states.push_back("pick" + tag);
     }
     script += "quit\n";
