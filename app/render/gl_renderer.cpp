@@ -4,6 +4,7 @@
 #include "core/float_range.h"
 #include "render/define_table.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace rl {
@@ -127,7 +128,19 @@ void GlRenderer::draw(const ShaderProgram& program, const FrameSettings& frame) 
     if (error != GL_NO_ERROR) throw Error("OpenGL error while drawing: " + gl::errorName(error));
 }
 
-void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame) {
+void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame, int rows0, int rows1) {
+    // A band: every pass below scissored to its rows (a tile to its part in them).
+    const int y0 = std::clamp(rows0, 0, frame.height), y1 = rows1 < 0 ? frame.height : std::clamp(rows1, y0, frame.height);
+    const bool banded = y0 > 0 || y1 < frame.height;
+    const PixelRect band{0, y0, frame.width, y1 - y0};
+    auto bandOnly = [&] {
+        if (!banded) return;
+        gl::Enable(GL_SCISSOR_TEST);
+        gl::Scissor(band.x, band.y, band.width, band.height);
+    };
+    auto bandDone = [&] {
+        if (banded) gl::Disable(GL_SCISSOR_TEST);
+    };
     // The marks go into the depth buffer (cleared to 1, the mark 0) and the
     // exact program is drawn where the depth test passes: where the stored
     // depth is below its triangle's 0.5. llvmpipe tests depth before the
@@ -136,39 +149,46 @@ void GlRenderer::draw(const PictureProgram& picture, const FrameSettings& frame)
         resize(frame.width, frame.height);
         gl::BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
         const GLfloat one = 1.0f;
+        bandOnly();
         gl::ClearBufferfv(GL_DEPTH, 0, &one);
+        bandDone();
         gl::Enable(GL_DEPTH_TEST);
         gl::DepthFunc(GL_ALWAYS);
         gl::DepthMask(GL_TRUE);
     }
     const SkyTiles* tiles = picture.sky ? &skyTilesFor(frame) : nullptr;
     if (!tiles || tiles->sky.empty()) {
+        bandOnly();
         draw(picture.program, frame);
+        bandDone();
     } else {
         gl::Enable(GL_SCISSOR_TEST);
-        for (const PixelRect& r : tiles->sky) {
-            gl::Scissor(r.x, r.y, r.width, r.height);
-            draw(*picture.sky, frame);
-        }
-        for (const PixelRect& r : tiles->scene) {
-            gl::Scissor(r.x, r.y, r.width, r.height);
-            draw(picture.program, frame);
-        }
+        auto tile = [&](const PixelRect& r, const ShaderProgram& program) {
+            const int t0 = std::max(r.y, band.y), t1 = std::min(r.y + r.height, band.y + band.height);
+            if (t1 <= t0 || r.width <= 0) return;  // outside the band
+            gl::Scissor(r.x, t0, r.width, t1 - t0);
+            draw(program, frame);
+        };
+        for (const PixelRect& r : tiles->sky) tile(r, *picture.sky);
+        for (const PixelRect& r : tiles->scene) tile(r, picture.program);
         gl::Disable(GL_SCISSOR_TEST);
     }
     if (!picture.marks) return;
     gl::DepthMask(GL_FALSE);
     if (picture.exact) {
         gl::DepthFunc(GL_GREATER);
+        bandOnly();
         draw(*picture.exact, frame);
+        bandDone();
     }
     gl::DepthMask(GL_TRUE);
     gl::Disable(GL_DEPTH_TEST);
 }
 
-void GlRenderer::drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look) {
-    draw(picture, frame);
-    if (!look || !picture.marks || picture.exact || !lastFrameMarked()) return;
+void GlRenderer::drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look, int rows0, int rows1) {
+    draw(picture, frame, rows0, rows1);
+    const bool top = rows1 < 0 || rows1 >= frame.height;  // the last band: the whole frame is drawn
+    if (!top || !look || !picture.marks || picture.exact || !lastFrameMarked()) return;
     picture.exact = std::make_shared<ShaderProgram>(picture.buildExact());
     // The marks of the frame just drawn are still in the depth buffer.
     gl::Enable(GL_DEPTH_TEST);

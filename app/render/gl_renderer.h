@@ -59,13 +59,21 @@ public:
     // program everywhere else (one scissored draw per rectangle of tiles),
     // and where the picture's `exact` program is built, that program over
     // the marked pixels (the depth test skips the others).
-    void draw(const PictureProgram& picture, const FrameSettings& frame);
+    // Rows [rows0, rows1) only (GL rows, from the bottom; rows1 < 0: to the
+    // top): one band of a picture that comes in over several frames (the
+    // live view's still). Every pass keeps to the band (the depth clear, the
+    // sky tiles, the exact redraw), so the bands together are the one-shot
+    // frame, byte for byte.
+    void draw(const PictureProgram& picture, const FrameSettings& frame, int rows0 = 0, int rows1 = -1);
     // Draws `picture` and, where the frame has marked pixels, builds its
     // exact program (once) and draws them again: the frame as the exercise
     // files compute it. Reads the frame back to look for marks only where
     // `look` is set (the live view: when the camera rests), the picture's
     // programs can mark one and `exact` is not built yet.
-    void drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look = true);
+    // By bands (rows0, rows1 as draw()): the look at the whole frame (and the
+    // exact redraw of its marks) comes with the band that reaches the top.
+    void drawChecked(PictureProgram& picture, const FrameSettings& frame, bool look = true, int rows0 = 0,
+                     int rows1 = -1);
     // Like draw(), measuring the GPU time with a GL_TIME_ELAPSED query (ms).
     double drawTimed(const ShaderProgram& program, const FrameSettings& frame);
     double drawTimed(const PictureProgram& picture, const FrameSettings& frame);

@@ -14,8 +14,8 @@ namespace {
 // 13 pixels at UI scale 1).
 constexpr float kSlack = 0.5f;
 
-const char* const kKindNames[] = {"widget", "line", "part", "subject", "tool", "cover"};
-constexpr int kKinds = 6;
+const char* const kKindNames[] = {"widget", "line", "part", "subject", "tool", "cover", "dock", "picture"};
+constexpr int kKinds = 8;
 
 std::string number(float v) {
     char text[32];
@@ -67,12 +67,25 @@ std::vector<std::string> layoutProblems(const LayoutReport& report) {
         for (std::size_t j = i + 1; j < boxes.size(); ++j) {
             const LayoutBox &a = boxes[i], &b = boxes[j];
             if (a.kind == K::Part || b.kind == K::Part) continue;  // checked through their widget
+            // The docked panel is opaque: over the picture or a sphere it
+            // hides part of what the camera frames (issue 37: two of five
+            // spheres at 720p, UI scale 3).
+            const bool aDock = a.kind == K::Dock, bDock = b.kind == K::Dock;
+            if (aDock || bDock) {
+                const LayoutBox& other = aDock ? b : a;
+                if ((other.kind == K::Picture || other.kind == K::Subject) && shrunk(a.rect).overlaps(shrunk(b.rect)))
+                    out.push_back((aDock ? a : b).name + " covers " + other.name + ": " +
+                                  describe((aDock ? a : b).rect) + " over " + describe(other.rect));
+                if (other.kind == K::Picture || other.kind == K::Subject) continue;
+            }
+            if (a.kind == K::Picture || b.kind == K::Picture) continue;  // the overlays are over it by design
             const bool aSubject = a.kind == K::Subject, bSubject = b.kind == K::Subject;
             if (aSubject && bSubject) continue;                          // spheres may hide each other
             if (a.kind == K::Line && b.kind == K::Line) continue;        // the divider's own pieces
             if ((aSubject && b.kind != K::Widget) || (bSubject && a.kind != K::Widget)) continue;
             // The cover hides what is under it; only the tools (the panel) must stay clear of it.
-            if ((a.kind == K::Cover && b.kind != K::Tool) || (b.kind == K::Cover && a.kind != K::Tool)) continue;
+            const bool aTool = a.kind == K::Tool || aDock, bTool = b.kind == K::Tool || bDock;
+            if ((a.kind == K::Cover && !bTool) || (b.kind == K::Cover && !aTool)) continue;
             if (shrunk(a.rect).overlaps(shrunk(b.rect)))
                 out.push_back(a.name + " overlaps " + b.name + ": " + describe(a.rect) + " and " + describe(b.rect));
         }

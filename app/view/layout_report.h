@@ -31,6 +31,10 @@ struct LayoutBox {
                   // (the lecturer shows or hides the panel; a toast goes after 3 s)
         Cover,    // the help: opaque, over the picture and its overlays (which it hides, not
                   // overlaps); clear of the tools, inside the window, its parts whole (no scrolling)
+        Dock,     // the panel (or its strip), docked at the left: opaque, a tool that must also
+                  // stay clear of the picture and of every sphere the camera frames
+        Picture,  // where the picture is drawn (right of the docked panel): no dock over it;
+                  // widgets and tools may be (they are the picture's overlays)
     };
     std::string name;  // "caption", "errors", "panel", "sphere 3", ...
     Kind kind = Kind::Widget;

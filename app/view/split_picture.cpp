@@ -29,6 +29,21 @@ void SplitPicture::ensureUpscaleSource(int width, int height) const {
     upscaleHeight_ = height;
 }
 
+void SplitPicture::keepForRefining() {
+    if (width_ <= 0 || height_ <= 0 || sideBySide_) return;
+    ensureUpscaleSource(width_, height_);
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, upscaleFramebuffer_);
+    const int x0[2] = {0, split_}, x1[2] = {split_, width_};
+    for (int i = 0; i < 2; ++i) {
+        if (!drawn_[i] || x1[i] <= x0[i]) continue;
+        gl::BindFramebuffer(GL_READ_FRAMEBUFFER, sides_[i].framebuffer());
+        gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
+        gl::BlitFramebuffer(x0[i], 0, x1[i], height_, x0[i], 0, x1[i], height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+}
+
 void SplitPicture::setScene(const Scene& scene) {
     for (GlRenderer& side : sides_) side.setScene(scene);
 }
@@ -76,7 +91,7 @@ void SplitPicture::render(const ShaderProgram* left, const ShaderProgram* right,
     }
 }
 
-void SplitPicture::render(PictureProgram& picture, const FrameSettings& frame, bool look) {
+void SplitPicture::render(PictureProgram& picture, const FrameSettings& frame, bool look, int rows0, int rows1) {
     sideBySide_ = false;
     offset_ = 0;
     width_ = frame.width;
@@ -84,10 +99,11 @@ void SplitPicture::render(PictureProgram& picture, const FrameSettings& frame, b
     split_ = width_;
     drawn_[0] = true;
     drawn_[1] = false;
-    sides_[0].drawChecked(picture, frame, look);  // a marked pixel: its exact program, built once
+    sides_[0].drawChecked(picture, frame, look, rows0, rows1);  // a marked pixel: its exact program, built once
 }
 
-void SplitPicture::present(int windowWidth, int windowHeight, const int covered[4]) const {
+void SplitPicture::present(int windowWidth, int windowHeight, const int covered[4], int pictureX0) const {
+    pictureX0_ = sideBySide_ ? 0 : std::clamp(pictureX0, 0, std::max(0, windowWidth - 1));
     // The window less the covered rectangle, as up to four scissor boxes (GL
     // rows, bottom-up): right of it, left of it, above and below it. A blit
     // is cut by the scissor test, so each box copies its own pixels only.
@@ -117,30 +133,55 @@ void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box)
     auto offWindow = [] { gl::Disable(GL_SCISSOR_TEST); };
     gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     gl::Viewport(0, 0, windowWidth, windowHeight);
-    const int windowSplit = width_ > 0 ? int(std::lround(double(split_) * windowWidth / width_)) : 0;
+    // Not side by side: the picture's columns in the window, right of the docked panel.
+    const int px0 = pictureX0_, pictureWidth = windowWidth - px0;
+    const int windowSplit = width_ > 0 ? px0 + int(std::lround(double(split_) * pictureWidth / width_)) : px0;
     // The blits below cover the window when every side with columns drew;
     // then a clear would be one more pass over every window pixel (on
     // llvmpipe at 1080p, a few ms of a 33 ms budget).
-    const bool covered = !sideBySide_ && width_ > 0 && height_ > 0 && (drawn_[0] || windowSplit == 0) &&
+    const bool covered = !sideBySide_ && width_ > 0 && height_ > 0 && (drawn_[0] || windowSplit == px0) &&
                          (drawn_[1] || windowSplit == windowWidth);
     if (!covered) {
         toWindow();
         gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         gl::Clear(GL_COLOR_BUFFER_BIT);
         offWindow();
+    } else if (px0 > 0) {  // the columns left of the picture (the panel's), within the box
+        const int bx0 = box ? box[0] : 0, bx1 = box ? std::min(box[0] + box[2], px0) : px0;
+        if (bx1 > bx0) {
+            gl::Enable(GL_SCISSOR_TEST);
+            gl::Scissor(bx0, box ? box[1] : 0, bx1 - bx0, box ? box[3] : windowHeight);
+            gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+            gl::Clear(GL_COLOR_BUFFER_BIT);
+            gl::Disable(GL_SCISSOR_TEST);
+        }
     }
     if (width_ == 0 || height_ == 0) return;
-    const bool sameSize = width_ == windowWidth && height_ == windowHeight;
+    const bool sameSize = width_ == (sideBySide_ ? windowWidth : pictureWidth) && height_ == windowHeight;
     if (sameSize && !sideBySide_ && refinedRows_ >= 0 && refinedRows_ < height_) {
         // Refining: the last reduced picture, upscaled from its 8-bit copy
         // (not refreshed: the targets are full size now), then the bands
         // done, 1:1, over it.
         toWindow();
         if (upscaleWidth_ > 0 && upscaleHeight_ > 0) {
+            // Only the rows the bands have not reached (llvmpipe samples
+            // every pixel of a scaled blit: the refined rows would be drawn twice).
+            const double y0 = double(refinedRows_) * upscaleHeight_ / windowHeight;
             gl::BindFramebuffer(GL_READ_FRAMEBUFFER, upscaleFramebuffer_);
             gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
-            gl::BlitFramebuffer(0, 0, upscaleWidth_, upscaleHeight_, 0, 0, windowWidth, windowHeight,
-                                GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            gl::Enable(GL_SCISSOR_TEST);
+            const int sx = box ? std::max(box[0], px0) : px0, sx1 = box ? std::min(box[0] + box[2], windowWidth) : windowWidth;
+            const int sy = box ? std::max(box[1], refinedRows_) : refinedRows_,
+                      sy1 = box ? std::min(box[1] + box[3], windowHeight) : windowHeight;
+            if (sx1 > sx && sy1 > sy) {
+                gl::Scissor(sx, sy, sx1 - sx, sy1 - sy);
+                const int srcY0 = std::max(0, int(std::floor(y0)) - 1);  // a row below: the filter's neighbour
+                const double dstY0 = double(srcY0) * windowHeight / upscaleHeight_;
+                gl::BlitFramebuffer(0, srcY0, upscaleWidth_, upscaleHeight_, px0, int(std::lround(dstY0)), windowWidth,
+                                    windowHeight, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+            }
+            if (!box) gl::Disable(GL_SCISSOR_TEST);
+            else gl::Scissor(box[0], box[1], box[2], box[3]);
         } else {
             gl::ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
             gl::Clear(GL_COLOR_BUFFER_BIT);
@@ -150,7 +191,8 @@ void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box)
             if (!drawn_[i] || x1 <= x0 || refinedRows_ <= 0) continue;
             gl::BindFramebuffer(GL_READ_FRAMEBUFFER, sides_[i].framebuffer());
             gl::ReadBuffer(GL_COLOR_ATTACHMENT0);
-            gl::BlitFramebuffer(x0, 0, x1, refinedRows_, x0, 0, x1, refinedRows_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            gl::BlitFramebuffer(x0, 0, x1, refinedRows_, px0 + x0, 0, px0 + x1, refinedRows_, GL_COLOR_BUFFER_BIT,
+                                GL_NEAREST);
         }
         offWindow();
         gl::BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -158,7 +200,7 @@ void SplitPicture::presentAll(int windowWidth, int windowHeight, const int* box)
     }
     const int src0[2] = {0, sideBySide_ ? 0 : split_},
               src1[2] = {sideBySide_ ? split_ - offset_ : split_, sideBySide_ ? std::max(1, width_ - split_) : width_};
-    const int windowOffset = width_ > 0 ? int(std::lround(double(offset_) * windowWidth / width_)) : 0;
+    const int windowOffset = sideBySide_ ? (width_ > 0 ? int(std::lround(double(offset_) * windowWidth / width_)) : 0) : px0;
     const int dst0[2] = {windowOffset, windowSplit}, dst1[2] = {windowSplit, windowWidth};
     // Rows: the whole height, or side by side the letterboxed half picture,
     // centred (its top (windowHeight - rows) / 2 rows below the window's top).

@@ -25,10 +25,16 @@ public:
     // rows [0, rows) over the last reduced picture, upscaled (kept from the
     // last present at a reduced size); -1: the picture alone.
     void setRefinedRows(int rows) { refinedRows_ = rows; }
+    // Before the first band over a picture already at full size (drawn by
+    // the structure's program while the hand moved): that picture becomes
+    // the one the bands come in over.
+    void keepForRefining();
     // One picture over the whole frame, with its sky tiles where it has a sky
     // program; `look`: read the frame back for marked pixels
     // (GlRenderer::drawChecked: the view looks when the camera rests).
-    void render(PictureProgram& picture, const FrameSettings& frame, bool look);
+    // Rows [rows0, rows1) as above: a band of the still (GlRenderer::draw's
+    // bands: the sky tiles and the exact redraw keep to it too).
+    void render(PictureProgram& picture, const FrameSettings& frame, bool look, int rows0 = 0, int rows1 = -1);
 
     // Side by side: two whole pictures, the same camera, each half of the
     // columns right of leftFraction of the width (the panel's; the right one
@@ -42,7 +48,10 @@ public:
     // stretched to windowWidth x windowHeight (bilinear when upscaling).
     // `covered` (window pixels, origin top-left): an opaque rectangle drawn
     // over the picture afterwards (the panel), whose pixels are not copied.
-    void present(int windowWidth, int windowHeight, const int covered[4] = nullptr) const;
+    // `pictureX0`: the picture (not side by side) goes to the window's
+    // columns [pictureX0, windowWidth), right of the docked panel; the
+    // columns left of it are cleared.
+    void present(int windowWidth, int windowHeight, const int covered[4] = nullptr, int pictureX0 = 0) const;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -71,6 +80,7 @@ private:
     int halfHeight_ = 0;
     bool sideBySide_ = false;
     int refinedRows_ = -1;
+    mutable int pictureX0_ = 0;  // present()'s
 };
 
 }  // namespace rl

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -41,14 +42,17 @@ std::string readTextFile(const std::string& path) { return readRegularFile(path,
 // After the camera's last change, keep the low resolution this long before
 // refining: mouse-wheel notches and drag events arrive every 10-50 ms, and
 // refining between two of them would make every other frame a slow one.
-constexpr auto kSettleTime = std::chrono::milliseconds(200);
+// 120 ms, not 200 (issue 37): the still comes in bands of 100 ms, so a pause
+// mistaken for the end costs one band, not a whole blocking still, and the
+// full picture is back 80 ms sooner.
+constexpr auto kSettleTime = std::chrono::milliseconds(120);
 // Idle: wait for events at most this long (the file watchers wake the loop
 // at once; the time-out only refreshes the panel's clock-driven parts).
 constexpr double kIdleWaitSeconds = 0.5;
 // Frames drawn after any wake-up before waiting again: ImGui needs one or
 // two frames to settle hover and layout after an input event.
 constexpr int kFramesAfterWake = 3;
-// A term view refines in bands of about this long each (one a frame): the
+// A still refines in bands of about this long each (one a frame): the
 // window answers input 10 times a second while the full picture comes in.
 constexpr double kRefineBandMs = 100.0;
 constexpr int kMinRefineRows = 8;
@@ -149,6 +153,7 @@ ViewApp::ViewApp(const ViewOptions& options) : options_(options), scene_(options
     state_.panelStrip = options_.panelStrip;
     state_.showCaptions = !options_.hideCaptions;
     state_.sideBySide = options_.sideBySide && sides_.size() == 2;
+    if (const char* rows = std::getenv("RAYLAB_REFINE_ROWS")) refineRows_ = std::max(0, std::atoi(rows));
     framesLeft_ = options_.frames;
     if (options_.frames > 0) state_.continuous = true;  // every frame renders: the median is the renderer's
     if (options_.fullscreen) window_->toggleFullscreen();
@@ -194,7 +199,7 @@ void ViewApp::frame() {
         dirty_ = true;
     }
     if (fbWidth_ <= 0 || fbHeight_ <= 0) return;  // minimised: nothing to draw
-    trackball_->setViewport(fbWidth_, fbHeight_);
+    trackball_->setViewport(sideBySideActive() ? fbWidth_ : std::max(1, fbWidth_ - pictureOffset()), fbHeight_);
     adaptive_.enabled = state_.adaptiveResolution;
     while (auto result = timer_->poll()) {
         stats_.addGpu(result->ms);
@@ -229,13 +234,19 @@ void ViewApp::frame() {
                              pendingShot_.empty() && !panelRects_.panel.empty();
     const int covered[4] = {int(std::ceil(panelNow.x0)), int(std::ceil(panelNow.y0)), int(std::floor(panelNow.x1)),
                             int(std::floor(panelNow.y1))};
-    picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr);
+    picture_->present(fbWidth_, fbHeight_, panelSteady ? covered : nullptr, pictureOffset());
     panelSteady_ = panelSteady;
     endPart(FrameParts::Present);
     const std::vector<OverlaySegment> rays = pickedRays();
     const std::vector<OverlayLabel> labels = sideBySideLabels();
     // What the caption keeps clear of: the spheres, the panel, the wipe's names.
     layout_ = LayoutReport{fbWidth_, fbHeight_, ui_->scale(), {}};
+    {  // where the picture is: the docked panel stays clear of it
+        int x0 = 0, width = 0, y0 = 0, rows = 0;
+        pictureColumns(sideBySideActive() ? 0 : -1, x0, width);
+        pictureRows(sideBySideActive() ? 0 : -1, y0, rows);
+        layout_.add("picture", LayoutBox::Kind::Picture, {float(x0), float(y0), float(fbWidth_), float(y0 + rows)});
+    }
     std::vector<LayoutRect> avoid;
     for (const auto& [name, rect] : subjectRects()) {
         layout_.add(name, LayoutBox::Kind::Subject, rect);
@@ -243,6 +254,13 @@ void ViewApp::frame() {
     }
     const LayoutRect panel = panelPixels();
     if (!panel.empty()) avoid.push_back(panel);
+    // The columns left of the picture (the panel's and its margin): the
+    // caption stays on the picture, whole in its screenshot.
+    if (const int x0 = sideBySideActive() ? 0 : pictureOffset(); x0 > 0) avoid.push_back({0, 0, float(x0), float(fbHeight_)});
+    // The asked pixel's answer, where it was last frame (it is placed after
+    // the caption, clear of it; beside the docked panel the picture is
+    // narrower, and without this the two could find no room apart).
+    if (!labelPixels_.empty()) avoid.push_back(labelPixels_);
     float topReserved = 0;
     WipeLabels wipeLabels;
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
@@ -459,11 +477,16 @@ PictureProgram* ViewApp::stillPicture(Side& side) {
 bool ViewApp::moving() const { return dragButton_ >= 0 || draggingDivider_ || Clock::now() - lastMove_ < kSettleTime; }
 
 void ViewApp::renderPicture(bool fullResolution) {
-    const double scale = fullResolution ? 1.0 : adaptive_.scale(moving(), fbWidth_, fbHeight_);
+    const bool stillWasPending = stillPending_;  // the last picture: the structure's program at full size
+    // Right of the docked panel (the whole window side by side: its halves
+    // leave the panel's columns themselves).
+    const int pictureWidth = sideBySideActive() ? fbWidth_ : std::max(1, fbWidth_ - pictureOffset());
+    const double scale = fullResolution ? 1.0 : adaptive_.scale(moving(), pictureWidth, fbHeight_);
     stillPending_ = false;
     FrameSettings frame = frameFromScene(scene_.scene());
     frame.cameraToWorld = trackball_->cameraToWorldD();
-    frame.width = std::max(1, int(std::lround(fbWidth_ * scale)));
+    frame.fovYRadians = 2.0 * std::atan(std::tan(0.5 * frame.fovYRadians) * fovScale());
+    frame.width = std::max(1, int(std::lround(pictureWidth * scale)));
     frame.height = std::max(1, int(std::lround(fbHeight_ * scale)));
     frame.view = state_.view;
     frame.viewBounce = state_.viewBounce;
@@ -472,25 +495,34 @@ void ViewApp::renderPicture(bool fullResolution) {
     PictureProgram* still = stillPicture(sides_[0]);
     const ShaderProgram* left = sides_[0].program->program();
     const ShaderProgram* right = sides_.size() > 1 ? sides_[1].program->program() : nullptr;
-    // A term view's full picture (the generic program: seconds at 1080p on
-    // llvmpipe) in bands of rows, one a frame, over the upscaled moving
-    // picture, so the window keeps answering while it refines (issue 37).
-    // The first band after a change starts at row 0; a move starts over.
-    const bool progressive = scale == 1.0 && !fullResolution && !still && !sideBySideActive() &&
-                             !isPictureView(state_.view) && renderedScale_ > 0 && (renderedScale_ < 1.0 || refineRow_ > 0);
+    // Every still (a term view's generic program, the picture's still
+    // program with its sky tiles: up to seconds at 1080p on llvmpipe) in
+    // bands of rows, one a frame, over the upscaled moving picture, so the
+    // window keeps answering while it refines (issue 37). The first band
+    // after a change starts at row 0; a move starts over, and so does
+    // another program.
+    const bool progressive = scale == 1.0 && !fullResolution && !sideBySideActive() && renderedScale_ > 0 &&
+                             (renderedScale_ < 1.0 || refineRow_ > 0 || (stillWasPending && still));
     int band0 = 0, band1 = frame.height;
     if (progressive) {
-        const double msPerRow = adaptive_.msPerPixel() * frame.width;
-        const int rows = msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
+        if (refineRow_ > 0 && refineStill_ != (still != nullptr)) refineRow_ = 0;
+        if (refineRow_ == 0) refineMsPerRow_ = 0;  // a new still: the moving frames' estimate first
+        const double msPerRow = refineMsPerRow_ > 0 ? refineMsPerRow_ : adaptive_.msPerPixel() * frame.width;
+        const int rows = refineRows_ > 0 ? refineRows_ : msPerRow > 0 ? int(kRefineBandMs / msPerRow) : frame.height / 8;
         band0 = refineRow_;
-        band1 = std::min(frame.height, band0 + std::max(rows, kMinRefineRows));
+        band1 = refineRows_ > 0 ? std::min(frame.height, band0 + rows)
+                                : std::min(frame.height, (band0 + std::max(rows, kMinRefineRows) + 15) / 16 * 16);  // llvmpipe's 16-row tiles whole
+        refineStill_ = still != nullptr;
+        // Over the full-size picture of the structure's program: it stays on
+        // screen under the bands (the reduced one is the upscale source already).
+        if (band0 == 0 && renderedScale_ >= 1.0) picture_->keepForRefining();
     }
     const double pixels = double(frame.width) * (band1 - band0);
     const auto renderStart = Clock::now();
     if (!softwareRenderer_) timer_->begin(pixels);
     try {
-        if (still)  // the whole frame: with its sky tiles
-            picture_->render(*still, frame, !moving());
+        if (still)  // the whole frame (or its band): with its sky tiles
+            picture_->render(*still, frame, !moving(), band0, band1);
         else if (sideBySideActive())
             picture_->renderSideBySide(left, right, frame, double(sideBySideOffset()) / std::max(fbWidth_, 1));
         else
@@ -508,6 +540,7 @@ void ViewApp::renderPicture(bool fullResolution) {
         stats_.addGpu(lastRenderMs_);
         adaptive_.record(lastRenderMs_, pixels);
         if (scale == 1.0 && !progressive) fullRenderMs_.push_back(lastRenderMs_);
+        if (progressive && band1 > band0) refineMsPerRow_ = lastRenderMs_ / (band1 - band0);
     } else {
         timer_->end();
     }
@@ -569,7 +602,9 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     // names (and the caption when it went to the top); clear of the
     // overlays, but it may cover spheres for those seconds.
     LayoutRect toastBox;
-    if (Clock::now() < toastUntil_) {
+    // While an error box is shown, no toast: the error has the room (the
+    // toast's message is in the terminal and the panel's status).
+    if (Clock::now() < toastUntil_ && errorBox.empty()) {
         float top = wipeActive() ? std::max(wipeLabels.left.y1, wipeLabels.right.y1) + 10 * scale : 0.0f;
         for (const LayoutRect& l : captionPlaced_.labels) top = std::max(top, toUnits(l).y1 + 10 * scale);
         if (!captionPlaced_.box.empty() && captionPlaced_.box.y0 < 0.5f * fbHeight_)
@@ -582,7 +617,7 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
     // goes around it (view/asked_pixel_label.h). The help, while open, has
     // the window: the label comes back when it closes.
     LayoutRect labelBox;
-    if (!askedLabel_.lines.empty() && sameCamera(askedCamera_, trackball_->camera()) && !state_.showHelp) {
+    if (!askedLabel_.lines.empty() && sameCamera(askedCamera_, pictureCamera()) && !state_.showHelp) {
         std::vector<LayoutRect> avoid = {errorBox, panelRects_.panel, toastBox};
         if (wipeActive()) avoid.insert(avoid.end(), {wipeLabels.left, wipeLabels.right});
         if (!captionPlaced_.box.empty()) avoid.push_back(toUnits(captionPlaced_.box));
@@ -590,6 +625,11 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         labelBox = drawAskedPixelLabel(askedLabel_, scale, avoid);
         layout_.add("asked pixel label", LayoutBox::Kind::Tool, toPixels(labelBox));
     }
+    const LayoutRect labelBefore = labelPixels_;
+    labelPixels_ = labelBox.empty() ? LayoutRect{} : toPixels(labelBox);
+    if (labelBefore.x0 != labelPixels_.x0 || labelBefore.y0 != labelPixels_.y0 || labelBefore.x1 != labelPixels_.x1 ||
+        labelBefore.y1 != labelPixels_.y1)
+        framesBeforeIdle_ = std::max(framesBeforeIdle_, 2);  // the caption moves aside next frame
     if (wipeActive()) {
         std::vector<LayoutRect> clear = {wipeLabels.left, wipeLabels.right, errorBox, panelRects_.panel, toastBox, labelBox};
         if (!captionPlaced_.box.empty()) clear.push_back(toUnits(captionPlaced_.box));
@@ -622,7 +662,7 @@ void ViewApp::drawUi(ViewRequests& requests, const WipeLabels& wipeLabels) {
         layout_.add(i == 0 ? "left name" : "right name", LayoutBox::Kind::Widget, captionPlaced_.labels[i]);
     const PanelRects& p = panelRects_;
     if (!p.panel.empty()) {
-        layout_.add("panel", LayoutBox::Kind::Tool, toPixels(p.panel));
+        layout_.add("panel", LayoutBox::Kind::Dock, toPixels(p.panel));
         if (!p.titleBar.empty()) {
             layout_.add("panel title bar", LayoutBox::Kind::Part, toPixels(p.titleBar), "panel");
             layout_.add("panel title", LayoutBox::Kind::Part, toPixels(p.title), "panel title bar");
@@ -658,7 +698,7 @@ std::vector<std::pair<std::string, LayoutRect>> ViewApp::subjectRects() const {
     const glm::dvec3 f = glm::normalize(camera.target - camera.position);
     const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
     const glm::dvec3 u = glm::cross(r, f);
-    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
+    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees)) * fovScale();
     const int halves = sideBySideActive() ? 2 : 1;
     for (int half = 0; half < halves; ++half) {
         int x0 = 0, width = fbWidth_, y0 = 0, height = fbHeight_;
@@ -732,7 +772,17 @@ void ViewApp::handleRequests(const ViewRequests& r) {
 
 void ViewApp::writeScreenshot(const std::string& file, bool withUi) {
     try {
-        writePng(file, readWindowPixels(fbWidth_, fbHeight_));
+        DisplayImage shot = readWindowPixels(fbWidth_, fbHeight_);
+        // The picture's screenshot is the picture (right of the docked
+        // panel), the window's the whole window (docs/decisions.md).
+        if (const int x0 = sideBySideActive() ? 0 : pictureOffset(); !withUi && x0 > 0 && x0 < shot.width) {
+            DisplayImage picture{shot.width - x0, shot.height, std::vector<std::uint8_t>(std::size_t(shot.width - x0) * shot.height * 3)};
+            for (int y = 0; y < shot.height; ++y)
+                for (int x = x0; x < shot.width; ++x)
+                    for (int c = 0; c < 3; ++c) picture.at(x - x0, y)[c] = shot.at(x, y)[c];
+            shot = std::move(picture);
+        }
+        writePng(file, shot);
         const std::string shown = fs::absolute(file).lexically_normal().string();
         std::cout << "raylab: screenshot " << shown << (withUi ? " (window)" : "") << std::endl;
         status_ = "saved " + shown;
@@ -828,7 +878,7 @@ std::vector<OverlaySegment> ViewApp::pickedRays() const {
     const glm::dvec3 f = glm::normalize(camera.target - camera.position);
     const glm::dvec3 r = glm::normalize(glm::cross(f, camera.up));
     const glm::dvec3 u = glm::cross(r, f);
-    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees));
+    const double tanHalf = std::tan(0.5 * glm::radians(scene.camera.fovYDegrees)) * fovScale();
     // Side by side: the half the pixel was asked in; asked in the wipe or
     // the whole window before X, the half of the code it was asked of
     // (issue 37: the rays stayed at their full-window places, across the names).
@@ -904,9 +954,28 @@ std::string ViewApp::windowTitle() const {
     return "raylab view - " + sceneName(scene_.path()) + " - " + implementationsTitle_;
 }
 
-int ViewApp::sideBySideOffset() const {
-    if (!sideBySideActive() || !state_.showPanel) return 0;
-    // Right of the panel (or its strip), as the labels were: both pictures clear of it.
+int ViewApp::sideBySideOffset() const { return sideBySideActive() ? pictureOffset() : 0; }
+
+double ViewApp::fovScale() const {
+    if (sideBySideActive()) return 1.0;  // each half is the whole window's picture, letterboxed
+    const int offset = pictureOffset();
+    return double(std::max(fbWidth_, 1)) / std::max(fbWidth_ - offset, 1);
+}
+
+Camera ViewApp::pictureCamera() const {
+    Camera camera = trackball_->camera();
+    const double tanHalf = std::tan(0.5 * glm::radians(scene_.scene().camera.fovYDegrees)) * fovScale();
+    camera.fovYDegrees = glm::degrees(2.0 * std::atan(tanHalf));
+    return camera;
+}
+
+glm::dvec2 ViewApp::trackballPixel(glm::dvec2 pixel) const {
+    return sideBySideActive() ? pixel : pixel - glm::dvec2(pictureOffset(), 0);
+}
+
+int ViewApp::pictureOffset() const {
+    if (!state_.showPanel) return 0;
+    // Right of the panel (or its strip), with a margin: the picture clear of it.
     const float s = ui_->scale(), margin = 10 * s;
     const glm::dvec2 perUnit = 1.0 / toWindowUnits();  // framebuffer pixels per window unit
     const float strip = state_.panelStrip ? 3.5f * 13 * s + 2 * margin : 0;
@@ -966,7 +1035,8 @@ void ViewApp::printStats() const {
                     "longest %.0f ms)\n",
                     FrameStats::median(stillBackMs_), stillBackMs_.size(),
                     *std::max_element(stillBackMs_.begin(), stillBackMs_.end()));
-    if (refineBands_ > 0) std::printf("raylab view: still: term views refined in %d bands of about %.0f ms\n", refineBands_, kRefineBandMs);
+    if (refineBands_ > 0)
+        std::printf("raylab view: still: still frames refined in %d bands of about %.0f ms\n", refineBands_, kRefineBandMs);
     if (options_.stats && parts_.movingFrames() > 0) {
         const double interval = parts_.movingIntervalMs();
         std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,

@@ -134,12 +134,26 @@ private:
     // bottom) of side `side`'s code; the CPU reference's breakdown alone,
     // with the reason, when the debugger's program does not build.
     std::string debugPickedPixel(int side, const Scene& scene, const Camera& camera, int width, int height, int i, int j);
-    // The columns [x0, x0 + width) of the picture `half` shows (side by side), or the window's.
+    // The columns [x0, x0 + width) of the picture `half` shows (side by side), or (half < 0) the
+    // picture right of the docked panel (the whole window while it is hidden).
     void pictureColumns(int half, int& x0, int& width) const;
     // Side by side: the rows of the letterboxed half picture (top-left origin).
     void pictureRows(int half, int& y0, int& height) const;
     // Side by side: framebuffer columns left of the pictures (the panel's).
     int sideBySideOffset() const;
+    // The framebuffer columns left of the picture: the docked panel's (or
+    // its strip's) with a margin while it is shown, 0 while hidden. The
+    // picture takes the rest of the window (docs/decisions.md, "The picture
+    // beside the panel").
+    int pictureOffset() const;
+    // tan(fov_y / 2) of the picture over the scene's: the picture beside the
+    // panel shows the whole window's width of the scene (its field of view
+    // grows upwards and downwards instead of losing the spheres at the sides).
+    double fovScale() const;
+    // The trackball's camera with the picture's field of view: what the
+    // picture, a pick and the projected rays are computed with.
+    Camera pictureCamera() const;
+    glm::dvec2 trackballPixel(glm::dvec2 pixel) const;  // window pixels -> the picture's, for the trackball
 
     // ScriptTarget
     void scriptMouseButton(int button, bool pressed, glm::dvec2 pixel) override;
@@ -188,7 +202,10 @@ private:
     std::vector<double> stillBackMs_;    // from the last move to the swap of the full picture, for --stats
     bool wasMoving_ = false;             // the last rendered frame was a moving one
     int refineBands_ = 0;                // bands drawn, for --stats
-    int refineRow_ = 0;                  // a term view refining: the next band's first row (from the bottom); 0 = none
+    int refineRow_ = 0;                  // a still refining: the next band's first row (from the bottom); 0 = none
+    bool refineStill_ = false;           // the refining bands are the still program's
+    double refineMsPerRow_ = 0;          // the last band's cost (software renderers), for the next band's rows
+    int refineRows_ = 0;                 // RAYLAB_REFINE_ROWS: bands of this many rows (tests: bands at a small size); 0 = by time
     double lowestScale_ = 1.0;        // the lowest scale rendered while moving, for --stats
     Clock::time_point lastMove_{};    // last camera, value or window-size change
     int framesBeforeIdle_ = 0;        // frames to draw before waiting for events
@@ -218,6 +235,7 @@ private:
     CaptionLayer::Placement captionPlaced_;  // this frame's caption and names
     LayoutRect errorArea_;                   // where the error box may go this frame, framebuffer pixels
     float errorBoxHeight_ = 0;               // the error box's height last frame, framebuffer pixels
+    LayoutRect labelPixels_;                 // the asked pixel's label last frame, framebuffer pixels: the caption keeps clear of it
     std::string status_;         // last save / screenshot, for the panel
     std::string implementationsTitle_;
     int pickedSide_ = 0;   // the code the asked pixel was asked of (0 left / --impl, 1 right)

@@ -136,7 +136,10 @@ glm::dvec2 ViewApp::toWindowUnits() const {
     return {double(windowWidth) / std::max(fbWidth_, 1), double(windowHeight) / std::max(fbHeight_, 1)};
 }
 
-double ViewApp::dividerPixel() const { return state_.divider * fbWidth_; }
+double ViewApp::dividerPixel() const {
+    const int x0 = pictureOffset();  // the divider divides the picture, right of the panel
+    return x0 + state_.divider * std::max(fbWidth_ - x0, 1);
+}
 
 void ViewApp::cameraMoved() {
     lastMove_ = Clock::now();
@@ -173,7 +176,7 @@ void ViewApp::onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fro
             draggingDivider_ = false;
             dirty_ = true;
         } else if (button == dragButton_) {
-            trackball_->drag(pixel);
+            trackball_->drag(trackballPixel(pixel));
             trackball_->endDrag();
             dragButton_ = -1;
             cameraMoved();
@@ -193,17 +196,18 @@ void ViewApp::onMouseButton(int button, bool pressed, glm::dvec2 pixel, bool fro
         mode = Trackball::Mode::Pan;
     else
         return;
-    trackball_->beginDrag(pixel, mode);
+    trackball_->beginDrag(trackballPixel(pixel), mode);
     dragButton_ = button;
     cameraMoved();
 }
 
 void ViewApp::onCursor(glm::dvec2 pixel) {
     if (draggingDivider_) {
-        state_.divider = std::clamp(pixel.x / std::max(fbWidth_, 1), 0.0, 1.0);
+        const int x0 = pictureOffset();
+        state_.divider = std::clamp((pixel.x - x0) / std::max(fbWidth_ - x0, 1), 0.0, 1.0);
         cameraMoved();  // not the camera, but the same "moving" state: low resolution until it stops
     } else if (dragButton_ >= 0) {
-        trackball_->drag(pixel);
+        trackball_->drag(trackballPixel(pixel));
         cameraMoved();
     }
 }
@@ -218,8 +222,13 @@ void ViewApp::pickPixel(glm::dvec2 pixel) {
         return;
     }
     const int i = int(std::floor(pixel.x)), row = int(std::floor(pixel.y));
+    if (!sideBySideActive() && i < pictureOffset()) {  // the docked panel's columns: no picture there
+        std::cerr << "raylab: error: pick (" << i << ", " << row << "): left of the picture (the panel's columns 0 to "
+                  << pictureOffset() - 1 << ")" << std::endl;
+        return;
+    }
     try {
-        Camera camera = trackball_->camera();
+        Camera camera = pictureCamera();  // the picture's field of view (beside the panel: wider)
         // Side by side, each half is a whole picture of its own width with
         // the same camera: the pixel is asked of the half it is in, in that
         // half's model (--compare-model).
@@ -299,7 +308,12 @@ std::string ViewApp::debugPickedPixel(int side, const Scene& scene, const Camera
 void ViewApp::pictureColumns(int half, int& x0, int& width) const {
     x0 = 0;
     width = fbWidth_;
-    if (half < 0 || !sideBySideActive()) return;
+    if (half < 0 || !sideBySideActive()) {  // right of the docked panel
+        if (sideBySideActive()) return;
+        x0 = pictureOffset();
+        width = std::max(1, fbWidth_ - x0);
+        return;
+    }
     // As SplitPicture::renderSideBySide at full resolution.
     const int offset = sideBySideOffset(), split = offset + std::max(1, (fbWidth_ - offset) / 2);
     x0 = half == 0 ? offset : split;

@@ -22,7 +22,9 @@ using rl::test::writeText;
 namespace {
 
 // Small windows: llvmpipe renders 160x120 in milliseconds, and every
-// feature under test shows at that size.
+// feature under test shows at that size. The panel hidden (--no-panel): the
+// picture is then the whole window, as `raylab render` draws it (shown, the
+// panel docks at the left and the picture takes the rest).
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 const std::string kSize = "160x120";
@@ -53,7 +55,7 @@ protected:
     // `raylab view --script` with the given script text; expects exit 0.
     RunResult view(const std::string& script, std::vector<std::string> extra = {}) {
         writeText(dir / "script.txt", script);
-        std::vector<std::string> args = {"view", lectureScene(), "--size", kSize, "--no-captions", "--script", "script.txt"};
+        std::vector<std::string> args = {"view", lectureScene(), "--size", kSize, "--no-captions", "--no-panel", "--script", "script.txt"};
         args.insert(args.end(), extra.begin(), extra.end());
         return runRaylab(args, env, dir.path());
     }
@@ -75,7 +77,7 @@ void expectSamePicture(const DisplayImage& got, const DisplayImage& expected, co
 }  // namespace
 
 TEST_F(ViewTest, WindowPictureMatchesHeadlessRender) {
-    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--frames", "3", "--screenshot", "window.png"},
+    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--no-panel", "--frames", "3", "--screenshot", "window.png"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
     EXPECT_NE(v.out.find("median"), std::string::npos) << "--frames prints the median frame time: " << v.out;
@@ -169,7 +171,7 @@ TEST_P(TeachingViewTest, RendersFiniteAndTheWindowShowsIt) {
     for (float v : radiance.rgb) nonFinite += std::isfinite(v) ? 0 : 1;
     EXPECT_EQ(nonFinite, 0) << view << ": NaN or Inf in the radiance";
 
-    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--view", view, "--frames", "1", "--screenshot",
+    RunResult v = runRaylab({"view", lectureScene(), "--size", kSize, "--no-captions", "--no-panel", "--view", view, "--frames", "1", "--screenshot",
                              "window-" + view + ".png"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
@@ -236,7 +238,7 @@ TEST_F(ViewTest, RealMouseAndKeysThroughTheWindowSystem) {
 TEST_F(ViewTest, BlinnPhongWipeAgainstPbr) {
     const std::string row = (sourceRoot() / "scenes" / "presets" / "02-metallic-0-to-1.json").string();
     writeText(dir / "script.txt", "divider 0.5\nwait 1\nscreenshot wipe.png\nquit\n");
-    RunResult v = runRaylab({"view", row, "--size", kSize, "--no-captions", "--compare-model", "blinn-phong", "--script", "script.txt"},
+    RunResult v = runRaylab({"view", row, "--size", kSize, "--no-captions", "--no-panel", "--compare-model", "blinn-phong", "--script", "script.txt"},
                             env, dir.path());
     ASSERT_EQ(v.status, 0) << v.err;
     Scene blinnPhong = loadSceneFile(row).scene;

@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -89,6 +90,25 @@ TEST(LayoutRules, TheHelpCoversWidgetsNotThePanelAndItsRowsAreWhole) {
     EXPECT_EQ(parseLayoutJson(layoutJson(r), "layout.json").boxes[2].kind, K::Cover);
 }
 
+// The docked panel (issue 37): opaque, so it must leave the picture area
+// and every sphere the camera frames visible (at 720p, UI scale 3 it hid
+// two of five); the caption over the picture is its overlay, no problem.
+TEST(LayoutRules, TheDockedPanelCoversNeitherThePictureNorASphere) {
+    LayoutReport r = window720();
+    r.add("picture", K::Picture, {636, 0, 1280, 720});
+    r.add("panel", K::Dock, {30, 30, 606, 690});
+    r.add("sphere 1", K::Subject, {800, 300, 880, 380});
+    r.add("caption", K::Widget, {640, 480, 1270, 700});
+    EXPECT_TRUE(layoutProblems(r).empty()) << layoutProblems(r).front();
+    r.boxes[0].rect.x0 = 0;  // the picture under the panel, as before
+    r.add("sphere 2", K::Subject, {500, 300, 580, 380});
+    const auto problems = layoutProblems(r);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].find("panel covers picture"), std::string::npos) << problems[0];
+    EXPECT_NE(problems[1].find("panel covers sphere 2"), std::string::npos) << problems[1];
+    EXPECT_EQ(parseLayoutJson(layoutJson(r), "layout.json").boxes[1].kind, K::Dock);
+}
+
 TEST(LayoutRules, TheReportSurvivesItsJson) {
     LayoutReport r = window720();
     r.uiScale = 2;
@@ -133,6 +153,21 @@ const LayoutBox* find(const LayoutReport& r, const std::string& name) {
     return nullptr;
 }
 
+// A point of the picture, in window pixels, given as a fraction of the
+// whole window's picture (as it was before the panel docked): the picture
+// is right of the panel (its right edge plus a margin, as panelRect() and
+// the window put it) and shows the whole window's width of the scene, so a
+// sphere keeps its place across the picture's width and moves towards the
+// middle vertically by the picture's width over the window's.
+int pictureX(int w, int s, double fx) {
+    const double offset = std::round(10.0 * s + std::min(340.0 * s, 0.45 * w) + 10.0 * s);
+    return int(offset + fx * (w - offset));
+}
+int pictureY(int w, int h, int s, double fy) {
+    const double offset = std::round(10.0 * s + std::min(340.0 * s, 0.45 * w) + 10.0 * s);
+    return int(0.5 * h + (fy - 0.5) * h * (w - offset) / w);
+}
+
 // One window a size (the scales and states are script steps: one start-up,
 // one shader compile), the lecture scene against itself in Blinn-Phong
 // (--compare-model: a wipe and side by side without a second folder), the
@@ -158,7 +193,7 @@ void checkSize(int w, int h) {
         const std::string tag = "-" + std::to_string(s);
         script += "ui-scale " + std::to_string(s) + "\n" + shot(std::string("wipe") + tag);
         // The white sphere, right of the divider.
-        script += "pick " + std::to_string(int(0.70 * w)) + " " + std::to_string(int(0.48 * h)) + "\n" +
+        script += "pick " + std::to_string(pictureX(w, s, 0.70)) + " " + std::to_string(pictureY(w, h, s, 0.48)) + "\n" +
                   shot(std::string("pick") + tag);
     }
     script += "key P\n" + shot("toast");  // "saved raylab-....png" for 3 s, at UI scale 3
@@ -258,7 +293,8 @@ void checkViews(int w, int h, const std::vector<std::string>& views) {
         }
         script += "key H\n" + shot("help" + tag) + "key Escape\n";
         states.push_back("help" + tag);
-        script += "pick " + std::to_string(int(0.62 * w)) + " " + std::to_string(int(0.55 * h)) + "\n" + shot("pick" + tag);
+        script += "pick " + std::to_string(pictureX(w, s, 0.62)) + " " + std::to_string(pictureY(w, h, s, 0.55)) + "\n" +
+                  shot("pick" + tag);
         states.push_back("pick" + tag);
     }
     script += "quit\n";

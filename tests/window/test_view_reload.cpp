@@ -48,7 +48,7 @@ protected:
     std::unique_ptr<Process> startView(const std::string& script, std::vector<std::string> extra = {}) {
         writeText(dir / "script.txt", script);
         std::vector<std::string> args = {RAYLAB_BINARY, "view",          scene.string(), "--impl",    impl.string(),
-                                         "--size",      kSize,           "--no-captions", "--script", "script.txt"};
+                                         "--size",      kSize,           "--no-captions", "--no-panel", "--script", "script.txt"};
         args.insert(args.end(), extra.begin(), extra.end());
         return std::make_unique<Process>(args, env, dir.path());
     }
