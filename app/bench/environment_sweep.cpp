@@ -80,9 +80,9 @@ ShaderDefines environmentDefines(const EnvironmentApproximation& a) {
 const EnvironmentBudget& environmentBudget() {
     // docs/performance.md, "Occlusion by the spheres (issue 34)": the
     // shadowed default measured 1.40 and 2.30 LSB net, 6.7% of pixels off net
-    // (sky, studio, 48x36, 256 samples), and 1.58, 2.79, 0.14, 1.60 LSB net,
-    // 35%, 27%, 3.5%, 14% off net on the four scenes at 96x72 and 4096
-    // samples; the budget leaves about 1 LSB
+    // (sky, studio, 48x36, 256 samples), and 1.49, 2.24, 0.14, 1.60 LSB net,
+    // 33%, 25%, 3.7%, 14% off net on the four scenes at 96x72 and 4096
+    // samples (sixteen prefiltered levels); the budget leaves about 1 LSB
     // for the reference's noise at other sizes and seeds, and no more: the
     // unshadowed picture (env:occlusion=none, 12-16 LSB) and the plain
     // ambient-occlusion form (env:occlusion=caps, 7-10 LSB) must not pass.
