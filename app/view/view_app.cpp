@@ -1036,7 +1036,7 @@ void ViewApp::printStats() const {
                     FrameStats::median(stillBackMs_), stillBackMs_.size(),
                     *std::max_element(stillBackMs_.begin(), stillBackMs_.end()));
     if (refineBands_ > 0)
-        std::printf("raylab view: still: still frames refined in %d bands of about %.0f ms\n", refineBands_, kRefineBandMs);
+        std::printf("raylab view: still: still frames refined in %d band%s of about %.0f ms\n", refineBands_, refineBands_ == 1 ? "" : "s", kRefineBandMs);
     if (options_.stats && parts_.movingFrames() > 0) {
         const double interval = parts_.movingIntervalMs();
         std::printf("raylab view: moving: %.1f ms from swap to swap (%.1f fps)\n", interval,
