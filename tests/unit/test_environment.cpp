@@ -433,6 +433,30 @@ TEST(Prefilter, UniformStaysUniformAndSmoothSurfacesSeeTheMap) {
             EXPECT_NEAR(sharp.at(x, y)[0], expected.x, 0.01 * expected.x + 1e-4) << x << ", " << y;
         }
 }
+
+// Each level as wide as its lobe needs (split_sum.h): the smallest power of
+// two W >= pi / alpha, from 8 up to the chain's width. The default chain
+// (16 levels, 128 x 64): the sharp levels up to roughness 0.2 (alpha 0.04,
+// pi / alpha 78.5) all 128 wide, 0.4 (pi / 0.16 = 19.6) 32, 0.6 16, 0.8 and
+// 1 the floor 8; a chain narrower than a level needs keeps its own width.
+TEST(Prefilter, EachLevelIsAsWideAsItsLobeNeeds) {
+    EXPECT_EQ(prefilterLevelWidth(0.0, 128), 128);
+    EXPECT_EQ(prefilterLevelWidth(1.0 / 15, 128), 128);
+    EXPECT_EQ(prefilterLevelWidth(0.2, 128), 128);
+    EXPECT_EQ(prefilterLevelWidth(0.4, 128), 32);
+    EXPECT_EQ(prefilterLevelWidth(0.6, 128), 16);
+    EXPECT_EQ(prefilterLevelWidth(0.8, 128), 8);
+    EXPECT_EQ(prefilterLevelWidth(1.0, 128), 8);
+    EXPECT_EQ(prefilterLevelWidth(0.0, 32), 32);
+    Environment e = uniformEnvironment(0.5);
+    const std::vector<RadianceImage> chain = prefilterChain(*e.image, 128, 64, 16, 4);
+    ASSERT_EQ(chain.size(), 16u);
+    for (int k = 0; k < 16; ++k) {
+        EXPECT_EQ(chain[size_t(k)].width, prefilterLevelWidth(prefilterLevelRoughness(k, 16), 128)) << k;
+        EXPECT_EQ(chain[size_t(k)].height, std::max(chain[size_t(k)].width / 2, 4)) << k;
+    }
+}
+
 // The figures of docs/model.md "Environment light", on demand (15 s, so not
 // part of the suite):
 //   build/bin/unit_tests --gtest_also_run_disabled_tests --gtest_filter='EnvironmentFigures.*'
