@@ -197,6 +197,30 @@ glm::dvec3 equirectDirection(double u, double v) {
     return {s * std::sin(phi), std::cos(theta), -s * std::cos(phi)};
 }
 
+double equirectPixelSolidAngle(int y, int width, int height) {
+    return 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
+}
+
+RadianceImage halvedBySolidAngle(const RadianceImage& a) {
+    RadianceImage b;
+    b.width = (a.width + 1) / 2;
+    b.height = (a.height + 1) / 2;
+    b.rgb.assign(std::size_t(b.width) * std::size_t(b.height) * 3, 0.0f);
+    std::vector<double> sum(b.rgb.size(), 0.0), weight(std::size_t(b.width) * std::size_t(b.height), 0.0);
+    for (int y = 0; y < a.height; ++y) {
+        const double omega = equirectPixelSolidAngle(y, a.width, a.height);
+        for (int x = 0; x < a.width; ++x) {
+            const std::size_t k = std::size_t(y / 2) * std::size_t(b.width) + std::size_t(x / 2);
+            for (int c = 0; c < 3; ++c) sum[3 * k + std::size_t(c)] += omega * a.at(x, y)[c];
+            weight[k] += omega;
+        }
+    }
+    for (std::size_t k = 0; k < weight.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            b.rgb[3 * k + std::size_t(c)] = weight[k] > 0.0 ? float(sum[3 * k + std::size_t(c)] / weight[k]) : 0.0f;
+    return b;
+}
+
 namespace {
 glm::dvec3 rotateY(glm::dvec3 d, double degrees) {
     if (degrees == 0.0) return d;  // exact: no rounding of sin/cos for the unrotated map

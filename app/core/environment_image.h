@@ -55,6 +55,16 @@ RadianceImage loadEnvironmentImage(const std::string& path);
 glm::dvec2 equirectUv(glm::dvec3 direction);
 glm::dvec3 equirectDirection(double u, double v);  // the inverse: a unit vector
 
+// The solid angle of each pixel of row y of a width x height image:
+// (2 pi / width) (cos(pi y / height) - cos(pi (y + 1) / height)).
+double equirectPixelSolidAngle(int y, int width, int height);
+
+// The image halved: each pixel the mean of a 2 x 2 block weighted by its
+// pixels' solid angles, in double, stored as float (an odd side keeps its
+// last column or row alone). The pyramids of the prefiltered chain and of
+// the cap chain are made of it.
+RadianceImage halvedBySolidAngle(const RadianceImage& image);
+
 // The image's own frame from the world: the world direction turned by
 // -rotationDegrees about +y.
 glm::dvec3 environmentLocalDirection(const Environment& environment, glm::dvec3 worldDirection);

@@ -57,7 +57,7 @@ EnvironmentSampler::EnvironmentSampler(const RadianceImage& image) : width_(imag
     // Each pixel's weight: (its luminance + the floor) times its solid angle.
     std::vector<double> solidAngle(static_cast<size_t>(height_));
     for (int y = 0; y < height_; ++y)
-        solidAngle[size_t(y)] = 2.0 * pi / width_ * (std::cos(pi * y / height_) - std::cos(pi * (y + 1) / height_));
+        solidAngle[size_t(y)] = equirectPixelSolidAngle(y, width_, height_);
     double mean = 0.0;
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) mean += luminance(image.at(x, y)) * solidAngle[size_t(y)];

@@ -35,25 +35,7 @@ double radicalInverse(unsigned bits) {
 // angles (an odd side keeps its last column or row alone), down to one row.
 std::vector<RadianceImage> pyramidOf(const RadianceImage& image) {
     std::vector<RadianceImage> levels{image};
-    while (levels.back().width > 1 && levels.back().height > 1) {
-        const RadianceImage& a = levels.back();
-        RadianceImage b;
-        b.width = (a.width + 1) / 2;
-        b.height = (a.height + 1) / 2;
-        b.rgb.assign(size_t(b.width) * size_t(b.height) * 3, 0.0f);
-        std::vector<double> sum(b.rgb.size(), 0.0), weight(size_t(b.width) * size_t(b.height), 0.0);
-        for (int y = 0; y < a.height; ++y) {
-            const double omega = std::cos(kPiPrefilter * y / a.height) - std::cos(kPiPrefilter * (y + 1) / a.height);
-            for (int x = 0; x < a.width; ++x) {
-                const size_t k = size_t(y / 2) * size_t(b.width) + size_t(x / 2);
-                for (int c = 0; c < 3; ++c) sum[3 * k + size_t(c)] += omega * a.at(x, y)[c];
-                weight[k] += omega;
-            }
-        }
-        for (size_t k = 0; k < weight.size(); ++k)
-            for (int c = 0; c < 3; ++c) b.rgb[3 * k + size_t(c)] = weight[k] > 0.0 ? float(sum[3 * k + size_t(c)] / weight[k]) : 0.0f;
-        levels.push_back(std::move(b));
-    }
+    while (levels.back().width > 1 && levels.back().height > 1) levels.push_back(halvedBySolidAngle(levels.back()));
     return levels;
 }
 

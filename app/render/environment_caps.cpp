@@ -23,43 +23,23 @@ struct Source {
     std::vector<glm::dvec3> direction; // per pixel, the centre's
 };
 
-double rowSolidAngle(int y, int width, int height) {
-    return 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
-}
-
-// The image, halved (2 x 2 blocks: radiance times solid angle summed, over the
-// block's solid angle) until it is at most kMaxWidth wide; an odd side keeps
-// its last column or row alone.
+// The image, halved (halvedBySolidAngle) until it is at most kMaxWidth wide.
 Source downsampled(const RadianceImage& image) {
-    int w = image.width, h = image.height;
+    RadianceImage halved;
+    const RadianceImage* small = &image;
+    for (; small->width > kMaxWidth; small = &halved) halved = halvedBySolidAngle(*small);
+    const int w = small->width, h = small->height;
     std::vector<glm::dvec3> L(std::size_t(w) * h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const float* p = image.at(x, y);
+            const float* p = small->at(x, y);
             L[std::size_t(y) * w + x] = glm::dvec3(p[0], p[1], p[2]);
         }
-    while (w > kMaxWidth) {
-        const int w2 = (w + 1) / 2, h2 = std::max(1, (h + 1) / 2);
-        std::vector<glm::dvec3> next(std::size_t(w2) * h2, glm::dvec3(0.0));
-        std::vector<double> weight(std::size_t(w2) * h2, 0.0);
-        for (int y = 0; y < h; ++y) {
-            const double omega = rowSolidAngle(y, w, h);
-            for (int x = 0; x < w; ++x) {
-                const std::size_t k = std::size_t(std::min(y / 2, h2 - 1)) * w2 + std::size_t(x / 2);
-                next[k] += L[std::size_t(y) * w + x] * omega;
-                weight[k] += omega;
-            }
-        }
-        for (std::size_t k = 0; k < next.size(); ++k) next[k] = weight[k] > 0.0 ? next[k] / weight[k] : glm::dvec3(0.0);
-        L = std::move(next);
-        w = w2;
-        h = h2;
-    }
     Source s;
     s.width = w;
     s.height = h;
     s.radiance = std::move(L);
-    for (int y = 0; y < h; ++y) s.solidAngle.push_back(rowSolidAngle(y, w, h));
+    for (int y = 0; y < h; ++y) s.solidAngle.push_back(equirectPixelSolidAngle(y, w, h));
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) s.direction.push_back(equirectDirection((x + 0.5) / w, (y + 0.5) / h));
     return s;
@@ -137,7 +117,7 @@ EnvironmentSun findSun(const RadianceImage& image) {
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
             const double l = luminance(image.at(x, y));
-            mean += l * rowSolidAngle(y, W, H);
+            mean += l * equirectPixelSolidAngle(y, W, H);
             if (l > luminance(&image.rgb[3 * std::size_t(brightest)])) brightest = y * W + x;
         }
     mean /= 4.0 * kPi;
@@ -157,7 +137,7 @@ EnvironmentSun findSun(const RadianceImage& image) {
                 isolated = isolated && glm::dot(d, centre) < cosAround;  // a bright pixel just beyond: a wide source
                 continue;
             }
-            const double omega = rowSolidAngle(y, W, H);
+            const double omega = equirectPixelSolidAngle(y, W, H);
             sun.pixels.push_back(y * W + x);
             sun.power += omega * glm::dvec3(p[0], p[1], p[2]);
             weighted += omega * luminance(p) * d;
@@ -189,8 +169,8 @@ std::vector<RadianceImage> capAverageChain(const RadianceImage& image, const Env
                 if (isSun[std::size_t(y) * W + x]) continue;
                 if (glm::dot(equirectDirection((x + 0.5) / W, (y + 0.5) / H), sun.direction) < cosAround) continue;
                 const float* p = image.at(x, y);
-                sum += rowSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
-                weight += rowSolidAngle(y, W, H);
+                sum += equirectPixelSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
+                weight += equirectPixelSolidAngle(y, W, H);
             }
         const glm::dvec3 around = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
         for (int k : sun.pixels)

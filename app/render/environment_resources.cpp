@@ -43,7 +43,6 @@ std::vector<glm::dvec2> cachedTable(int size, int samples) {
 RadianceImage environmentIrradianceMap(const RadianceImage& image, int width) {
     if (width < 2 || width > 512 || width % 2 != 0)
         throw Error("irradiance map: the width must be an even number from 2 to 512, not " + std::to_string(width));
-    constexpr double kPi = 3.14159265358979323846;
     const int W = image.width, H = image.height;
     // Each source pixel's (or f x f block's) direction and radiance times solid angle.
     int f = 1;
@@ -53,12 +52,11 @@ RadianceImage environmentIrradianceMap(const RadianceImage& image, int width) {
         glm::dvec3 lOmega;
     };
     std::vector<Source> sources;
-    const double dPhi = 2.0 * kPi / W;
     for (int by = 0; by < H; by += f)
         for (int bx = 0; bx < W; bx += f) {
             glm::dvec3 w(0.0), lOmega(0.0);
             for (int y = by; y < std::min(by + f, H); ++y) {
-                const double omega = dPhi * (std::cos(kPi * y / H) - std::cos(kPi * (y + 1) / H));
+                const double omega = equirectPixelSolidAngle(y, W, H);
                 const double v = (y + 0.5) / H;
                 for (int x = bx; x < std::min(bx + f, W); ++x) {
                     const float* L = image.at(x, y);
