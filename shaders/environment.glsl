@@ -133,17 +133,51 @@ vec2 splitSumLookup(float NoV, float roughness) {
 uniform vec4 u_envSun;
 uniform vec3 u_envSunPower;
 
-// What SH9 makes of the sun, taken out, and the sun's own irradiance put in:
-// nine coefficients of a small source of power Phi at s give it the
-// irradiance Phi (1/4 + x/2 + 5/16 (3x^2 - 1)/2), x = n.s (the clamped
-// cosine's first three bands, docs/model.md), which is 7% short of
-// Phi max(x, 0) at 55 degrees and below zero opposite the sun; the sun as a
-// point source gives Phi max(x, 0) exactly (world n, with intensity).
-vec3 sunIrradianceCorrection(vec3 n) {
+// What SH9 makes of the sun (its power above the sky around it, Phi, at s):
+// nine coefficients of a small source give it the irradiance
+// Phi (1/4 + x/2 + 5/16 (3x^2 - 1)/2), x = n.s (the clamped cosine's first
+// three bands, docs/model.md), 7% short of Phi max(x, 0) at 55 degrees and
+// below zero opposite the sun (world n, with intensity).
+vec3 sunShIrradiance(vec3 n) {
     if (u_envSun.w <= 0.0) return vec3(0.0);
     float x = dot(n, u_envSun.xyz);
-    float sh = 0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5);
-    return u_envIntensity * u_envSunPower * (max(x, 0.0) - sh);
+    return u_envIntensity * u_envSunPower * (0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5));
+}
+
+// The sun as a point source: Phi max(n.s, 0) in place of its three bands
+// (the pixel debugger's irradiance, pixel_debug.glsl).
+vec3 sunIrradianceCorrection(vec3 n) {
+    if (u_envSun.w <= 0.0) return vec3(0.0);
+    return u_envIntensity * u_envSunPower * max(dot(n, u_envSun.xyz), 0.0) - sunShIrradiance(n);
+}
+
+// The light the sun sends towards v, a directional light of irradiance Phi
+// (times its visible share) through the scene's BRDF (exercise 08), as a
+// point light's: exact for a lobe much wider than the sun's disc. For a
+// narrower one (Karis 2013, "Real shading in Unreal Engine 4", sphere
+// lights), the BRDF is read towards the disc's point nearest the mirror
+// direction (the "representative point"), so a mirror shows the disc, not a
+// point, with its GGX alpha widened by the disc's half-angle over two (the
+// half-vector's), which keeps the energy of the narrow lobe instead of
+// multiplying it by the disc's area.
+vec3 hitBRDF(Hit hit, vec3 v, vec3 l, Material m);  // lighting.glsl
+vec3 sunLight(Hit hit, vec3 v, Material m, vec3 reflected, float visible) {
+    if (u_envSun.w <= 0.0 || visible <= 0.0) return vec3(0.0);
+    vec3 s = u_envSun.xyz;
+    float NoS = dot(hit.n, s);
+    if (NoS <= 0.0) return vec3(0.0);
+    float apart = acos(clamp(dot(reflected, s), -1.0, 1.0));
+    vec3 l = s;
+    if (apart > 1e-6) {
+        vec3 towards = normalize(reflected - dot(reflected, s) * s);
+        float a = min(apart, u_envSun.w);
+        l = cos(a) * s + sin(a) * towards;
+    }
+    float r = clamp(m.roughness, MIN_ROUGHNESS, 1.0);
+    Material wide = m;
+    wide.roughness = sqrt(min(length(vec2(r * r, 0.5 * u_envSun.w)), 1.0));
+    vec3 f = min(hitBRDF(hit, v, l, m), hitBRDF(hit, v, l, wide));
+    return visible * f * u_envIntensity * u_envSunPower * NoS;
 }
 
 #if defined(RL_ENV_OCCLUSION) && RL_ENV_OCCLUSION != 0
@@ -166,7 +200,7 @@ vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
     vec3 E = u_envIntensity * shIrradiance(environmentLocal(hit.n));
 #endif
 #ifndef RL_ENV_IRRADIANCE_MAP
-    E += sunIrradianceCorrection(hit.n);
+    E -= sunShIrradiance(hit.n);  // the sun is added below as a light of its own
 #endif
     E = max(E, vec3(0.0));
     vec3 reflected = reflect(-v, hit.n);
@@ -176,7 +210,11 @@ vec3 environmentHitLight(Hit hit, vec3 v, Material m) {
     OccludedLight kept = occludeEnvironment(hit, reflected, m.roughness, E, prefiltered);
     E = kept.irradiance;
     prefiltered = kept.prefiltered;
+    float sunVisible = kept.sun;
+#else
+    float sunVisible = 1.0;
 #endif
-    return environmentShading(E, prefiltered, splitSumLookup(NoV, m.roughness), m);
+    return environmentShading(E, prefiltered, splitSumLookup(NoV, m.roughness), m) +
+           sunLight(hit, v, m, reflected, sunVisible);
 }
 #endif

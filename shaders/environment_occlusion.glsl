@@ -64,6 +64,52 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
     return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
+// The solid angle two caps of half-angles a1, a2 share, their axes g apart
+// (Tovchigrechko and Vakser 2001, eq. 2; checked against Monte Carlo).
+float capOverlapSolidAngle(float a1, float a2, float g) {
+    if (g >= a1 + a2) return 0.0;
+    if (g <= abs(a1 - a2)) return 2.0 * PI * (1.0 - cos(min(a1, a2)));
+    float c1 = cos(a1), c2 = cos(a2), cg = cos(g);
+    float s1 = sin(a1), s2 = sin(a2), sg = max(sin(g), 1e-6);
+    float t1 = acos(clamp((cg - c1 * c2) / max(s1 * s2, 1e-6), -1.0, 1.0));
+    float t2 = acos(clamp((c2 - cg * c1) / (sg * max(s1, 1e-6)), -1.0, 1.0));
+    float t3 = acos(clamp((c1 - cg * c2) / (sg * max(s2, 1e-6)), -1.0, 1.0));
+    return max(2.0 * (PI - t1 - c1 * t2 - c2 * t3), 0.0);
+}
+
+// The share of sphere i's cap (axis w, half-angle b, form factor F seen
+// from the hit) that no larger cap of another sphere holds: where caps
+// overlap, the larger one takes the shared directions and the smaller one
+// only what is its own, so the light of a direction is taken out once. The
+// shared part's cosine weight is its solid angle times n.m, m the middle of
+// the shared lens on the great circle through both axes.
+float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit) {
+    if (F <= 0.0) return 1.0;
+    float sb = sin(b), cb = cos(b);
+    float shared = 0.0;
+    for (int j = 0; j < sphereCount(); ++j) {
+        if (j == i || j == hit.sphere) continue;
+        vec4 o = sphereGeometry(j);
+        vec3 q = o.xyz - hit.p;
+        float dj = length(q);
+        float sbj = o.w / dj;  // sin of its half-angle
+        // Not larger (equal ones by index), or inside it (nothing is left anyway): skipped.
+        if (sbj < sb || (sbj == sb && j > i) || sbj >= 1.0) continue;
+        vec3 wj = q / dj;
+        float cbj = sqrt(1.0 - sbj * sbj);
+        float cg = dot(w, wj);
+        if (cg <= cb * cbj - sb * sbj) continue;  // apart: g >= b + bj
+        float bj = asin(sbj);
+        float g = acos(clamp(cg, -1.0, 1.0));
+        vec3 e = wj - cg * w;
+        e = dot(e, e) > 1e-12 ? normalize(e) : vec3(0.0);
+        float middle = 0.5 * (max(g - bj, -b) + min(b, g + bj));
+        vec3 m = cos(middle) * w + sin(middle) * e;
+        shared += capOverlapSolidAngle(b, bj, g) * max(dot(hit.n, m), 0.0);
+    }
+    return clamp(1.0 - shared / (PI * F), 0.0, 1.0);
+}
+
 // The specular cone's half-angle for perceptual roughness.
 float specularConeAngle(float roughness) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
@@ -78,6 +124,7 @@ float specularConeAngle(float roughness) {
 struct OccludedLight {
     vec3 irradiance;
     vec3 prefiltered;
+    float sun;  // the share of the sun's disc no sphere covers
 };
 
 OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 E, vec3 P) {
@@ -116,7 +163,8 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
             float across = (1.0 - cb) - (1.0 - cb * cb * cb) / 3.0;
             float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
             vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
-            lost += PI * F * u_envIntensity * capMeanRadiance(environmentLocal(centre), capAngle - shift);
+            lost += PI * F * capShareNotCovered(i, w, capAngle, F, hit) * u_envIntensity *
+                    capMeanRadiance(environmentLocal(centre), capAngle - shift);
         }
         float sunCos = dot(u_envSun.xyz, w);
         if (u_envSun.w > 0.0 && sunCos > cos(capAngle + u_envSun.w))  // the sun's disc reaches into the cap
@@ -125,10 +173,12 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
         diffuseVisible *= 1.0 - F;
 #endif
     }
-#if RL_ENV_OCCLUSION == 2
-    lost += (1.0 - sunVisible) * u_envIntensity * u_envSunPower * max(dot(hit.n, u_envSun.xyz), 0.0);
-#endif
     OccludedLight o;
+#if RL_ENV_OCCLUSION == 2
+    o.sun = sunVisible;
+#else
+    o.sun = diffuseVisible;
+#endif
     o.irradiance = max(E * diffuseVisible - lost, vec3(0.0));
     o.prefiltered = P * specularVisible;
     return o;

@@ -43,9 +43,10 @@ struct EnvironmentTables {
     const std::vector<RadianceImage>* levels = nullptr;  // level k for roughness k / (levels - 1)
     const std::vector<glm::dvec2>* table = nullptr;      // [j * tableSize + i]: (scale, bias)
     int tableSize = 0;
-    // The map's sun (render/environment_caps.h, findSun), which the picture
-    // adds to SH9's irradiance as a point source (environment.glsl,
-    // sunIrradianceCorrection): image frame, no intensity.
+    // The map's sun (render/environment_caps.h, findSun; its power above the
+    // sky around it), which the debugger's irradiance adds to SH9's as a
+    // point source (environment.glsl, sunIrradianceCorrection; the picture
+    // adds it as a light of its own, sunLight): image frame, no intensity.
     bool sunPresent = false;
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};
     glm::dvec3 sunPower{0.0};

@@ -148,35 +148,37 @@ EnvironmentSun findSun(const RadianceImage& image) {
         sun = EnvironmentSun{};
         return sun;
     }
+    // The sky around it: the mean of the other pixels within twice its reach;
+    // its power is what it brings above that.
+    std::vector<char> isSun(std::size_t(W) * H, 0);
+    for (int k : sun.pixels) isSun[std::size_t(k)] = 1;
+    glm::dvec3 sum(0.0);
+    double weight = 0.0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            if (isSun[std::size_t(y) * W + x]) continue;
+            if (glm::dot(equirectDirection((x + 0.5) / W, (y + 0.5) / H), centre) < cosAround) continue;
+            const float* p = image.at(x, y);
+            sum += equirectPixelSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
+            weight += equirectPixelSolidAngle(y, W, H);
+        }
+    sun.around = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+    sun.power = glm::max(sun.power - solidAngle * sun.around, glm::dvec3(0.0));
     sun.present = true;
     sun.direction = glm::normalize(weighted);
     sun.angularRadius = std::acos(1.0 - solidAngle / (2.0 * kPi));
     return sun;
 }
 
-std::vector<RadianceImage> capAverageChain(const RadianceImage& image, const EnvironmentSun& sun) {
-    RadianceImage withoutSun;
-    if (sun.present) {  // the sun's pixels: the mean of the other pixels within twice its reach
-        withoutSun = image;
-        const int W = image.width, H = image.height;
-        std::vector<char> isSun(std::size_t(W) * H, 0);
-        for (int k : sun.pixels) isSun[std::size_t(k)] = 1;
-        const double cosAround = std::cos(2.0 * kSunReach);
-        glm::dvec3 sum(0.0);
-        double weight = 0.0;
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                if (isSun[std::size_t(y) * W + x]) continue;
-                if (glm::dot(equirectDirection((x + 0.5) / W, (y + 0.5) / H), sun.direction) < cosAround) continue;
-                const float* p = image.at(x, y);
-                sum += equirectPixelSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
-                weight += equirectPixelSolidAngle(y, W, H);
-            }
-        const glm::dvec3 around = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
-        for (int k : sun.pixels)
-            for (int c = 0; c < 3; ++c) withoutSun.rgb[3 * std::size_t(k) + std::size_t(c)] = float(around[c]);
-    }
-    const Source s = downsampled(sun.present ? withoutSun : image);
+RadianceImage mapWithoutSun(const RadianceImage& image, const EnvironmentSun& sun) {
+    RadianceImage out = image;
+    for (int k : sun.pixels)
+        for (int c = 0; c < 3; ++c) out.rgb[3 * std::size_t(k) + std::size_t(c)] = float(sun.around[c]);
+    return out;
+}
+
+std::vector<RadianceImage> capAverageChain(const RadianceImage& image) {
+    const Source s = downsampled(image);
     std::vector<RadianceImage> chain;
     for (int k = 0; k < kCapLevels; ++k) {
         const double cap = capLevelAngle(k);

@@ -39,19 +39,25 @@ struct EnvironmentSun {
     bool present = false;
     glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, image frame: its pixels' centres weighted by luminance times solid angle
     double angularRadius = 0.0;           // of a disc of its solid angle
-    glm::dvec3 power{0.0};                // sum of L dOmega over its pixels (no intensity)
+    glm::dvec3 power{0.0};                // sum of (L - around) dOmega over its pixels (no intensity)
+    glm::dvec3 around{0.0};               // the mean radiance of the other pixels within twice kSunReach
     std::vector<int> pixels;              // y * width + x
 };
 EnvironmentSun findSun(const RadianceImage& image);
 
-// The chain of `image` (its own frame, no intensity; the sun's pixels, where
-// it has one, replaced by the mean of the pixels around it): level k is
+// The map with its sun's pixels replaced by the sky around it (`around`):
+// what the prefiltered chain and the cap chain are made of, the GL picture
+// adding the sun itself as a directional light (shaders/environment.glsl).
+// The map itself where it has no sun.
+RadianceImage mapWithoutSun(const RadianceImage& image, const EnvironmentSun& sun);
+
+// The chain of `image` (its own frame, no intensity; mapWithoutSun): level k is
 // W_k x W_k/2 texels, W_k the power of two nearest 8 pi / capLevelAngle(k)
 // (four texels per cap radius), 8 to 256 and at most the image's width. Each
 // texel is sum(w_p L_p dOmega_p) / sum(w_p dOmega_p) over the pixels p of the
 // image (first summed in 2 x 2 blocks, radiance times solid angle, until it
 // is at most 256 wide), w_p = clamp(1/2 + (cap - angle(p, texel)) / pixel, 0, 1)
 // with `pixel` one pixel's height in radians: the cap's edge antialiased.
-std::vector<RadianceImage> capAverageChain(const RadianceImage& image, const EnvironmentSun& sun);
+std::vector<RadianceImage> capAverageChain(const RadianceImage& image);
 
 }  // namespace rl

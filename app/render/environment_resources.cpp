@@ -106,14 +106,18 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
     auto r = std::make_shared<EnvironmentResources>();
     r->settings = settings;
     r->map = environment.image;
-    r->levels = ref::prefilterChain(*environment.image, settings.prefilterWidth, settings.prefilterHeight,
-                                    settings.levels, settings.prefilterSamples);
+    r->sun = findSun(*environment.image);
+    // The tables of the sky without its sun: the picture adds the sun as a
+    // light of its own (shaders/environment.glsl, sunLight); SH9 stays the
+    // whole map's, exercise 11's coefficients, the sun's three bands taken
+    // out in the shader.
+    const RadianceImage sunless = mapWithoutSun(*environment.image, r->sun);
+    r->levels = ref::prefilterChain(sunless, settings.prefilterWidth, settings.prefilterHeight, settings.levels,
+                                    settings.prefilterSamples);
     r->sh = ref::projectSh9(*environment.image);
     r->table = cachedTable(settings.tableSize, settings.tableSamples);
-    if (settings.irradianceMap > 0)
-        r->irradiance = environmentIrradianceMap(*environment.image, settings.irradianceMap);
-    r->sun = findSun(*environment.image);
-    r->caps = capAverageChain(*environment.image, r->sun);
+    if (settings.irradianceMap > 0) r->irradiance = environmentIrradianceMap(sunless, settings.irradianceMap);
+    r->caps = capAverageChain(sunless);
     std::lock_guard<std::mutex> lock(mutex);
     cache.push_back({environment.image, settings, r});
     return r;

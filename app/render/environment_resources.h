@@ -55,7 +55,7 @@ struct EnvironmentResources {
     std::vector<glm::dvec2> table;             // ref::splitSumTable, tableSize^2 (scale, bias)
     RadianceImage irradiance;                  // environmentIrradianceMap(map, settings.irradianceMap); empty for 0
     EnvironmentSun sun;                        // findSun(map) (environment_caps.h): for the spheres' occlusion
-    std::vector<RadianceImage> caps;           // capAverageChain(map, sun): the same
+    std::vector<RadianceImage> caps;           // capAverageChain(mapWithoutSun(map, sun)): the same
 };
 
 // The irradiance map of `image` (its own frame, no intensity): width x

@@ -143,8 +143,16 @@ TEST(AskEveryMutant, NamesTheMutatedUnitAtAChangedPixel) {
             }
             if (!found) unchanged.push_back(name);
             // A unit that shows only with a define (11's environment) is tried
-            // on scenes made for it: each of its mistakes shows there.
-            EXPECT_TRUE(found || unit.showsWith.empty()) << name << " changes no pixel of its unit's scenes";
+            // on scenes made for it: each of its mistakes shows there, but one.
+            // 11's level-roughness-floor reads level 0.675 for a mirror instead
+            // of 0: levels 0 and 1 (roughness 0 and 1/15) are both 128 texels
+            // wide, a lobe of 0.25 degrees against a texel of 2.8, so they
+            // differ by under an 8-bit step wherever the map has no sun (since
+            // the sun is a light of its own, docs/model.md "The sun", no level
+            // holds one). Its probes name it (Mutants.AreCaughtWithTheirSymptom).
+            const bool belowAStep = name == "11-environment/level-roughness-floor";
+            EXPECT_TRUE(found || unit.showsWith.empty() || belowAStep)
+                << name << " changes no pixel of its unit's scenes";
         }
     }
     std::cout << units << " units, " << mutants << " mutants, " << pixels << " pixels asked; no pixel changed by "
