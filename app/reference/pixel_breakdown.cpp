@@ -85,7 +85,7 @@ std::string vec(dvec3 v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(
 }  // namespace
 
 EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, dvec3 n, dvec3 v,
-                                  const Material& m) {
+                                  const Material& m, const ShadingModel& model) {
     EnvironmentTerms e;
     const double NoV = std::clamp(glm::dot(n, v), kMinNoV, 1.0);
     e.irradiance = environmentIrradianceSh9(environment, *tables.sh, n);
@@ -117,9 +117,32 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
         irradiance += environment.intensity * tables.sunPower * (std::max(x, 0.0) - sh);
     }
     irradiance = glm::max(irradiance, dvec3(0.0));
-    const dvec3 diffuse = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * irradiance;
     const dvec3 specular = e.prefiltered * (F0 * e.scaleBias.x + e.scaleBias.y);
-    e.light = diffuse + specular;
+    e.light = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * irradiance + specular;
+    // The picture: the sun's bands out of SH9, the sun a light of its own
+    // (sunLight in shaders/environment.glsl, in the image's frame here).
+    dvec3 sunless = e.irradiance;
+    dvec3 sun(0.0);
+    if (tables.sunPresent) {
+        const dvec3 s = tables.sunDirection, nl = environmentLocalDirection(environment, n);
+        const double x = glm::dot(nl, s);
+        sunless -= environment.intensity * tables.sunPower * (0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5));
+        if (x > 0.0) {
+            const dvec3 vl = environmentLocalDirection(environment, v);
+            const double apart = std::acos(std::clamp(glm::dot(r, s), -1.0, 1.0));
+            dvec3 l = s;
+            if (apart > 1e-6) {
+                const double a = std::min(apart, tables.sunAngularRadius);
+                l = std::cos(a) * s + std::sin(a) * glm::normalize(r - glm::dot(r, s) * s);
+            }
+            const double rough = std::clamp(m.roughness, kMinRoughness, 1.0);
+            Material wide = m;
+            wide.roughness = std::sqrt(std::min(std::hypot(rough * rough, 0.5 * tables.sunAngularRadius), 1.0));
+            const dvec3 f = glm::min(cookTorranceBRDF(nl, vl, l, m, model), cookTorranceBRDF(nl, vl, l, wide, model));
+            sun = f * environment.intensity * tables.sunPower * x;
+        }
+    }
+    e.pictureLight = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * glm::max(sunless, dvec3(0.0)) + specular + sun;
     return e;
 }
 
@@ -170,9 +193,9 @@ PixelTerms explainPixel(const Scene& scene, const Camera& camera, int width, int
         b.ambient = scene.render.ambient * m.albedo * m.ao;
         b.shaded = shadeHit(scene, hit, b.v);
         if (withEnvironment) {
-            b.environment = environmentTerms(*scene.environment, *environment, hit.n, b.v, m);
+            b.environment = environmentTerms(*scene.environment, *environment, hit.n, b.v, m, scene.model);
             b.environment->formFactors = summedFormFactors(scene.spheres, hit.sphere, hit.p, hit.n);
-            b.shaded += b.environment->light;
+            b.shaded += b.environment->pictureLight;
         }
         b.contribution = throughput * b.shaded;
         out.radiance += b.contribution;

@@ -50,6 +50,7 @@ struct EnvironmentTables {
     bool sunPresent = false;
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};
     glm::dvec3 sunPower{0.0};
+    double sunAngularRadius = 0.0;
 };
 
 // The approximation's terms at one hit, in double, as environmentHitLight()
@@ -72,10 +73,15 @@ struct EnvironmentTerms {
     // they hide, before the occlusion's framework parts (docs/model.md).
     double formFactors = 0.0;
     glm::dvec3 light{0.0};        // environmentShading(max(irradiance + the sun's correction, 0), prefiltered, scaleBias, m), before occlusion
+    // What the picture's environmentHitLight() adds before occlusion: exercise
+    // 11's shading of SH9's irradiance with the sun's three bands taken out,
+    // plus the sun as a light of its own through the scene's BRDF (sunLight,
+    // shaders/environment.glsl; docs/model.md "The sun").
+    glm::dvec3 pictureLight{0.0};
 };
 constexpr double kLookupAngle = 1e-4;  // radians: the shader's float atan and acos (a GPU's approximations), with room
 EnvironmentTerms environmentTerms(const Environment& environment, const EnvironmentTables& tables, glm::dvec3 n,
-                                  glm::dvec3 v, const Material& m);
+                                  glm::dvec3 v, const Material& m, const ShadingModel& model);
 
 struct BounceTerms {
     int depth = 0;  // 0 = the primary hit

@@ -341,7 +341,7 @@ PixelDebug debugPixel(const ShaderProgram& program, const Scene& scene, const Ca
     if (scene.environment) {
         resources = environmentResources(*scene.environment);  // the picture's tables (cached)
         tables = {&resources->sh, &resources->levels, &resources->table, resources->settings.tableSize,
-                  resources->sun.present, resources->sun.direction, resources->sun.power};
+                  resources->sun.present, resources->sun.direction, resources->sun.power, resources->sun.angularRadius};
     }
     const ref::PixelTerms terms =
         ref::explainPixel(scene, camera, width, height, i, j, resources ? &tables : nullptr);  // throws outside

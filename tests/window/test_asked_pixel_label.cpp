@@ -46,15 +46,17 @@ DisplayImage picture(const Implementation& impl, Scene scene, int w, int h) {
         .display;
 }
 
-// The pixel the mistake changes most in the right half (the panel is on the
-// left), from the top left.
+// The pixel the mistake changes most in the right two fifths, from the top
+// left: clear of the panel, which takes the left half at every scale of the
+// cases (a pick on it is refused: at 640x360, scale 2, its columns are 0 to
+// 327, and the sky scene's largest change in the right half lay at 325).
 std::pair<int, int> changedPixel(const Implementation& mutant, const Scene& scene, int w, int h) {
     const DisplayImage a = picture(Implementation{sourceRoot() / "solutions", {}}, scene, w, h),
                        b = picture(mutant, scene, w, h);
     int best = 0;
     std::pair<int, int> at{-1, -1};
     for (int y = 0; y < h; ++y)
-        for (int x = w / 2; x < w; ++x)
+        for (int x = 3 * w / 5; x < w; ++x)
             for (int c = 0; c < 3; ++c) {
                 const int d = std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]));
                 if (d > best) best = d, at = {x, y};
