@@ -176,7 +176,8 @@ vec3 sunLight(Hit hit, vec3 v, Material m, vec3 reflected, float visible) {
     float r = clamp(m.roughness, MIN_ROUGHNESS, 1.0);
     Material wide = m;
     wide.roughness = sqrt(min(length(vec2(r * r, 0.5 * u_envSun.w)), 1.0));
-    vec3 f = min(hitBRDF(hit, v, l, m), hitBRDF(hit, v, l, wide));
+    vec3 f = hitBRDF(hit, v, l, m);
+    if (r * r < u_envSun.w) f = min(f, hitBRDF(hit, v, l, wide));  // alpha' within 12% of alpha beyond: the point's lobe
     return visible * f * u_envIntensity * u_envSunPower * NoS;
 }
 

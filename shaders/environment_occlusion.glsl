@@ -50,12 +50,6 @@ vec3 capMeanRadiance(vec3 w, float b) {
     return integral / max(1.0 - cos(b), 1e-7);
 }
 
-// The cap level nearest half-angle b (in log2), one bilinear read.
-vec3 capLevelRadiance(vec3 w, float b) {
-    float l = clamp(2.0 * log2(max(b, 1e-6) / u_envSmallestCap), 0.0, float(u_envCapLevels - 1));
-    return environmentBilinear(u_envPrefiltered, u_envCapRect[int(l + 0.5)], equirectUv(w));
-}
-
 // The share of the cosine-weighted hemisphere of n that a sphere covers
 // (its form factor, clipped by the horizon) is exercise 12's
 // sphereFormFactor(p, n, centre, radius) (course/12-sky-shadows).
@@ -71,38 +65,35 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
 }
 
 // The solid angle two caps of half-angles a1, a2 share, their axes g apart
-// (Tovchigrechko and Vakser 2001, eq. 2; checked against Monte Carlo).
-float capOverlapSolidAngle(float a1, float a2, float g) {
-    if (g >= a1 + a2) return 0.0;
-    if (g <= abs(a1 - a2)) return 2.0 * PI * (1.0 - cos(min(a1, a2)));
-    float c1 = cos(a1), c2 = cos(a2), cg = cos(g);
-    float s1 = sin(a1), s2 = sin(a2), sg = max(sin(g), 1e-6);
+// (Tovchigrechko and Vakser 2001, eq. 2; checked against Monte Carlo), from
+// the cosines and sines of the three angles (c1 s1, c2 s2, cg sg).
+float capOverlapSolidAngle(float c1, float s1, float c2, float s2, float cg, float sg) {
+    if (cg <= c1 * c2 - s1 * s2) return 0.0;                             // apart: g >= a1 + a2
+    if (cg >= c1 * c2 + s1 * s2) return 2.0 * PI * (1.0 - max(c1, c2));  // one holds the other: g <= |a1 - a2|
+    sg = max(sg, 1e-6);
     float t1 = acos(clamp((cg - c1 * c2) / max(s1 * s2, 1e-6), -1.0, 1.0));
     float t2 = acos(clamp((c2 - cg * c1) / (sg * max(s1, 1e-6)), -1.0, 1.0));
     float t3 = acos(clamp((c1 - cg * c2) / (sg * max(s2, 1e-6)), -1.0, 1.0));
     return max(2.0 * (PI - t1 - c1 * t2 - c2 * t3), 0.0);
 }
 
-// The light sphere i's cap (axis w, half-angle b, form factor F seen from
-// the hit) shares with larger caps of other spheres: where caps overlap,
-// the larger one takes the shared directions and the smaller one gives
-// this back, so the light of a direction is taken out once. Each shared lens
-// weighs its solid angle times n.m, m its middle on the great circle
-// through both axes; their light is the cap chain's at the lenses' weighted
-// middle, over a cap of the widest lens's half-width (one read: the lens is
-// often where the smaller cap is darkest or brightest, under the horizon
-// of a ground or high in the sky, so the cap's own mean would not do).
-vec3 capSharedLight(int i, vec3 w, float b, float F, Hit hit) {
-    if (F <= 0.0) return vec3(0.0);
+// The share of sphere i's cap (axis w, half-angle b, form factor F seen
+// from the hit) that no larger cap of another sphere holds: where caps
+// overlap, the larger one takes the shared directions and the smaller one
+// only what is its own, so the light of a direction is taken out once. The
+// shared part's cosine weight is its solid angle times n.m, m the middle of
+// the shared lens on the great circle through both axes.
+float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit) {
+    if (F <= 0.0) return 1.0;
     float sb = sin(b), cb = cos(b);
-    float sharedWeight = 0.0, sharedRadius = 0.0;
-    vec3 sharedCentre = vec3(0.0);
+    float shared = 0.0;
     for (int j = 0; j < sphereCount(); ++j) {
         if (j == i || j == hit.sphere) continue;
         vec4 o = sphereGeometry(j);
         vec3 q = o.xyz - hit.p;
         float dj = length(q);
         float sbj = o.w / dj;  // sin of its half-angle
+        // Not larger (equal ones by index), or inside it (nothing is left anyway): skipped.
         if (sbj < sb || (sbj == sb && j > i) || sbj >= 1.0) continue;
         vec3 wj = q / dj;
         float cbj = sqrt(1.0 - sbj * sbj);
@@ -112,16 +103,11 @@ vec3 capSharedLight(int i, vec3 w, float b, float F, Hit hit) {
         float g = acos(clamp(cg, -1.0, 1.0));
         vec3 e = wj - cg * w;
         e = dot(e, e) > 1e-12 ? normalize(e) : vec3(0.0);
-        float lo = max(g - bj, -b), hi = min(b, g + bj);
-        float middle = 0.5 * (lo + hi);
+        float middle = 0.5 * (max(g - bj, -b) + min(b, g + bj));
         vec3 m = cos(middle) * w + sin(middle) * e;
-        float weight = capOverlapSolidAngle(b, bj, g) * max(dot(hit.n, m), 0.0);
-        sharedWeight += weight;
-        sharedCentre += weight * m;
-        sharedRadius = max(sharedRadius, 0.5 * (hi - lo));
+        shared += capOverlapSolidAngle(cb, sb, cbj, sbj, cg, sqrt(max(1.0 - cg * cg, 0.0))) * max(dot(hit.n, m), 0.0);
     }
-    if (sharedWeight <= 0.0) return vec3(0.0);
-    return sharedWeight * capLevelRadiance(environmentLocal(normalize(sharedCentre)), sharedRadius);
+    return clamp(1.0 - shared / (PI * F), 0.0, 1.0);
 }
 
 // The specular cone's half-angle for perceptual roughness.
@@ -177,8 +163,8 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
             float across = (1.0 - cb) - (1.0 - cb * cb * cb) / 3.0;
             float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
             vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
-            lost += u_envIntensity * max(PI * F * capMeanRadiance(environmentLocal(centre), capAngle - shift) -
-                                         capSharedLight(i, w, capAngle, F, hit), vec3(0.0));
+            lost += PI * F * capShareNotCovered(i, w, capAngle, F, hit) * u_envIntensity *
+                    capMeanRadiance(environmentLocal(centre), capAngle - shift);
         }
         float sunCos = dot(u_envSun.xyz, w);
         if (u_envSun.w > 0.0 && sunCos > cos(capAngle + u_envSun.w))  // the sun's disc reaches into the cap
