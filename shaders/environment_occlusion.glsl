@@ -21,6 +21,14 @@ const float ENV_CONE_ENERGY = 0.244;
 // A cap's mean radiance is read over the part of it nearest n (the cosine's
 // weight): a cap inside it, moved towards n by at most this share of its half-angle.
 const float ENV_CAP_SHIFT = 0.5;
+// Where a larger cap holds the share phi of a cap's weight, the cap's mean is
+// read over the part left to it: its centre moved away from the shared lens
+// by ENV_LENS_AWAY * phi of its half-angle, the half-angle shrunk by
+// ENV_LENS_SHRINK * phi (measured on the four scenes of docs/performance.md,
+// "Occlusion by the spheres": the studio's white sphere facing the copper
+// one, whose cap dips into the ground's under the horizon).
+const float ENV_LENS_AWAY = 1.0;
+const float ENV_LENS_SHRINK = 0.3;
 
 // The caps' half-angles of the host's cap chain (app/render/environment_caps.h,
 // whose constants they are): level k averages the map over caps of
@@ -82,8 +90,10 @@ float capOverlapSolidAngle(float c1, float s1, float c2, float s2, float cg, flo
 // overlap, the larger one takes the shared directions and the smaller one
 // only what is its own, so the light of a direction is taken out once. The
 // shared part's cosine weight is its solid angle times n.m, m the middle of
-// the shared lens on the great circle through both axes.
-float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit) {
+// the shared lens on the great circle through both axes; `lens` is the sum
+// of the lenses' middles times their weights (where the shared part lies).
+float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit, out vec3 lens) {
+    lens = vec3(0.0);
     if (F <= 0.0) return 1.0;
     float sb = sin(b), cb = cos(b);
     float shared = 0.0;
@@ -105,7 +115,9 @@ float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit) {
         e = dot(e, e) > 1e-12 ? normalize(e) : vec3(0.0);
         float middle = 0.5 * (max(g - bj, -b) + min(b, g + bj));
         vec3 m = cos(middle) * w + sin(middle) * e;
-        shared += capOverlapSolidAngle(cb, sb, cbj, sbj, cg, sqrt(max(1.0 - cg * cg, 0.0))) * max(dot(hit.n, m), 0.0);
+        float weight = capOverlapSolidAngle(cb, sb, cbj, sbj, cg, sqrt(max(1.0 - cg * cg, 0.0))) * max(dot(hit.n, m), 0.0);
+        shared += weight;
+        lens += weight * m;
     }
     return clamp(1.0 - shared / (PI * F), 0.0, 1.0);
 }
@@ -163,8 +175,17 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
             float across = (1.0 - cb) - (1.0 - cb * cb * cb) / 3.0;
             float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
             vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
-            lost += PI * F * capShareNotCovered(i, w, capAngle, F, hit) * u_envIntensity *
-                    capMeanRadiance(environmentLocal(centre), capAngle - shift);
+            vec3 lens;
+            float share = capShareNotCovered(i, w, capAngle, F, hit, lens);
+            float radius = capAngle - shift;
+            if (share < 1.0) {  // read the part the shared lenses leave: away from them
+                vec3 away = centre - lens;
+                away -= dot(away, centre) * centre;
+                float phi = 1.0 - share;
+                if (dot(away, away) > 1e-12) centre = normalize(centre + tan(ENV_LENS_AWAY * phi * radius) * normalize(away));
+                radius *= 1.0 - ENV_LENS_SHRINK * phi;
+            }
+            lost += PI * F * share * u_envIntensity * capMeanRadiance(environmentLocal(centre), radius);
         }
         float sunCos = dot(u_envSun.xyz, w);
         if (u_envSun.w > 0.0 && sunCos > cos(capAngle + u_envSun.w))  // the sun's disc reaches into the cap
