@@ -153,13 +153,14 @@ vec3 sunIrradianceCorrection(vec3 n) {
 
 // The light the sun sends towards v, a directional light of irradiance Phi
 // (times its visible share) through the scene's BRDF (exercise 08), as a
-// point light's: exact for a lobe much wider than the sun's disc. For a
-// narrower one (Karis 2013, "Real shading in Unreal Engine 4", sphere
-// lights), the BRDF is read towards the disc's point nearest the mirror
-// direction (the "representative point"), so a mirror shows the disc, not a
-// point, with its GGX alpha widened by the disc's half-angle over two (the
-// half-vector's), which keeps the energy of the narrow lobe instead of
-// multiplying it by the disc's area.
+// point light's: exact for a lobe much wider than the sun's disc. The BRDF
+// is read towards the disc's point nearest the mirror direction (Karis 2013,
+// "Real shading in Unreal Engine 4", sphere lights: the "representative
+// point"), so a mirror shows the disc, not a point. Where the lobe is
+// narrower than the disc (alpha below its angular radius), the smaller of
+// that BRDF and one whose alpha is sqrt(alpha^2 + (radius / 2)^2) (the
+// disc's half-vector spread added) is taken: a lobe as wide as the disc
+// keeps its energy instead of the point's peak times the disc's area.
 vec3 hitBRDF(Hit hit, vec3 v, vec3 l, Material m);  // lighting.glsl
 vec3 sunLight(Hit hit, vec3 v, Material m, vec3 reflected, float visible) {
     if (u_envSun.w <= 0.0 || visible <= 0.0) return vec3(0.0);
@@ -177,7 +178,7 @@ vec3 sunLight(Hit hit, vec3 v, Material m, vec3 reflected, float visible) {
     Material wide = m;
     wide.roughness = sqrt(min(length(vec2(r * r, 0.5 * u_envSun.w)), 1.0));
     vec3 f = hitBRDF(hit, v, l, m);
-    if (r * r < u_envSun.w) f = min(f, hitBRDF(hit, v, l, wide));  // alpha' within 12% of alpha beyond: the point's lobe
+    if (r * r < u_envSun.w) f = min(f, hitBRDF(hit, v, l, wide));  // beyond it alpha' is within 12% of alpha
     return visible * f * u_envIntensity * u_envSunPower * NoS;
 }
 

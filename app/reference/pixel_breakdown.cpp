@@ -138,7 +138,8 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
             const double rough = std::clamp(m.roughness, kMinRoughness, 1.0);
             Material wide = m;
             wide.roughness = std::sqrt(std::min(std::hypot(rough * rough, 0.5 * tables.sunAngularRadius), 1.0));
-            const dvec3 f = glm::min(cookTorranceBRDF(nl, vl, l, m, model), cookTorranceBRDF(nl, vl, l, wide, model));
+            dvec3 f = cookTorranceBRDF(nl, vl, l, m, model);
+            if (rough * rough < tables.sunAngularRadius) f = glm::min(f, cookTorranceBRDF(nl, vl, l, wide, model));
             sun = f * environment.intensity * tables.sunPower * x;
         }
     }
