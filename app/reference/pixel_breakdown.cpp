@@ -108,25 +108,20 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
         e.prefilteredSpread = glm::max(e.prefilteredSpread, glm::abs(lookup(glm::normalize(r + kLookupAngle * t)) - e.prefiltered));
     e.scaleBias = splitSumAt(tables, NoV, m.roughness);
     const dvec3 F0 = baseReflectance(m);
-    // The picture's irradiance: SH9's, the sun's three bands swapped for the
-    // sun as a point source, clamped at 0 (shaders/environment.glsl).
-    dvec3 irradiance = e.irradiance;
-    if (tables.sunPresent) {
-        const double x = glm::dot(environmentLocalDirection(environment, n), tables.sunDirection);
-        const double sh = 0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5);
-        irradiance += environment.intensity * tables.sunPower * (std::max(x, 0.0) - sh);
-    }
-    irradiance = glm::max(irradiance, dvec3(0.0));
     const dvec3 specular = e.prefiltered * (F0 * e.scaleBias.x + e.scaleBias.y);
-    e.light = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * irradiance + specular;
-    // The picture: the sun's bands out of SH9, the sun a light of its own
-    // (sunLight in shaders/environment.glsl, in the image's frame here).
-    dvec3 sunless = e.irradiance;
-    dvec3 sun(0.0);
+    const dvec3 diffuseWeight = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi;
+    // Two irradiances (shaders/environment.glsl), both clamped at 0: the
+    // debugger's, SH9's with the sun's three bands swapped for the sun as a
+    // point source (sunIrradianceCorrection), and the picture's, SH9's with
+    // the bands taken out, the sun a light of its own (sunLight; in the
+    // image's frame here).
+    dvec3 irradiance = e.irradiance, sunless = e.irradiance, sun(0.0);
     if (tables.sunPresent) {
         const dvec3 s = tables.sunDirection, nl = environmentLocalDirection(environment, n);
         const double x = glm::dot(nl, s);
-        sunless -= environment.intensity * tables.sunPower * (0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5));
+        const dvec3 bands = environment.intensity * tables.sunPower * (0.25 + 0.5 * x + 0.3125 * (1.5 * x * x - 0.5));
+        irradiance += environment.intensity * tables.sunPower * std::max(x, 0.0) - bands;
+        sunless -= bands;
         if (x > 0.0) {
             const dvec3 vl = environmentLocalDirection(environment, v);
             const double apart = std::acos(std::clamp(glm::dot(r, s), -1.0, 1.0));
@@ -143,7 +138,8 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
             sun = f * environment.intensity * tables.sunPower * x;
         }
     }
-    e.pictureLight = (1.0 - m.metallic) * (1.0 - F0) * m.albedo / kPi * glm::max(sunless, dvec3(0.0)) + specular + sun;
+    e.light = diffuseWeight * glm::max(irradiance, dvec3(0.0)) + specular;
+    e.pictureLight = diffuseWeight * glm::max(sunless, dvec3(0.0)) + specular + sun;
     return e;
 }
 

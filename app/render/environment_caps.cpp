@@ -159,8 +159,9 @@ EnvironmentSun findSun(const RadianceImage& image) {
             if (isSun[std::size_t(y) * W + x]) continue;
             if (glm::dot(equirectDirection((x + 0.5) / W, (y + 0.5) / H), centre) < cosAround) continue;
             const float* p = image.at(x, y);
-            sum += equirectPixelSolidAngle(y, W, H) * glm::dvec3(p[0], p[1], p[2]);
-            weight += equirectPixelSolidAngle(y, W, H);
+            const double omega = equirectPixelSolidAngle(y, W, H);
+            sum += omega * glm::dvec3(p[0], p[1], p[2]);
+            weight += omega;
         }
     sun.around = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
     sun.power = glm::max(sun.power - solidAngle * sun.around, glm::dvec3(0.0));

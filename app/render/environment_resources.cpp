@@ -111,7 +111,10 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
     // light of its own (shaders/environment.glsl, sunLight); SH9 stays the
     // whole map's, exercise 11's coefficients, the sun's three bands taken
     // out in the shader.
-    const RadianceImage sunless = mapWithoutSun(*environment.image, r->sun);
+    // (A copy only where there is a sun to take out.)
+    RadianceImage withoutSun;
+    if (r->sun.present) withoutSun = mapWithoutSun(*environment.image, r->sun);
+    const RadianceImage& sunless = r->sun.present ? withoutSun : *environment.image;
     r->levels = ref::prefilterChain(sunless, settings.prefilterWidth, settings.prefilterHeight, settings.levels,
                                     settings.prefilterSamples);
     r->sh = ref::projectSh9(*environment.image);

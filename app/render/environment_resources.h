@@ -54,7 +54,7 @@ struct EnvironmentResources {
     ref::Sh9 sh;                               // ref::projectSh9
     std::vector<glm::dvec2> table;             // ref::splitSumTable, tableSize^2 (scale, bias)
     RadianceImage irradiance;                  // environmentIrradianceMap(map, settings.irradianceMap); empty for 0
-    EnvironmentSun sun;                        // findSun(map) (environment_caps.h): for the spheres' occlusion
+    EnvironmentSun sun;                        // findSun(map) (environment_caps.h): the picture's sun light and its shadow
     std::vector<RadianceImage> caps;           // capAverageChain(mapWithoutSun(map, sun)): the same
 };
 
