@@ -72,30 +72,17 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
     return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
-// The solid angle two caps of half-angles a1, a2 share, their axes g apart
-// (Tovchigrechko and Vakser 2001, eq. 2; checked against Monte Carlo), from
-// the cosines and sines of the three angles (c1 s1, c2 s2, cg sg).
-float capOverlapSolidAngle(float c1, float s1, float c2, float s2, float cg, float sg) {
-    if (cg <= c1 * c2 - s1 * s2) return 0.0;                             // apart: g >= a1 + a2
-    if (cg >= c1 * c2 + s1 * s2) return 2.0 * PI * (1.0 - max(c1, c2));  // one holds the other: g <= |a1 - a2|
-    sg = max(sg, 1e-6);
-    float t1 = acos(clamp((cg - c1 * c2) / max(s1 * s2, 1e-6), -1.0, 1.0));
-    float t2 = acos(clamp((c2 - cg * c1) / (sg * max(s1, 1e-6)), -1.0, 1.0));
-    float t3 = acos(clamp((c1 - cg * c2) / (sg * max(s2, 1e-6)), -1.0, 1.0));
-    return max(2.0 * (PI - t1 - c1 * t2 - c2 * t3), 0.0);
-}
-
-// The share of sphere i's cap (axis w, half-angle b, form factor F seen
+// The share of sphere i's cap (axis w, half-angle b given by its sine and
+// cosine, form factor F seen
 // from the hit) that no larger cap of another sphere holds: where caps
 // overlap, the larger one takes the shared directions and the smaller one
 // only what is its own, so the light of a direction is taken out once. The
 // shared part's cosine weight is its solid angle times n.m, m the middle of
 // the shared lens on the great circle through both axes; `lens` is the sum
 // of the lenses' middles times their weights (where the shared part lies).
-float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit, out vec3 lens) {
+float capShareNotCovered(int i, vec3 w, float sb, float cb, float F, Hit hit, out vec3 lens) {
     lens = vec3(0.0);
     if (F <= 0.0) return 1.0;
-    float sb = sin(b), cb = cos(b);
     float shared = 0.0;
     for (int j = 0; j < sphereCount(); ++j) {
         if (j == i || j == hit.sphere) continue;
@@ -109,13 +96,21 @@ float capShareNotCovered(int i, vec3 w, float b, float F, Hit hit, out vec3 lens
         float cbj = sqrt(1.0 - sbj * sbj);
         float cg = dot(w, wj);
         if (cg <= cb * cbj - sb * sbj) continue;  // apart: g >= b + bj
-        float bj = asin(sbj);
-        float g = acos(clamp(cg, -1.0, 1.0));
+        // The shared lens spans, on the great circle from w towards wj, the
+        // angles lo to b: lo = -b where the larger cap holds the whole of
+        // this one (g <= bj - b), else g - bj; b, as g + bj >= b. Its middle m
+        // is the sum of its two ends' directions: no angle is needed.
         vec3 e = wj - cg * w;
-        e = dot(e, e) > 1e-12 ? normalize(e) : vec3(0.0);
-        float middle = 0.5 * (max(g - bj, -b) + min(b, g + bj));
-        vec3 m = cos(middle) * w + sin(middle) * e;
-        float weight = capOverlapSolidAngle(cb, sb, cbj, sbj, cg, sqrt(max(1.0 - cg * cg, 0.0))) * max(dot(hit.n, m), 0.0);
+        float sg = length(e);
+        e = sg > 1e-6 ? e / sg : vec3(0.0);
+        bool reachesPastW = cg >= cbj * cb + sbj * sb;  // g <= bj - b: the larger cap holds the smaller one
+        float cosLo = reachesPastW ? cb : cg * cbj + sg * sbj;
+        float sinLo = reachesPastW ? -sb : sg * cbj - cg * sbj;
+        vec3 m = normalize((cosLo + cb) * w + (sinLo + sb) * e);
+        // Its solid angle: the smaller cap's, faded by a smoothstep in cos(g)
+        // between the two tangencies (Oat and Sander 2007's overlap, in cosines).
+        float t = (cg - (cb * cbj - sb * sbj)) / max(2.0 * sb * sbj, 1e-7);
+        float weight = 2.0 * PI * (1.0 - cb) * smoothstep(0.0, 1.0, t) * max(dot(hit.n, m), 0.0);
         shared += weight;
         lens += weight * m;
     }
@@ -176,15 +171,19 @@ OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 
             float shift = min(atan(across * length(side), along), ENV_CAP_SHIFT * capAngle);
             vec3 centre = normalize(w + tan(shift) * (length(side) > 1e-6 ? normalize(side) : vec3(0.0)));
             vec3 lens;
-            float share = capShareNotCovered(i, w, capAngle, F, hit, lens);
+            float share = capShareNotCovered(i, w, 1.0 / h, cb, F, hit, lens);
             float radius = capAngle - shift;
-            if (share < 1.0) {  // read the part the shared lenses leave: away from them
-                vec3 away = centre - lens;
-                away -= dot(away, centre) * centre;
-                float phi = 1.0 - share;
-                if (dot(away, away) > 1e-12) centre = normalize(centre + tan(ENV_LENS_AWAY * phi * radius) * normalize(away));
-                radius *= 1.0 - ENV_LENS_SHRINK * phi;
-            }
+            // Where a larger cap holds the share phi of this one's weight, its
+            // mean is read over the part the lenses leave: the read turned away
+            // from them by ENV_LENS_AWAY phi of its half-angle (a rotation by
+            // its sine and cosine), its half-angle times 1 - ENV_LENS_SHRINK phi.
+            float phi = 1.0 - share;
+            vec3 away = centre - lens;
+            away -= dot(away, centre) * centre;
+            float awayLength = length(away);
+            float turn = ENV_LENS_AWAY * phi * radius;
+            if (awayLength > 1e-6) centre = cos(turn) * centre + sin(turn) * (away / awayLength);
+            radius *= 1.0 - ENV_LENS_SHRINK * phi;
             lost += PI * F * share * u_envIntensity * capMeanRadiance(environmentLocal(centre), radius);
         }
         float sunCos = dot(u_envSun.xyz, w);

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -208,6 +209,18 @@ std::vector<Variant> makeVariants(const Scene& scene, const Options& options) {
     return out;
 }
 
+// --pictures: <dir>/<scene>-<variant>.png and .pfm, the variant's ':' and
+// '=' made file-name safe.
+void savePicture(const fs::path& dir, const std::string& scene, const std::string& variant,
+                 const Rendering& picture) {
+    if (dir.empty() || picture.display.width == 0) return;
+    std::string name = scene + "-" + variant;
+    for (char& c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' || c == '_')) c = '_';
+    writePng((dir / (name + ".png")).string(), picture.display);
+    if (!picture.radiance.rgb.empty()) writePfm((dir / (name + ".pfm")).string(), picture.radiance);
+}
+
 Rendering resampleNearest(const Rendering& image, int width, int height) {
     Rendering out;
     out.display = {width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 3)};
@@ -359,6 +372,7 @@ std::vector<Measurement> measureScene(const std::string& sceneName, const std::v
                     gl::Finish();
                 }
                 Rendering got = renderer.readBack();
+                savePicture(o.picturesDir, sceneName, m.variant, got);
                 const Rendering& expected = v.environment && exact ? exact->withVisibility : reference;
                 const bool noReference = expected.display.width == 0;  // a student edition: none in this copy
                 if (!noReference &&
@@ -509,6 +523,8 @@ std::vector<Measurement> runBench(const Options& options, std::ostream& log, std
         if (environmentRows && ref::referenceInThisCopy()) {
             log << "bench: " << name << ": ";
             exact = exactReferences(scene, options.environmentSamples, log);
+            savePicture(options.picturesDir, name, "exact", exact->withVisibility);
+            savePicture(options.picturesDir, name, "exact-no-V", exact->withoutVisibility);
         }
         std::vector<Measurement> rows = measureScene(name, variants, reference, exact ? &*exact : nullptr, options,
                                                      implDir, clock, log);

@@ -105,6 +105,10 @@ struct Options {
     // files, measured in the same run (a student's own, the course's with a
     // comment added).
     std::vector<std::filesystem::path> alsoImpls;
+    // Where to write every measured picture (PNG and PFM, named
+    // <scene>-<variant>) and the environment sweep's exact references, to
+    // see where an error lies; empty: nowhere.
+    std::filesystem::path picturesDir;
 };
 
 // Every group name Options::sweeps accepts, in the order they run.

@@ -36,6 +36,7 @@ struct BenchCommandOptions {
     std::string impl;
     std::vector<std::string> yardsticks;
     std::vector<std::string> alsoImpls;
+    std::string pictures;
     bool sizeGiven = false;  // --size on the command line (the view sweep's default is 1280x720)
 };
 
@@ -72,6 +73,7 @@ std::string commandLine(const BenchCommandOptions& o) {
     option("--csv", o.csv, defaults.csv);
     option("--plot", o.plot, defaults.plot);
     option("--markdown", o.markdown, defaults.markdown);
+    option("--pictures", o.pictures, defaults.pictures);
     return line;
 }
 
@@ -96,6 +98,10 @@ void runBenchCommand(const BenchCommandOptions& o) {
     options.sweeps = splitList(o.sweeps);
     options.backend = o.backend;
     options.implDir = o.impl;
+    if (!o.pictures.empty()) {
+        if (!std::filesystem::is_directory(o.pictures)) throw Error("--pictures: " + o.pictures + " is not a directory");
+        options.picturesDir = o.pictures;
+    }
     for (const std::string& dir : o.alsoImpls) {
         if (!std::filesystem::is_directory(dir)) throw Error("--also-impl: " + dir + " is not a directory");
         options.alsoImpls.push_back(dir);
@@ -195,6 +201,9 @@ void addBenchCommand(CLI::App& app) {
                     "(default: all; environment: scenes with an environment only, with its own --markdown section "
                     "<!-- bench-environment:begin --> when run alone); "
                     "view: the live view's programs against the generic one (1280x720 unless --size)");
+    cmd->add_option("--pictures", options->pictures,
+                    "Write every measured picture (PNG and PFM, <scene>-<variant>) and the environment sweep's exact "
+                    "references into this existing folder, to see where an error lies");
     cmd->add_option("--backend", options->backend, "OpenGL backend: auto, egl, osmesa or glfw (a hidden window)")->capture_default_str();
     cmd->add_option("--clock", options->clock,
                     "Frame timing: gpu (GL_TIME_ELAPSED), wall (draw + glFinish), cpu (process CPU time), auto (wall on llvmpipe)")

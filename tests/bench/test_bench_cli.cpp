@@ -547,3 +547,25 @@ TEST(BenchCli, BadOptionsAreOneClearError) {
     EXPECT_EQ(emptyImpl.status, 2);
     EXPECT_NE(emptyImpl.output.find("--impl"), std::string::npos) << emptyImpl.output;
 }
+
+// --pictures DIR: every measured picture is written as <scene>-<variant>.png
+// and .pfm (the variant's ':' and '=' made file-name safe), so an error in
+// the table can be looked at; a folder that is not there is refused in one
+// line before any measuring.
+TEST(BenchCli, PicturesAreWrittenWhereAsked) {
+    fs::path dir = test::freshTempDir("bench_pictures");
+    auto r = test::runRaylab("bench " + (scenesDir() / "lecture.json").string() +
+                             " --sweeps modes --size 16x12 --warmup 0 --frames 1 --compiles 1 --reference-spp 1 --pictures " +
+                             dir.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* name : {"lecture-specialised", "lecture-generic", "lecture-textbook"})
+        for (const char* ext : {".png", ".pfm"}) {
+            const fs::path file = dir / (std::string(name) + ext);
+            EXPECT_TRUE(fs::is_regular_file(file)) << file;
+            EXPECT_GT(fs::is_regular_file(file) ? fs::file_size(file) : 0, 16u) << file;
+        }
+    auto missing = test::runRaylab("bench --size 8x6 --pictures " + (dir / "nope").string());
+    EXPECT_NE(missing.status, 0);
+    EXPECT_NE(missing.output.find((dir / "nope").string() + " is not a directory"), std::string::npos) << missing.output;
+    EXPECT_EQ(count(missing.output, "\n"), 1u) << missing.output;
+}
