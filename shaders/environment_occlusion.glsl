@@ -30,32 +30,29 @@ const float ENV_CAP_SHIFT = 0.5;
 const float ENV_LENS_AWAY = 1.0;
 const float ENV_LENS_SHRINK = 0.3;
 
-// The caps' half-angles of the host's cap chain (app/render/environment_caps.h,
-// whose constants they are): level k averages the map over caps of
-// u_envSmallestCap * 2^(k/2), k < u_envCapLevels, stacked in u_envPrefiltered's atlas.
-const int ENV_MAX_CAP_LEVELS = 16;
-uniform vec4 u_envCapRect[ENV_MAX_CAP_LEVELS];
+// The host's cap chain (app/render/environment_caps.h, whose constants they
+// are): level k averages the map over caps of half-angle
+// b_k = u_envSmallestCap * 2^(k/2), k < u_envCapLevels; the layers of one
+// volume hold each level's integral over its cap (mean times 1 - cos b_k),
+// resampled to one size and divided by u_envCapScale
+// (app/render/environment_resources.h, capVolume).
+uniform highp sampler3D u_envCaps;
 uniform int u_envCapLevels;
+uniform float u_envCapScale;
 uniform float u_envSmallestCap;
 // The map's sun (u_envSun, environment.glsl) is left out of the cap chain:
 // it is shadowed as a disc, every cap that covers part of it taking that
 // part (coneCapCoverage), so its shadow has its own penumbra.
 
 // The map's mean radiance (no intensity) over the cap of half-angle b around
-// the image-frame direction w, from the two cap levels around b: their
-// integrals over the cap (mean times solid angle 2 pi (1 - cos)) mixed
-// linearly in log2 of the angle (two levels an octave), over the cap's own solid angle; so a sun
-// inside both counts in full, one between their edges in part.
+// the image-frame direction w: one trilinear lookup, bilinear in each level
+// as every lookup of the map, the two levels' integrals around b mixed
+// linearly in log2 of the angle (two levels an octave), over the cap's own
+// 1 - cos b; so a bright spot inside both counts in full, one between their
+// edges in part.
 vec3 capMeanRadiance(vec3 w, float b) {
     float l = clamp(2.0 * log2(max(b, 1e-6) / u_envSmallestCap), 0.0, float(u_envCapLevels - 1));
-    int k0 = int(floor(l));
-    int k1 = min(k0 + 1, u_envCapLevels - 1);
-    vec2 uv = equirectUv(w);
-    float a0 = 1.0 - cos(u_envSmallestCap * exp2(0.5 * float(k0)));
-    float a1 = 1.0 - cos(u_envSmallestCap * exp2(0.5 * float(k1)));
-    vec3 integral = mix(a0 * environmentBilinear(u_envPrefiltered, u_envCapRect[k0], uv),
-                        a1 * environmentBilinear(u_envPrefiltered, u_envCapRect[k1], uv), l - float(k0));
-    return integral / max(1.0 - cos(b), 1e-7);
+    return u_envCapScale * texture(u_envCaps, vec3(equirectUv(w), (l + 0.5) / float(u_envCapLevels))).rgb / max(1.0 - cos(b), 1e-7);
 }
 
 // The share of the cosine-weighted hemisphere of n that a sphere covers

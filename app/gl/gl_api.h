@@ -67,6 +67,7 @@
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                          \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                \
     X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                          \
+    X(PFNGLTEXIMAGE3DPROC, TexImage3D)                                                \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                          \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                      \
     X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                \

@@ -122,7 +122,12 @@ RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, do
                 glm::dvec2 uv = equirectUv(l);
                 const double sinTheta = std::sqrt(std::max(1e-6, 1.0 - l.y * l.y));
                 const double share = sampleSolidAngle[size_t(&hl - halfVectors.data())];
-                const double level = share > 0.0 ? 0.5 * std::log2(share / (pixelSolidAngle * sinTheta)) + 1.0 : 0.0;
+                // The level whose pixel is the draw's footprint, with no bias:
+                // Krivanek and Colbert's +1 (a smoother chain) spread the soft
+                // boxes' light into the sharp levels' tails (the studio's metals
+                // 0.1 LSB over; the sun, which it kept whole, is a light of its
+                // own since and not in this map: docs/decisions.md).
+                const double level = share > 0.0 ? 0.5 * std::log2(share / (pixelSolidAngle * sinTheta)) : 0.0;
                 sum += pyramidRadiance(pyramid, uv, level) * NoL;
                 weight += NoL;
             }

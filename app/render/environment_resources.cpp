@@ -136,14 +136,42 @@ std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& 
     return rects;
 }
 
+CapVolume capVolume(const std::vector<RadianceImage>& caps) {
+    CapVolume v;
+    for (const RadianceImage& level : caps) {
+        v.width = std::max(v.width, level.width);
+        v.height = std::max(v.height, level.height);
+    }
+    v.levels = int(caps.size());
+    v.rgba.reserve(std::size_t(v.width) * std::size_t(v.height) * caps.size() * 4);
+    float largest = 0.0f;
+    for (std::size_t k = 0; k < caps.size(); ++k) {
+        const RadianceImage& level = caps[k];
+        const double solidAngle = 1.0 - std::cos(capLevelAngle(int(k)));  // over 2 pi
+        for (int y = 0; y < v.height; ++y)
+            for (int x = 0; x < v.width; ++x) {
+                const glm::dvec3 L = bilinearRadiance(level, (x + 0.5) / v.width, (y + 0.5) / v.height);
+                for (int c = 0; c < 3; ++c) {
+                    v.rgba.push_back(float(L[c] * solidAngle));
+                    largest = std::max(largest, v.rgba.back());
+                }
+                v.rgba.push_back(1.0f);
+            }
+    }
+    if (largest > 0.0f && std::isfinite(largest)) {
+        v.scale = largest;
+        for (std::size_t i = 0; i < v.rgba.size(); ++i)
+            if (i % 4 != 3) v.rgba[i] /= largest;
+    }
+    return v;
+}
+
 EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResources> resources)
     : resources_(std::move(resources)) {
     const EnvironmentResources& r = *resources_;
-    std::vector<RadianceImage> stacked = r.levels;
-    stacked.insert(stacked.end(), r.caps.begin(), r.caps.end());
+    const std::vector<RadianceImage>& stacked = r.levels;
     const std::vector<glm::ivec4> all = environmentAtlasRects(stacked);
-    rects_.assign(all.begin(), all.begin() + std::ptrdiff_t(r.levels.size()));
-    capRects_.assign(all.begin() + std::ptrdiff_t(r.levels.size()), all.end());
+    rects_ = all;
     int atlasWidth = 0, atlasHeight = 0;
     for (const glm::ivec4& rect : all) {
         atlasWidth = std::max(atlasWidth, rect.z);
@@ -188,11 +216,31 @@ EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResour
         upload(textures_[3], GL_RGBA32F, GL_RGBA, r.irradiance.width, r.irradiance.height, rgba.data());
     }
     gl::BindTexture(GL_TEXTURE_2D, 0);
+    const CapVolume caps = capVolume(r.caps);
+    capLevels_ = caps.levels;
+    capScale_ = caps.scale;
+    gl::GenTextures(1, &caps_);
+    gl::BindTexture(GL_TEXTURE_3D, caps_);
+    gl::PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl::TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, caps.width, caps.height, caps.levels, 0, GL_RGBA, GL_FLOAT,
+                   caps.rgba.data());
+    // Trilinear: bilinear between texel centres in each level as every other
+    // lookup (around in u, clamped in v), and the two levels around a cap's
+    // angle mixed linearly (their integrals over the cap, as capVolume holds).
+    gl::TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl::TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl::TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl::TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl::TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    gl::BindTexture(GL_TEXTURE_3D, 0);
     GLenum error = gl::GetError();
     if (error != GL_NO_ERROR) throw Error("environment textures: OpenGL error " + gl::errorName(error));
 }
 
-EnvironmentTextures::~EnvironmentTextures() { gl::DeleteTextures(textures_[3] != 0 ? 4 : 3, textures_); }
+EnvironmentTextures::~EnvironmentTextures() {
+    gl::DeleteTextures(textures_[3] != 0 ? 4 : 3, textures_);
+    gl::DeleteTextures(1, &caps_);
+}
 
 void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& environment) const {
     gl::UseProgram(p.id());
@@ -207,6 +255,11 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
         gl::BindTexture(GL_TEXTURE_2D, textures_[3]);
         gl::Uniform1i(p.uniform("u_envIrradiance"), kFirstUnit + 3);
     }
+    if (p.uniform("u_envCaps") >= 0) {  // only a program with RL_ENV_OCCLUSION reads it
+        gl::ActiveTexture(GL_TEXTURE0 + kFirstUnit + 4);
+        gl::BindTexture(GL_TEXTURE_3D, caps_);
+        gl::Uniform1i(p.uniform("u_envCaps"), kFirstUnit + 4);
+    }
     gl::ActiveTexture(GL_TEXTURE0);
     for (std::size_t k = 0; k < rects_.size(); ++k) {
         const glm::ivec4& r = rects_[k];
@@ -214,12 +267,8 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
                       float(r.w));
     }
     gl::Uniform1i(p.uniform("u_envLevels"), int(rects_.size()));
-    for (std::size_t k = 0; k < capRects_.size(); ++k) {  // only a program with RL_ENV_OCCLUSION reads them
-        const glm::ivec4& r = capRects_[k];
-        gl::Uniform4f(p.uniform("u_envCapRect[" + std::to_string(k) + "]"), float(r.x), float(r.y), float(r.z),
-                      float(r.w));
-    }
-    gl::Uniform1i(p.uniform("u_envCapLevels"), int(capRects_.size()));
+    gl::Uniform1i(p.uniform("u_envCapLevels"), capLevels_);
+    gl::Uniform1f(p.uniform("u_envCapScale"), capScale_);
     float sh[27];
     for (int k = 0; k < 9; ++k)
         for (int c = 0; c < 3; ++c) sh[3 * k + c] = float(resources_->sh[std::size_t(k)][c]);

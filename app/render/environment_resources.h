@@ -5,7 +5,7 @@
 // the GL picture"):
 //   environmentResources(environment, settings)  the tables, cached per image and settings
 //   EnvironmentTextures(resources)               their textures (needs a current context)
-//   EnvironmentTextures::bind(program, environment)  textures to units 1-4 and every u_env* uniform;
+//   EnvironmentTextures::bind(program, environment)  textures to units 1-5 and every u_env* uniform;
 //                                               intensity and rotation are read from `environment`
 //                                               each call (values: no recompile, no new tables)
 // GlRenderer::setScene() builds them for a scene with an environment and
@@ -77,9 +77,26 @@ RadianceImage environmentIrradianceMap(const RadianceImage& image, int width);
 std::shared_ptr<const EnvironmentResources> environmentResources(const Environment& environment,
                                                                  const EnvironmentSettings& settings = {});
 
-// The atlas of the prefiltered levels (then the cap levels): level k's texel rectangle (x, y,
+// The atlas of the prefiltered levels: level k's texel rectangle (x, y,
 // width, height); the levels stacked top to bottom, each at x = 0.
 std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& levels);
+
+// The cap chain as one volume (environment_occlusion.glsl reads it with one
+// trilinear lookup, the two cap levels around a cap's angle mixed by the
+// filter): level k's integral over its cap, its mean radiance times
+// 1 - cos(capLevelAngle(k)) (the solid angle over 2 pi), so that the mix
+// between two levels weighs each by its cap, as a sum of light. Every level
+// is resampled, bilinearly as the shader's lookups read it, to the widest
+// level's size (width x height texels, `levels` layers, RGBA, alpha 1) and
+// divided by `scale`, the largest value, so that a half-float texture
+// (filterable by every GL and WebGL2: 11 bits, within 0.05% of each value
+// above 6e-5 of the largest) holds any legal map.
+struct CapVolume {
+    int width = 0, height = 0, levels = 0;
+    float scale = 1.0f;
+    std::vector<float> rgba;
+};
+CapVolume capVolume(const std::vector<RadianceImage>& caps);
 
 class EnvironmentTextures {
 public:
@@ -88,10 +105,11 @@ public:
     EnvironmentTextures(const EnvironmentTextures&) = delete;
     EnvironmentTextures& operator=(const EnvironmentTextures&) = delete;
 
-    // Binds the textures to units 1, 2, 3 (and 4: the irradiance map, where
-    // the settings have one) and sets every u_env* (u_envCapRect[], u_envCapLevels,
-    // u_envSmallestCap: the cap levels in the atlas; u_envSun, u_envSunPower: the
-    // sun in world directions; for environment_occlusion.glsl)
+    // Binds the textures to units 1, 2, 3 (4: the irradiance map, where the
+    // settings have one; 5: the cap volume) and sets every u_env* (u_envCaps,
+    // u_envCapLevels, u_envCapScale, u_envSmallestCap: the cap chain;
+    // u_envSun, u_envSunPower: the sun in world directions; for
+    // environment_occlusion.glsl)
     // uniform of `program` (the program is made current).
     void bind(const ShaderProgram& program, const Environment& environment) const;
     const EnvironmentResources& resources() const { return *resources_; }
@@ -101,8 +119,10 @@ public:
 private:
     std::shared_ptr<const EnvironmentResources> resources_;
     GLuint textures_[4] = {0, 0, 0, 0};  // map, prefiltered atlas, split-sum table, irradiance map (or 0)
+    GLuint caps_ = 0;                   // capVolume(), a 3D texture
+    int capLevels_ = 0;
+    float capScale_ = 1.0f;
     std::vector<glm::ivec4> rects_;     // the prefiltered levels' in the atlas
-    std::vector<glm::ivec4> capRects_;  // the cap levels', below them in the same atlas
 };
 
 }  // namespace rl

@@ -11,6 +11,7 @@
 #include "reference/sh9.h"
 #include "reference/split_sum.h"
 #include "render/environment_caps.h"
+#include "render/environment_resources.h"
 #include "core/paths.h"
 #include "support/test_support.h"
 
@@ -578,4 +579,41 @@ TEST(EnvironmentCaps, UniformStaysUniformAndTheSkysSunIsFound) {
     for (float v : mapWithoutSun(sky, sun).rgb) brightest = std::max(brightest, v);
     EXPECT_LT(brightest, 10.0f) << "the sun is left out of the sunless map (the prefiltered and cap chains)";
     EXPECT_FALSE(findSun(load("studio.hdr")).present);
+}
+
+// The cap chain as the shader reads it (capVolume): every level at the widest
+// level's size, holding its integral over the cap (mean times 1 - cos of its
+// half-angle) as the level's own bilinear lookup gives it at each texel
+// centre, over one scale that keeps every value within a half float's range
+// (the largest is 1), whatever the map's brightness.
+TEST(EnvironmentCaps, TheVolumeHoldsEachLevelsIntegralAsItsLookupReadsIt) {
+    const RadianceImage sky = loadEnvironmentImage((sourceRoot() / "scenes/environments/studio.hdr").string());
+    const std::vector<RadianceImage> caps = capAverageChain(sky);
+    const CapVolume v = capVolume(caps);
+    ASSERT_EQ(v.levels, kCapLevels);
+    int widest = 0;
+    for (const RadianceImage& level : caps) widest = std::max(widest, level.width);
+    ASSERT_EQ(v.width, widest);
+    ASSERT_EQ(v.rgba.size(), std::size_t(v.width) * v.height * v.levels * 4);
+    float largest = 0.0f;
+    double worst = 0.0;
+    for (int k = 0; k < v.levels; ++k)
+        for (int y = 0; y < v.height; y += 3)
+            for (int x = 0; x < v.width; x += 5) {
+                const dvec3 expected = bilinearRadiance(caps[std::size_t(k)], (x + 0.5) / v.width, (y + 0.5) / v.height) *
+                                       (1.0 - std::cos(capLevelAngle(k)));
+                const float* got = &v.rgba[((std::size_t(k) * v.height + y) * v.width + x) * 4];
+                for (int c = 0; c < 3; ++c) {
+                    worst = std::max(worst, std::abs(got[c] * double(v.scale) - expected[c]) / std::max(expected[c], 1e-12));
+                }
+                ASSERT_EQ(got[3], 1.0f);
+            }
+    for (std::size_t i = 0; i < v.rgba.size(); ++i)
+        if (i % 4 != 3) largest = std::max(largest, v.rgba[i]);
+    EXPECT_LT(worst, 1e-5) << "each value, times the scale, is the level's lookup times its cap's 1 - cos";
+    EXPECT_NEAR(largest, 1.0f, 1e-6f);
+    // The largest legal value (docs/scene-format.md) still fits a half float (65504) over the scale.
+    const CapVolume bright = capVolume(capAverageChain(filledImage(32, 16, 1e15f)));
+    EXPECT_GT(bright.scale, 1e14f);
+    for (std::size_t i = 0; i < bright.rgba.size(); ++i) ASSERT_LE(bright.rgba[i], 1.0f + 1e-6f) << i;
 }
