@@ -124,9 +124,10 @@ RadianceImage prefilterFromPyramid(const std::vector<RadianceImage>& pyramid, do
                 const double share = sampleSolidAngle[size_t(&hl - halfVectors.data())];
                 // The level whose pixel is the draw's footprint, with no bias:
                 // Krivanek and Colbert's +1 (a smoother chain) spread the soft
-                // boxes' light into the sharp levels' tails (the studio's metals
-                // 0.1 LSB over; the sun, which it kept whole, is a light of its
-                // own since and not in this map: docs/decisions.md).
+                // boxes' light into the sharp levels' tails (a dark panel of the
+                // studio's chrome ball 8% over the reference); the sun, which it
+                // kept whole, is a light of its own and not in this map
+                // (docs/decisions.md).
                 const double level = share > 0.0 ? 0.5 * std::log2(share / (pixelSolidAngle * sinTheta)) : 0.0;
                 sum += pyramidRadiance(pyramid, uv, level) * NoL;
                 weight += NoL;
