@@ -52,7 +52,8 @@ uniform float u_envSmallestCap;
 // edges in part.
 vec3 capMeanRadiance(vec3 w, float b) {
     float l = clamp(2.0 * log2(max(b, 1e-6) / u_envSmallestCap), 0.0, float(u_envCapLevels - 1));
-    return u_envCapScale * texture(u_envCaps, vec3(equirectUv(w), (l + 0.5) / float(u_envCapLevels))).rgb / max(1.0 - cos(b), 1e-7);
+    vec3 integral = u_envCapScale * texture(u_envCaps, vec3(equirectUv(w), (l + 0.5) / float(u_envCapLevels))).rgb;
+    return integral / max(1.0 - cos(b), 1e-7);
 }
 
 // The share of the cosine-weighted hemisphere of n that a sphere covers
@@ -69,14 +70,14 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
     return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
-// The share of sphere i's cap (axis w, half-angle b given by its sine and
-// cosine, form factor F seen
-// from the hit) that no larger cap of another sphere holds: where caps
-// overlap, the larger one takes the shared directions and the smaller one
-// only what is its own, so the light of a direction is taken out once. The
-// shared part's cosine weight is its solid angle times n.m, m the middle of
-// the shared lens on the great circle through both axes; `lens` is the sum
-// of the lenses' middles times their weights (where the shared part lies).
+// The share of sphere i's cap (axis w, half-angle b given by its sine sb and
+// cosine cb, form factor F seen from the hit) that no larger cap of another
+// sphere holds: where caps overlap, the larger one takes the shared
+// directions and the smaller one only what is its own, so the light of a
+// direction is taken out once. The shared part's cosine weight is its solid
+// angle times n.m, m the middle of the shared lens on the great circle
+// through both axes; `lens` is the sum of the lenses' middles times their
+// weights (where the shared part lies).
 float capShareNotCovered(int i, vec3 w, float sb, float cb, float F, Hit hit, out vec3 lens) {
     lens = vec3(0.0);
     if (F <= 0.0) return 1.0;

@@ -269,16 +269,23 @@ Measurement describe(const Variant& v) {
 // rounds of timed frames never upload an approximation's textures anew
 // between two variants' frames (a frame after a fresh upload of a few
 // megabytes ran up to 1.5 times slower on llvmpipe, every program alike).
-using Renderers = std::map<std::string, std::unique_ptr<GlRenderer>>;
+struct RendererSlot {
+    int width = 0, height = 0;
+    EnvironmentSettings environment;
+    std::unique_ptr<GlRenderer> renderer;
+};
+using Renderers = std::vector<RendererSlot>;
 GlRenderer& rendererFor(Renderers& renderers, const Variant& v) {
     const EnvironmentSettings e = environmentSettings(v.environment.value_or(EnvironmentApproximation{}));
-    std::ostringstream key;
-    key << v.scene.render.width << "x" << v.scene.render.height << " " << e.prefilterWidth << " " << e.prefilterHeight
-        << " " << e.levels << " " << e.prefilterSamples << " " << e.tableSize << " " << e.tableSamples << " "
-        << e.irradianceMap;
-    auto& r = renderers[key.str()];
-    if (!r) r = std::make_unique<GlRenderer>();
-    return *r;
+    const int w = v.scene.render.width, h = v.scene.render.height;
+    auto slot = std::find_if(renderers.begin(), renderers.end(), [&](const RendererSlot& r) {
+        return r.width == w && r.height == h && r.environment == e;
+    });
+    if (slot == renderers.end()) {
+        renderers.push_back({w, h, e, std::make_unique<GlRenderer>()});
+        return *renderers.back().renderer;
+    }
+    return *slot->renderer;
 }
 
 // Builds one variant's program (each call a copy of its own, compiled and

@@ -120,7 +120,7 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
     r->sh = ref::projectSh9(*environment.image);
     r->table = cachedTable(settings.tableSize, settings.tableSamples);
     if (settings.irradianceMap > 0) r->irradiance = environmentIrradianceMap(sunless, settings.irradianceMap);
-    r->caps = capAverageChain(sunless);
+    r->caps = capVolume(capAverageChain(sunless));
     std::lock_guard<std::mutex> lock(mutex);
     cache.push_back({environment.image, settings, r});
     return r;
@@ -169,18 +169,16 @@ CapVolume capVolume(const std::vector<RadianceImage>& caps) {
 EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResources> resources)
     : resources_(std::move(resources)) {
     const EnvironmentResources& r = *resources_;
-    const std::vector<RadianceImage>& stacked = r.levels;
-    const std::vector<glm::ivec4> all = environmentAtlasRects(stacked);
-    rects_ = all;
+    rects_ = environmentAtlasRects(r.levels);
     int atlasWidth = 0, atlasHeight = 0;
-    for (const glm::ivec4& rect : all) {
+    for (const glm::ivec4& rect : rects_) {
         atlasWidth = std::max(atlasWidth, rect.z);
         atlasHeight = rect.y + rect.w;
     }
     std::vector<float> atlas(std::size_t(atlasWidth) * atlasHeight * 3, 0.0f);
-    for (std::size_t k = 0; k < stacked.size(); ++k)
-        for (int y = 0; y < all[k].w; ++y)
-            std::copy_n(stacked[k].at(0, y), 3 * all[k].z, &atlas[3 * (std::size_t(all[k].y + y) * atlasWidth)]);
+    for (std::size_t k = 0; k < r.levels.size(); ++k)
+        for (int y = 0; y < rects_[k].w; ++y)
+            std::copy_n(r.levels[k].at(0, y), 3 * rects_[k].z, &atlas[3 * (std::size_t(rects_[k].y + y) * atlasWidth)]);
     std::vector<float> table;
     for (const glm::dvec2& e : r.table) {
         table.push_back(float(e.x));
@@ -216,9 +214,7 @@ EnvironmentTextures::EnvironmentTextures(std::shared_ptr<const EnvironmentResour
         upload(textures_[3], GL_RGBA32F, GL_RGBA, r.irradiance.width, r.irradiance.height, rgba.data());
     }
     gl::BindTexture(GL_TEXTURE_2D, 0);
-    const CapVolume caps = capVolume(r.caps);
-    capLevels_ = caps.levels;
-    capScale_ = caps.scale;
+    const CapVolume& caps = r.caps;
     gl::GenTextures(1, &caps_);
     gl::BindTexture(GL_TEXTURE_3D, caps_);
     gl::PixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -267,8 +263,8 @@ void EnvironmentTextures::bind(const ShaderProgram& p, const Environment& enviro
                       float(r.w));
     }
     gl::Uniform1i(p.uniform("u_envLevels"), int(rects_.size()));
-    gl::Uniform1i(p.uniform("u_envCapLevels"), capLevels_);
-    gl::Uniform1f(p.uniform("u_envCapScale"), capScale_);
+    gl::Uniform1i(p.uniform("u_envCapLevels"), resources_->caps.levels);
+    gl::Uniform1f(p.uniform("u_envCapScale"), resources_->caps.scale);
     float sh[27];
     for (int k = 0; k < 9; ++k)
         for (int c = 0; c < 3; ++c) sh[3 * k + c] = float(resources_->sh[std::size_t(k)][c]);

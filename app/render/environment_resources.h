@@ -47,6 +47,23 @@ struct EnvironmentSettings {
     }
 };
 
+// The cap chain as one volume (environment_occlusion.glsl reads it with one
+// trilinear lookup, the two cap levels around a cap's angle mixed by the
+// filter): level k's integral over its cap, its mean radiance times
+// 1 - cos(capLevelAngle(k)) (the solid angle over 2 pi), so that the mix
+// between two levels weighs each by its cap, as a sum of light. Every level
+// is resampled, bilinearly as the shader's lookups read it, to the widest
+// level's size (width x height texels, `levels` layers, RGBA, alpha 1) and
+// divided by `scale`, the largest value, so that a half-float texture
+// (filterable by every GL and WebGL2: 11 bits, within 0.05% of each value
+// above 6e-5 of the largest) holds any legal map.
+struct CapVolume {
+    int width = 0, height = 0, levels = 0;
+    float scale = 1.0f;
+    std::vector<float> rgba;
+};
+CapVolume capVolume(const std::vector<RadianceImage>& caps);
+
 struct EnvironmentResources {
     EnvironmentSettings settings;
     std::shared_ptr<const RadianceImage> map;  // the radiance map as read (no intensity, image frame)
@@ -55,7 +72,7 @@ struct EnvironmentResources {
     std::vector<glm::dvec2> table;             // ref::splitSumTable, tableSize^2 (scale, bias)
     RadianceImage irradiance;                  // environmentIrradianceMap(map, settings.irradianceMap); empty for 0
     EnvironmentSun sun;                        // findSun(map) (environment_caps.h): the picture's sun light and its shadow
-    std::vector<RadianceImage> caps;           // capAverageChain(mapWithoutSun(map, sun)): the same
+    CapVolume caps;                            // capVolume(capAverageChain(mapWithoutSun(map, sun))): the same
 };
 
 // The irradiance map of `image` (its own frame, no intensity): width x
@@ -81,23 +98,6 @@ std::shared_ptr<const EnvironmentResources> environmentResources(const Environme
 // width, height); the levels stacked top to bottom, each at x = 0.
 std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& levels);
 
-// The cap chain as one volume (environment_occlusion.glsl reads it with one
-// trilinear lookup, the two cap levels around a cap's angle mixed by the
-// filter): level k's integral over its cap, its mean radiance times
-// 1 - cos(capLevelAngle(k)) (the solid angle over 2 pi), so that the mix
-// between two levels weighs each by its cap, as a sum of light. Every level
-// is resampled, bilinearly as the shader's lookups read it, to the widest
-// level's size (width x height texels, `levels` layers, RGBA, alpha 1) and
-// divided by `scale`, the largest value, so that a half-float texture
-// (filterable by every GL and WebGL2: 11 bits, within 0.05% of each value
-// above 6e-5 of the largest) holds any legal map.
-struct CapVolume {
-    int width = 0, height = 0, levels = 0;
-    float scale = 1.0f;
-    std::vector<float> rgba;
-};
-CapVolume capVolume(const std::vector<RadianceImage>& caps);
-
 class EnvironmentTextures {
 public:
     explicit EnvironmentTextures(std::shared_ptr<const EnvironmentResources> resources);
@@ -119,9 +119,7 @@ public:
 private:
     std::shared_ptr<const EnvironmentResources> resources_;
     GLuint textures_[4] = {0, 0, 0, 0};  // map, prefiltered atlas, split-sum table, irradiance map (or 0)
-    GLuint caps_ = 0;                   // capVolume(), a 3D texture
-    int capLevels_ = 0;
-    float capScale_ = 1.0f;
+    GLuint caps_ = 0;                   // EnvironmentResources::caps, a 3D texture
     std::vector<glm::ivec4> rects_;     // the prefiltered levels' in the atlas
 };
 
