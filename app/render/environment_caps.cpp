@@ -3,6 +3,7 @@
 
 #include "core/environment_image.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -52,53 +53,62 @@ int levelWidth(double cap, int imageWidth) {
     return std::max(2, std::min(width, std::min(imageWidth - imageWidth % 2, kMaxWidth)));
 }
 
-RadianceImage capLevel(const Source& s, double cap, int width) {
-    RadianceImage out;
-    out.width = width;
-    out.height = std::max(1, width / 2);
-    out.rgb.assign(std::size_t(out.width) * out.height * 3, 0.0f);
+// The mean over the cap of half-angle `cap` around the direction at polar
+// angle theta (0 straight up) and u's angle phi: sum(w_p L_p dOmega_p) /
+// sum(w_p dOmega_p), w_p the pixel's share inside the antialiased edge.
+glm::dvec3 capMean(const Source& s, double cap, double theta, double phi) {
     const double pixel = kPi / s.height;
     const double reach = cap + pixel;  // beyond this no pixel has weight
     const double cosReach = std::cos(std::min(reach, kPi));
     const double cosOuter = std::cos(std::min(cap + 0.5 * pixel, kPi));  // weight 0 at or beyond
     const double cosInner = std::cos(std::max(cap - 0.5 * pixel, 0.0));  // weight 1 at or within
+    const glm::dvec3 w = equirectDirection(phi / (2.0 * kPi), theta / kPi);
+    const int y0 = std::max(0, int(std::floor((theta - reach) / pixel)));
+    const int y1 = std::min(s.height - 1, int(std::ceil((theta + reach) / pixel)));
+    glm::dvec3 sum(0.0);
+    double weight = 0.0;
+    for (int y = y0; y <= y1; ++y) {
+        // The columns the cap can reach in this row: all where it holds a pole.
+        const double sinRow = std::min(std::sin(kPi * y / s.height), std::sin(kPi * (y + 1) / s.height));
+        int first = 0, count = s.width;
+        if (theta - reach > 0.0 && theta + reach < kPi && sinRow > std::sin(reach)) {
+            const double dphi = std::asin(std::sin(reach) / sinRow);
+            const int half = int(std::ceil(dphi / (2.0 * kPi) * s.width)) + 1;
+            if (2 * half + 1 < s.width) {
+                first = int(std::floor(phi / (2.0 * kPi) * s.width)) - half;
+                count = 2 * half + 1;
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            const int x = ((first + i) % s.width + s.width) % s.width;
+            const std::size_t k = std::size_t(y) * s.width + x;
+            const double c = glm::dot(s.direction[k], w);
+            if (c < cosReach || c <= cosOuter) continue;
+            const double inside =
+                c >= cosInner ? 1.0 : std::clamp(0.5 + (cap - std::acos(std::clamp(c, -1.0, 1.0))) / pixel, 0.0, 1.0);
+            sum += inside * s.solidAngle[std::size_t(y)] * s.radiance[k];
+            weight += inside * s.solidAngle[std::size_t(y)];
+        }
+    }
+    return weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+}
+
+CapLevel capLevel(const Source& s, double cap, int width) {
+    CapLevel level;
+    RadianceImage& out = level.means;
+    out.width = width;
+    out.height = std::max(1, width / 2);
+    out.rgb.assign(std::size_t(out.width) * out.height * 3, 0.0f);
     for (int ty = 0; ty < out.height; ++ty)
         for (int tx = 0; tx < out.width; ++tx) {
-            const glm::dvec3 w = equirectDirection((tx + 0.5) / out.width, (ty + 0.5) / out.height);
-            const double theta = kPi * (ty + 0.5) / out.height;
-            const int y0 = std::max(0, int(std::floor((theta - reach) / pixel)));
-            const int y1 = std::min(s.height - 1, int(std::ceil((theta + reach) / pixel)));
-            glm::dvec3 sum(0.0);
-            double weight = 0.0;
-            const double phi = 2.0 * kPi * ((tx + 0.5) / out.width);  // u's angle; a column's is 2 pi (x + 1/2) / W
-            for (int y = y0; y <= y1; ++y) {
-                // The columns the cap can reach in this row: all where it holds a pole.
-                const double sinRow = std::min(std::sin(kPi * y / s.height), std::sin(kPi * (y + 1) / s.height));
-                int first = 0, count = s.width;
-                if (theta - reach > 0.0 && theta + reach < kPi && sinRow > std::sin(reach)) {
-                    const double dphi = std::asin(std::sin(reach) / sinRow);
-                    const int half = int(std::ceil(dphi / (2.0 * kPi) * s.width)) + 1;
-                    if (2 * half + 1 < s.width) {
-                        first = int(std::floor(phi / (2.0 * kPi) * s.width)) - half;
-                        count = 2 * half + 1;
-                    }
-                }
-                for (int i = 0; i < count; ++i) {
-                    const int x = ((first + i) % s.width + s.width) % s.width;
-                    const std::size_t k = std::size_t(y) * s.width + x;
-                    const double c = glm::dot(s.direction[k], w);
-                    if (c < cosReach || c <= cosOuter) continue;
-                    const double inside =
-                        c >= cosInner ? 1.0 : std::clamp(0.5 + (cap - std::acos(std::clamp(c, -1.0, 1.0))) / pixel, 0.0, 1.0);
-                    sum += inside * s.solidAngle[std::size_t(y)] * s.radiance[k];
-                    weight += inside * s.solidAngle[std::size_t(y)];
-                }
-            }
-            const glm::dvec3 mean = weight > 0.0 ? sum / weight : glm::dvec3(0.0);
+            // u's angle: a column's is 2 pi (x + 1/2) / W.
+            const glm::dvec3 mean = capMean(s, cap, kPi * (ty + 0.5) / out.height, 2.0 * kPi * (tx + 0.5) / out.width);
             float* p = out.at(tx, ty);
             for (int c = 0; c < 3; ++c) p[c] = float(mean[c]);
         }
-    return out;
+    level.north = capMean(s, cap, 0.0, 0.0);
+    level.south = capMean(s, cap, kPi, 0.0);
+    return level;
 }
 
 }  // namespace
@@ -178,9 +188,21 @@ RadianceImage mapWithoutSun(const RadianceImage& image, const EnvironmentSun& su
     return out;
 }
 
-std::vector<RadianceImage> capAverageChain(const RadianceImage& image) {
+glm::dvec3 capLevelLookup(const CapLevel& level, double u, double v) {
+    const RadianceImage& m = level.means;
+    const double y = v * m.height - 0.5;
+    // Between a pole and the first or last row's centres: towards the pole's
+    // own mean, linearly in the polar angle (every lookup holds a cap's mean,
+    // the clamped row's would be the cap half a row away from the pole).
+    if (y < 0.0) return glm::mix(level.north, bilinearRadiance(m, u, 0.5 / m.height), std::max(0.0, 2.0 * y + 1.0));
+    if (y > m.height - 1.0)
+        return glm::mix(level.south, bilinearRadiance(m, u, 1.0 - 0.5 / m.height), std::max(0.0, 2.0 * (m.height - 0.5 - y)));
+    return bilinearRadiance(m, u, v);
+}
+
+std::vector<CapLevel> capAverageChain(const RadianceImage& image) {
     const Source s = downsampled(image);
-    std::vector<RadianceImage> chain;
+    std::vector<CapLevel> chain;
     for (int k = 0; k < kCapLevels; ++k) {
         const double cap = capLevelAngle(k);
         chain.push_back(capLevel(s, cap, levelWidth(cap, s.width)));

@@ -58,6 +58,18 @@ RadianceImage mapWithoutSun(const RadianceImage& image, const EnvironmentSun& su
 // image (first summed in 2 x 2 blocks, radiance times solid angle, until it
 // is at most 256 wide), w_p = clamp(1/2 + (cap - angle(p, texel)) / pixel, 0, 1)
 // with `pixel` one pixel's height in radians: the cap's edge antialiased.
-std::vector<RadianceImage> capAverageChain(const RadianceImage& image);
+// Each level also holds the means of the caps around both poles, which no
+// texel centre reaches (a coarse level's last row lies half a row, up to 11
+// degrees, from the pole, where a ground's cap is read).
+struct CapLevel {
+    RadianceImage means;
+    glm::dvec3 north{0.0}, south{0.0};
+};
+std::vector<CapLevel> capAverageChain(const RadianceImage& image);
+
+// A level's mean at (u, v) of the equirect frame: bilinear between texel
+// centres (bilinearRadiance), and between the first or last row and the
+// pole's own mean beyond them.
+glm::dvec3 capLevelLookup(const CapLevel& level, double u, double v);
 
 }  // namespace rl

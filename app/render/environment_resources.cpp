@@ -136,9 +136,10 @@ std::vector<glm::ivec4> environmentAtlasRects(const std::vector<RadianceImage>& 
     return rects;
 }
 
-CapVolume capVolume(const std::vector<RadianceImage>& caps) {
+CapVolume capVolume(const std::vector<CapLevel>& caps) {
     CapVolume v;
-    for (const RadianceImage& level : caps) {
+    for (const CapLevel& cap : caps) {
+        const RadianceImage& level = cap.means;
         v.width = std::max(v.width, level.width);
         v.height = std::max(v.height, level.height);
     }
@@ -146,11 +147,10 @@ CapVolume capVolume(const std::vector<RadianceImage>& caps) {
     v.rgba.reserve(std::size_t(v.width) * std::size_t(v.height) * caps.size() * 4);
     float largest = 0.0f;
     for (std::size_t k = 0; k < caps.size(); ++k) {
-        const RadianceImage& level = caps[k];
         const double solidAngle = 1.0 - std::cos(capLevelAngle(int(k)));  // over 2 pi
         for (int y = 0; y < v.height; ++y)
             for (int x = 0; x < v.width; ++x) {
-                const glm::dvec3 L = bilinearRadiance(level, (x + 0.5) / v.width, (y + 0.5) / v.height);
+                const glm::dvec3 L = capLevelLookup(caps[k], (x + 0.5) / v.width, (y + 0.5) / v.height);
                 for (int c = 0; c < 3; ++c) {
                     v.rgba.push_back(float(L[c] * solidAngle));
                     largest = std::max(largest, v.rgba.back());

@@ -62,7 +62,7 @@ struct CapVolume {
     float scale = 1.0f;
     std::vector<float> rgba;
 };
-CapVolume capVolume(const std::vector<RadianceImage>& caps);
+CapVolume capVolume(const std::vector<CapLevel>& caps);
 
 struct EnvironmentResources {
     EnvironmentSettings settings;

@@ -559,8 +559,10 @@ TEST(EnvironmentSampler, AOnePixelSunGivesBoundedWeights) {
 // degrees up, azimuth -40) with about its power (500 x a 2.5 degree disc),
 // and left out of the sunless map; the studio's soft boxes are too wide to be one.
 TEST(EnvironmentCaps, UniformStaysUniformAndTheSkysSunIsFound) {
-    for (const RadianceImage& level : capAverageChain(filledImage(64, 32, 0.7f)))
-        for (float v : level.rgb) ASSERT_NEAR(v, 0.7f, 1e-5f);
+    for (const CapLevel& level : capAverageChain(filledImage(64, 32, 0.7f))) {
+        for (float v : level.means.rgb) ASSERT_NEAR(v, 0.7f, 1e-5f);
+        for (const dvec3& pole : {level.north, level.south}) ASSERT_NEAR(pole.y, 0.7, 1e-5);
+    }
     auto load = [](const char* name) {
         return loadEnvironmentImage((sourceRoot() / "scenes/environments" / name).string());
     };
@@ -581,6 +583,30 @@ TEST(EnvironmentCaps, UniformStaysUniformAndTheSkysSunIsFound) {
     EXPECT_FALSE(findSun(load("studio.hdr")).present);
 }
 
+// A cap around a pole is read at the pole, not half a row away: a ground's
+// cap is centred straight down. Under a map bright above the horizon and
+// black below, the largest level's (90 degrees) cap around straight down
+// holds no light but its antialiased edge's, and straight up all light;
+// the level's last row (16 x 8 texels: its centre 11 degrees from the
+// pole) reaches 11 degrees into the bright half (0.06 of it, read before).
+TEST(EnvironmentCaps, TheCapsAroundThePolesAreReadAtThePoles) {
+    RadianceImage halves = filledImage(64, 32, 0.0f);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 64; ++x)
+            for (int c = 0; c < 3; ++c) halves.at(x, y)[c] = 1.0f;
+    const std::vector<CapLevel> caps = capAverageChain(halves);
+    const CapLevel& widest = caps.back();
+    ASSERT_NEAR(capLevelAngle(kCapLevels - 1), kPi / 2, 1e-12);
+    for (double u : {0.0, 0.3, 0.71}) {
+        EXPECT_LT(capLevelLookup(widest, u, 1.0).y, 0.02) << "straight down, u " << u;
+        EXPECT_GT(capLevelLookup(widest, u, 0.0).y, 0.98) << "straight up, u " << u;
+    }
+    // Between the pole and the last row, the lookup moves from one to the other.
+    const double lastRow = 1.0 - 0.5 / widest.means.height;
+    EXPECT_NEAR(capLevelLookup(widest, 0.3, lastRow).y, bilinearRadiance(widest.means, 0.3, lastRow).y, 1e-12);
+    EXPECT_GT(bilinearRadiance(widest.means, 0.3, lastRow).y, 0.05) << "the row itself reaches into the bright half";
+}
+
 // The cap chain as the shader reads it (capVolume): every level at the widest
 // level's size, holding its integral over the cap (mean times 1 - cos of its
 // half-angle) as the level's own bilinear lookup gives it at each texel
@@ -588,11 +614,11 @@ TEST(EnvironmentCaps, UniformStaysUniformAndTheSkysSunIsFound) {
 // (the largest is 1), whatever the map's brightness.
 TEST(EnvironmentCaps, TheVolumeHoldsEachLevelsIntegralAsItsLookupReadsIt) {
     const RadianceImage sky = loadEnvironmentImage((sourceRoot() / "scenes/environments/studio.hdr").string());
-    const std::vector<RadianceImage> caps = capAverageChain(sky);
+    const std::vector<CapLevel> caps = capAverageChain(sky);
     const CapVolume v = capVolume(caps);
     ASSERT_EQ(v.levels, kCapLevels);
     int widest = 0;
-    for (const RadianceImage& level : caps) widest = std::max(widest, level.width);
+    for (const CapLevel& level : caps) widest = std::max(widest, level.means.width);
     ASSERT_EQ(v.width, widest);
     ASSERT_EQ(v.rgba.size(), std::size_t(v.width) * v.height * v.levels * 4);
     float largest = 0.0f;
@@ -600,7 +626,7 @@ TEST(EnvironmentCaps, TheVolumeHoldsEachLevelsIntegralAsItsLookupReadsIt) {
     for (int k = 0; k < v.levels; ++k)
         for (int y = 0; y < v.height; y += 3)
             for (int x = 0; x < v.width; x += 5) {
-                const dvec3 expected = bilinearRadiance(caps[std::size_t(k)], (x + 0.5) / v.width, (y + 0.5) / v.height) *
+                const dvec3 expected = capLevelLookup(caps[std::size_t(k)], (x + 0.5) / v.width, (y + 0.5) / v.height) *
                                        (1.0 - std::cos(capLevelAngle(k)));
                 const float* got = &v.rgba[((std::size_t(k) * v.height + y) * v.width + x) * 4];
                 for (int c = 0; c < 3; ++c) {
