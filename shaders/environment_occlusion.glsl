@@ -70,6 +70,31 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
     return overlap * min(oneMinusCosA, oneMinusCosB) / max(oneMinusCosA, 1e-7);
 }
 
+// The two largest caps seen from the current hit (not its own sphere's, nor
+// one around p), found once per hit (capsSeenFrom): xyz the axis
+// w = (c - p) / d, w the sine of the half-angle R / d (-1 where there is
+// none); and their spheres' indices (-1). A cap's shared part is taken from
+// these two only (capShareNotCovered): one pass over the spheres, not one per
+// cap, and no array indexed per pixel (llvmpipe spills those). The smaller
+// caps' overlaps among themselves are left out (docs/decisions.md,
+// "Overlaps with the two largest caps only", has the measurements).
+vec4 g_bigCap[2];
+int g_big[2];
+void capsSeenFrom(vec3 p, int own) {
+    g_big[0] = -1; g_big[1] = -1;
+    g_bigCap[0] = vec4(0.0, 0.0, 0.0, -1.0); g_bigCap[1] = g_bigCap[0];
+    for (int j = 0; j < sphereCount(); ++j) {
+        vec4 o = sphereGeometry(j);
+        vec3 q = o.xyz - p;
+        float d = length(q);
+        float sinB = o.w / d;
+        if (j == own || sinB >= 1.0) continue;
+        vec4 cap = vec4(q / d, sinB);
+        if (sinB > g_bigCap[0].w) { g_bigCap[1] = g_bigCap[0]; g_big[1] = g_big[0]; g_bigCap[0] = cap; g_big[0] = j; }
+        else if (sinB > g_bigCap[1].w) { g_bigCap[1] = cap; g_big[1] = j; }
+    }
+}
+
 // The share of sphere i's cap (axis w, half-angle b given by its sine sb and
 // cosine cb, form factor F seen from the hit) that no larger cap of another
 // sphere holds: where caps overlap, the larger one takes the shared
@@ -77,20 +102,20 @@ float coneCapCoverage(float a, float oneMinusCosA, float b, float oneMinusCosB, 
 // direction is taken out once. The shared part's cosine weight is its solid
 // angle times n.m, m the middle of the shared lens on the great circle
 // through both axes; `lens` is the sum of the lenses' middles times their
-// weights (where the shared part lies).
+// weights (where the shared part lies). Only the two largest caps are
+// looked at (capsSeenFrom).
 float capShareNotCovered(int i, vec3 w, float sb, float cb, float F, Hit hit, out vec3 lens) {
     lens = vec3(0.0);
     if (F <= 0.0) return 1.0;
     float shared = 0.0;
-    for (int j = 0; j < sphereCount(); ++j) {
-        if (j == i || j == hit.sphere) continue;
-        vec4 o = sphereGeometry(j);
-        vec3 q = o.xyz - hit.p;
-        float dj = length(q);
-        float sbj = o.w / dj;  // sin of its half-angle
+    for (int k = 0; k < 2; ++k) {
+        int j = k == 0 ? g_big[0] : g_big[1];
+        vec4 cap = k == 0 ? g_bigCap[0] : g_bigCap[1];
+        if (j < 0 || j == i) continue;
+        float sbj = cap.w;  // sin of its half-angle
         // Not larger (equal ones by index), or inside it (nothing is left anyway): skipped.
         if (sbj < sb || (sbj == sb && j > i) || sbj >= 1.0) continue;
-        vec3 wj = q / dj;
+        vec3 wj = cap.xyz;
         float cbj = sqrt(1.0 - sbj * sbj);
         float cg = dot(w, wj);
         if (cg <= cb * cbj - sb * sbj) continue;  // apart: g >= b + bj
@@ -133,6 +158,9 @@ struct OccludedLight {
 };
 
 OccludedLight occludeEnvironment(Hit hit, vec3 reflected, float roughness, vec3 E, vec3 P) {
+#if RL_ENV_OCCLUSION == 2
+    capsSeenFrom(hit.p, hit.sphere);
+#endif
     float coneAngle = specularConeAngle(roughness);
     float coneOneMinusCos = 1.0 - cos(coneAngle);
     float sunOneMinusCos = 1.0 - cos(u_envSun.w);

@@ -69,7 +69,8 @@ std::string environmentApproximationUnsupported(const EnvironmentApproximation& 
 //    by over 1/255 less the noise's own share at most offFraction;
 //  * mean at most noVisibilityShare of the row exact:no-V's (the reference
 //    without visibility against the one with it): occlusion must buy back
-//    most of what leaving visibility out costs.
+//    most of what leaving visibility out costs, where that is more than
+//    meanLsb (else nothing is left to buy back).
 struct EnvironmentBudget {
     double meanLsb;
     double offFraction;

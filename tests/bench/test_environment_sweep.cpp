@@ -145,3 +145,24 @@ TEST(EnvironmentBudget, TheDefaultStaysWithinTheBudget) {
         EXPECT_TRUE(check.belowNoVisibility) << row.error.meanLsb << " against " << noVisibility.error.meanLsb;
     }
 }
+
+// The budget's third part asks occlusion to buy back most of what leaving
+// visibility out costs; where that costs no more than the mean's own budget
+// (a few small spheres over a ground: exact:no-V about 1 LSB from the
+// truth), there is nothing to buy back and only the mean's bound is asked.
+// Before, a default of 0.51 LSB against a no-V of 1.04 was reported as
+// not meeting the budget.
+TEST(EnvironmentBudget, NothingToBuyBackWhereVisibilityCostsLittle) {
+    const EnvironmentBudget& b = environmentBudget();
+    Measurement row, noVisibility;
+    row.error.meanLsb = 0.51;
+    noVisibility.error.meanLsb = 1.04;
+    EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
+    EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).meets());
+    // Where visibility costs much, the share is asked.
+    noVisibility.error.meanLsb = 4 * b.meanLsb;
+    row.error.meanLsb = b.noVisibilityShare * noVisibility.error.meanLsb * 1.01;
+    EXPECT_FALSE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
+    row.error.meanLsb = b.noVisibilityShare * noVisibility.error.meanLsb * 0.99;
+    EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
+}
