@@ -159,6 +159,23 @@ double boxSum(const RadianceImage& image, int x0, int x1, int y0, int y1) {
             for (int c = 0; c < 3; ++c) sum += image.at(x, y)[c];
     return sum;
 }
+
+// The mean 8-bit difference of a's display from b's over the pixels
+// x0 <= x < x1, y0 <= y < y1 (row 0 the top) and the three channels:
+// signed (a - b) or its absolute value.
+enum class Difference { Signed, Absolute };
+double meanDisplayDifference(const Rendering& a, const Rendering& b, int x0, int x1, int y0, int y1,
+                             Difference kind) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            for (int c = 0; c < 3; ++c, ++count) {
+                const double d = double(a.display.at(x, y)[c]) - b.display.at(x, y)[c];
+                sum += kind == Difference::Absolute ? std::abs(d) : d;
+            }
+    return sum / count;
+}
 }  // namespace
 
 // Where caps overlap (a ground point under the middle sphere of
@@ -209,14 +226,9 @@ TEST(EnvironmentPicture, ManySpheresTakeTheirSharedLightOnce) {
     s.spheres.push_back(ground);
     Rendering gl = test::renderGl(s);
     Rendering cpu = ref::renderCpu(s, 0, ref::EnvironmentOptions{});
-    double difference = 0.0;
-    int count = 0;
-    for (int y = 0; y < 36; ++y)
-        for (int x = 0; x < 48; ++x)
-            for (int c = 0; c < 3; ++c, ++count)
-                difference += std::abs(double(gl.display.at(x, y)[c]) - cpu.display.at(x, y)[c]);
-    std::printf("thirteen spheres: mean |GL - reference| %.3f LSB\n", difference / count);
-    EXPECT_LT(difference / count, 2.4);
+    const double mean = meanDisplayDifference(gl, cpu, 0, 48, 0, 36, Difference::Absolute);
+    std::printf("thirteen spheres: mean |GL - reference| %.3f LSB\n", mean);
+    EXPECT_LT(mean, 2.4);
 }
 
 // The map's sun is a light of its own in the picture (sunLight,
@@ -232,13 +244,9 @@ TEST(EnvironmentPicture, TheSunIsALightOfItsOwn) {
     Scene s = loaded("scenes/environments/sun-spheres.json", 96, 72);
     Rendering gl = test::renderGl(s);
     Rendering cpu = ref::renderCpu(s, 0, ref::EnvironmentOptions{});
-    double difference = 0.0;
-    int count = 0;
-    for (int y = 29; y < 47; ++y)
-        for (int x = 55; x < 73; ++x)
-            for (int c = 0; c < 3; ++c, ++count) difference += double(gl.display.at(x, y)[c]) - cpu.display.at(x, y)[c];
-    std::printf("sun-spheres, the copper sphere: GL - reference %+.2f LSB mean\n", difference / count);
-    EXPECT_LT(std::abs(difference / count), 3.0);
+    const double mean = meanDisplayDifference(gl, cpu, 55, 73, 29, 47, Difference::Signed);
+    std::printf("sun-spheres, the copper sphere: GL - reference %+.2f LSB mean\n", mean);
+    EXPECT_LT(std::abs(mean), 3.0);
 }
 
 // Intensity and rotation are uniforms: the same program draws every value,
