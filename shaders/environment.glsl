@@ -152,33 +152,48 @@ vec3 sunIrradianceCorrection(vec3 n) {
 }
 
 // The light the sun sends towards v, a directional light of irradiance Phi
-// (times its visible share) through the scene's BRDF (exercise 08), as a
-// point light's: exact for a lobe much wider than the sun's disc. The BRDF
-// is read towards the disc's point nearest the mirror direction (Karis 2013,
-// "Real shading in Unreal Engine 4", sphere lights: the "representative
-// point"), so a mirror shows the disc, not a point. Where the lobe is
-// narrower than the disc (alpha below its angular radius), the smaller of
-// that BRDF and one whose alpha is sqrt(alpha^2 + (radius / 2)^2) (the
-// disc's half-vector spread added) is taken: a lobe as wide as the disc
-// keeps its energy instead of the point's peak times the disc's area.
+// (times its visible share) through the scene's BRDF (exercise 08): the
+// BRDF's mean over the disc (radius theta_s = u_envSun.w), by the lobe's
+// width alpha against the disc's:
+//  * alpha >= theta_s: the BRDF at the disc's centre s with alpha widened to
+//    sqrt(alpha^2 + (theta_s / 2)^2) (the disc's half-vector spread added:
+//    the lobe convolved with the disc), exact for a lobe much wider than it;
+//  * alpha <= theta_s / 2: read towards the disc's point nearest the mirror
+//    direction (Karis 2013, "Real shading in Unreal Engine 4", sphere
+//    lights: the "representative point"), so a mirror shows the disc, not a
+//    point; the smaller of that BRDF at alpha and at the widened alpha, so
+//    that a lobe as wide as the disc keeps its energy instead of the point's
+//    peak times the disc's area;
+//  * between, the two mixed by a smoothstep in alpha / theta_s.
+// The representative point read for every lobe overstated a rough
+// surface's sun glare (the BRDF at the disc's point nearest r is the
+// disc's largest, not its mean): on a ground of roughness 0.6 under the sky
+// by up to 2.5 LSB (docs/decisions.md, "The sun's glare on rough surfaces").
+// app/reference/pixel_breakdown.cpp (the pixel debugger's double side)
+// computes the same, with the same two bounds.
+const float SUN_DISC_POINT_BELOW = 0.5;  // alpha / theta_s: the representative point below
+const float SUN_DISC_CENTRE_FROM = 1.0;  // alpha / theta_s: the disc's centre from
 vec3 hitBRDF(Hit hit, vec3 v, vec3 l, Material m);  // lighting.glsl
 vec3 sunLight(Hit hit, vec3 v, Material m, vec3 reflected, float visible) {
     if (u_envSun.w <= 0.0 || visible <= 0.0) return vec3(0.0);
     vec3 s = u_envSun.xyz;
     float NoS = dot(hit.n, s);
     if (NoS <= 0.0) return vec3(0.0);
-    float apart = acos(clamp(dot(reflected, s), -1.0, 1.0));
-    vec3 l = s;
-    if (apart > 1e-6) {
-        vec3 towards = normalize(reflected - dot(reflected, s) * s);
-        float a = min(apart, u_envSun.w);
-        l = cos(a) * s + sin(a) * towards;
-    }
     float r = clamp(m.roughness, MIN_ROUGHNESS, 1.0);
     Material wide = m;
     wide.roughness = sqrt(min(length(vec2(r * r, 0.5 * u_envSun.w)), 1.0));
-    vec3 f = hitBRDF(hit, v, l, m);
-    if (r * r < u_envSun.w) f = min(f, hitBRDF(hit, v, l, wide));  // beyond it alpha' is within 12% of alpha
+    float centre = smoothstep(SUN_DISC_POINT_BELOW, SUN_DISC_CENTRE_FROM, r * r / u_envSun.w);
+    vec3 f = centre > 0.0 ? hitBRDF(hit, v, s, wide) : vec3(0.0);
+    if (centre < 1.0) {
+        float apart = acos(clamp(dot(reflected, s), -1.0, 1.0));
+        vec3 l = s;
+        if (apart > 1e-6) {
+            vec3 towards = normalize(reflected - dot(reflected, s) * s);
+            float a = min(apart, u_envSun.w);
+            l = cos(a) * s + sin(a) * towards;
+        }
+        f = mix(min(hitBRDF(hit, v, l, m), hitBRDF(hit, v, l, wide)), f, centre);
+    }
     return visible * f * u_envIntensity * u_envSunPower * NoS;
 }
 

@@ -123,18 +123,29 @@ EnvironmentTerms environmentTerms(const Environment& environment, const Environm
         irradiance += environment.intensity * tables.sunPower * std::max(x, 0.0) - bands;
         sunless -= bands;
         if (x > 0.0) {
+            // The BRDF's mean over the sun's disc, as sunLight
+            // (shaders/environment.glsl) reads it: at the disc's centre with
+            // the widened lobe where alpha >= theta_s, towards the disc's
+            // point nearest r below theta_s / 2 (SUN_DISC_* there), mixed
+            // between.
+            constexpr double kPointBelow = 0.5, kCentreFrom = 1.0;
             const dvec3 vl = environmentLocalDirection(environment, v);
-            const double apart = std::acos(std::clamp(glm::dot(r, s), -1.0, 1.0));
-            dvec3 l = s;
-            if (apart > 1e-6) {
-                const double a = std::min(apart, tables.sunAngularRadius);
-                l = std::cos(a) * s + std::sin(a) * glm::normalize(r - glm::dot(r, s) * s);
-            }
             const double rough = std::clamp(m.roughness, kMinRoughness, 1.0);
             Material wide = m;
             wide.roughness = std::sqrt(std::min(std::hypot(rough * rough, 0.5 * tables.sunAngularRadius), 1.0));
-            dvec3 f = cookTorranceBRDF(nl, vl, l, m, model);
-            if (rough * rough < tables.sunAngularRadius) f = glm::min(f, cookTorranceBRDF(nl, vl, l, wide, model));
+            const double t = std::clamp((rough * rough / tables.sunAngularRadius - kPointBelow) / (kCentreFrom - kPointBelow), 0.0, 1.0);
+            const double centre = t * t * (3.0 - 2.0 * t);  // GLSL's smoothstep
+            dvec3 f = centre > 0.0 ? cookTorranceBRDF(nl, vl, s, wide, model) : dvec3(0.0);
+            if (centre < 1.0) {
+                const double apart = std::acos(std::clamp(glm::dot(r, s), -1.0, 1.0));
+                dvec3 l = s;
+                if (apart > 1e-6) {
+                    const double a = std::min(apart, tables.sunAngularRadius);
+                    l = std::cos(a) * s + std::sin(a) * glm::normalize(r - glm::dot(r, s) * s);
+                }
+                const dvec3 narrow = glm::min(cookTorranceBRDF(nl, vl, l, m, model), cookTorranceBRDF(nl, vl, l, wide, model));
+                f = narrow + (f - narrow) * centre;
+            }
             sun = f * environment.intensity * tables.sunPower * x;
         }
     }
