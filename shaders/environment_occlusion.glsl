@@ -113,8 +113,9 @@ float capShareNotCovered(int i, vec3 w, float sb, float cb, float F, Hit hit, ou
         vec4 cap = k == 0 ? g_bigCap[0] : g_bigCap[1];
         if (j < 0 || j == i) continue;
         float sbj = cap.w;  // sin of its half-angle
-        // Not larger (equal ones by index), or inside it (nothing is left anyway): skipped.
-        if (sbj < sb || (sbj == sb && j > i) || sbj >= 1.0) continue;
+        // Not larger (equal ones by index): skipped. (A sphere holding p is
+        // never one of the two: capsSeenFrom leaves it out.)
+        if (sbj < sb || (sbj == sb && j > i)) continue;
         vec3 wj = cap.xyz;
         float cbj = sqrt(1.0 - sbj * sbj);
         float cg = dot(w, wj);

@@ -172,7 +172,8 @@ EnvironmentBudgetCheck checkEnvironmentBudget(const Measurement& m, const Measur
     // Where leaving visibility out already costs no more than the mean's
     // budget (a scene whose spheres hide little of the sky), there is nothing
     // to buy back: the mean's own bound is the test.
-    c.belowNoVisibility = exact.error.meanLsb <= b.meanLsb || m.error.meanLsb <= b.noVisibilityShare * exact.error.meanLsb;
+    c.nothingToBuyBack = exact.error.meanLsb <= b.meanLsb;
+    c.belowNoVisibility = c.nothingToBuyBack || m.error.meanLsb <= b.noVisibilityShare * exact.error.meanLsb;
     return c;
 }
 
@@ -236,7 +237,7 @@ std::string formatEnvironmentTable(const std::vector<Measurement>& measurements)
                       m.scene.c_str(), c.meets() ? "meets" : "DOES NOT MEET", m.error.meanLsb - m.referenceNoiseLsb,
                       budget.meanLsb, 100 * (m.error.offFraction - m.referenceNoiseOffFraction), 100 * budget.offFraction);
         s << line;
-        if (exact->error.meanLsb <= budget.meanLsb)
+        if (c.nothingToBuyBack)
             std::snprintf(line, sizeof line, "exact:no-V's %.3f LSB is within the mean's budget: nothing to buy back\n",
                           exact->error.meanLsb);
         else

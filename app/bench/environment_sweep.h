@@ -81,6 +81,9 @@ const EnvironmentBudget& environmentBudget();
 // scene's row exact:no-V.
 struct EnvironmentBudgetCheck {
     bool mean = false, off = false, belowNoVisibility = false;
+    // exact:no-V is itself within the mean's budget: belowNoVisibility holds
+    // with nothing to buy back.
+    bool nothingToBuyBack = false;
     bool meets() const { return mean && off && belowNoVisibility; }
 };
 EnvironmentBudgetCheck checkEnvironmentBudget(const Measurement& m, const Measurement& exact);

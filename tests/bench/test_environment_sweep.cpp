@@ -158,11 +158,13 @@ TEST(EnvironmentBudget, NothingToBuyBackWhereVisibilityCostsLittle) {
     row.error.meanLsb = 0.51;
     noVisibility.error.meanLsb = 1.04;
     EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
+    EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).nothingToBuyBack);
     EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).meets());
     // Where visibility costs much, the share is asked.
     noVisibility.error.meanLsb = 4 * b.meanLsb;
     row.error.meanLsb = b.noVisibilityShare * noVisibility.error.meanLsb * 1.01;
     EXPECT_FALSE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
+    EXPECT_FALSE(checkEnvironmentBudget(row, noVisibility).nothingToBuyBack);
     row.error.meanLsb = b.noVisibilityShare * noVisibility.error.meanLsb * 0.99;
     EXPECT_TRUE(checkEnvironmentBudget(row, noVisibility).belowNoVisibility);
 }
